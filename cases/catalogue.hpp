@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <span>
+#include <string_view>
+
+namespace cases {
+
+/// A metric a case file may ask for. compare/ implements each; a test keeps them in step.
+struct MetricInfo {
+  std::string_view name;
+  std::string_view unit;
+  std::string_view meaning;
+};
+
+/// Every metric name a case file may list under compare.metrics.
+std::span<const MetricInfo> metric_catalogue() noexcept;
+/// True when `name` is in the metric catalogue.
+bool is_known_metric(std::string_view name) noexcept;
+
+/// Every engine name a case file may list under compare.engines.
+std::span<const std::string_view> engine_catalogue() noexcept;
+/// True when `name` is in the engine catalogue.
+bool is_known_engine(std::string_view name) noexcept;
+
+}  // namespace cases

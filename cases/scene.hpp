@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "dem/contact/model_choice.hpp"
+#include "dem/integrators/scheme_id.hpp"
+#include "dem/materials/material_properties.hpp"
+#include "dem/materials/mixing.hpp"
+
+namespace cases {
+
+/// A 3-vector in SI units (kept free of Eigen: the case model is plain data).
+using Vector3 = std::array<double, 3>;
+
+/// Index pair of two particles, as a case file lists them.
+using ParticlePair = std::pair<std::size_t, std::size_t>;
+
+/// One sphere of a scene, fully explicit.
+struct ParticleSpec {
+  double radius = 0.0;          ///< body radius r [m]
+  double effect_radius = 0.0;   ///< interaction radius r̂ ≥ r [m]
+  std::size_t material = 0;     ///< index into Scene::materials
+  Vector3 position{};           ///< [m]
+  Vector3 velocity{};           ///< [m/s]
+  Vector3 angular_velocity{};   ///< [rad/s]
+  bool fixed = false;           ///< never moves; infinite-mass partner
+};
+
+/// How the equations of motion are integrated (PHYSICS.md §7).
+struct IntegrationSpec {
+  dem::SchemeId scheme = dem::SchemeId::velocity_verlet;
+  std::optional<double> timestep;       ///< Δt [s]; empty means automatic
+  double steps_per_collision = 20.0;    ///< a in Δt ≤ t_c / a (eq 4.9)
+  double duration = 0.0;                ///< simulated time [s]
+  bool rotation = true;                 ///< integrate rotational motion
+  dem::StartupPolicy startup = dem::StartupPolicy::rk4;
+  int startup_substeps = 4;
+  double implicit_tolerance = 1e-12;
+  int implicit_max_iterations = 100;
+  dem::LeapfrogStart leapfrog_start = dem::LeapfrogStart::half_kick;
+};
+
+/// What every engine records while it runs.
+struct OutputSpec {
+  std::size_t trace_every = 1;                ///< steps between trace rows
+  std::vector<std::size_t> trace_particles;   ///< particles whose state is traced
+  std::vector<ParticlePair> trace_pairs;      ///< contacts whose overlap/force are traced
+  std::vector<double> snapshot_times;         ///< [s] times of full particle snapshots
+};
+
+/// Acceptable discrepancy of one metric: pass when |value − ref| ≤ abs + rel·|ref|.
+struct Tolerance {
+  double rel = 0.0;
+  double abs = 0.0;
+};
+
+/// How the engines' results are compared.
+struct CompareSpec {
+  std::vector<std::string> engines;           ///< engines `demwb compare` runs by default
+  std::string reference;                      ///< engine the others are measured against
+  std::optional<std::size_t> subject;         ///< particle whose motion the metrics read
+  std::optional<ParticlePair> pair;           ///< contact whose overlap/force the metrics read
+  std::vector<std::string> metrics;           ///< metric names (see metric_catalogue())
+  std::map<std::string, Tolerance> tolerances;  ///< per metric
+};
+
+/// A fully explicit scene: every engine receives the same one (DESIGN.md "the flow of one
+/// comparison"). Produced by the case loader; never modified by an engine.
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string thesis_reference;
+  std::string source_path;     ///< case file it came from
+  std::string source_text;     ///< exact bytes of that file
+  std::string source_sha256;   ///< hex SHA-256 of source_text
+
+  std::vector<dem::MaterialProperties> materials;
+  dem::MixingRules mixing;
+  std::vector<dem::PairOverride> pair_overrides;
+  dem::ModelChoice model;
+  std::vector<ParticleSpec> particles;
+  Vector3 gravity{};
+
+  IntegrationSpec integration;
+  OutputSpec output;
+  CompareSpec compare;
+  std::vector<std::string> warnings;  ///< loader warnings, each naming file and key
+};
+
+/// Index of the material named `name`, or empty.
+std::optional<std::size_t> find_material(const Scene& scene, const std::string& name);
+
+}  // namespace cases

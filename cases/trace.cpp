@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#include "cases/trace.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace cases {
+
+std::size_t Trace::add_column(std::string name) {
+  if (column(name) != nullptr) throw std::invalid_argument("duplicate trace column " + name);
+  names_.push_back(std::move(name));
+  values_.emplace_back();
+  if (values_.size() > 1) values_.back().reserve(values_.front().capacity());
+  return names_.size() - 1;
+}
+
+void Trace::append_row(const std::vector<double>& row) {
+  if (row.size() != values_.size()) {
+    throw std::invalid_argument(fmt::format("trace row has {} values for {} columns", row.size(),
+                                            values_.size()));
+  }
+  for (std::size_t c = 0; c < row.size(); ++c) values_[c].push_back(row[c]);
+}
+
+const std::vector<double>* Trace::column(std::string_view name) const noexcept {
+  for (std::size_t c = 0; c < names_.size(); ++c) {
+    if (names_[c] == name) return &values_[c];
+  }
+  return nullptr;
+}
+
+std::string particle_column(std::size_t particle, std::string_view quantity) {
+  return fmt::format("p{}.{}", particle, quantity);
+}
+
+std::string pair_column(std::size_t p, std::size_t q, std::string_view quantity) {
+  return fmt::format("c{}-{}.{}", p, q, quantity);
+}
+
+}  // namespace cases

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cases {
+
+/// Time series of named quantities, one column per quantity, sampled at the same rows.
+/// Column names: `time`; per particle i `p<i>.x|y|z|vx|vy|vz|wx|wy|wz|fx|fy|fz`; per contact
+/// (i, j) `c<i>-<j>.overlap` and `c<i>-<j>.fn` (normal force, repulsive positive).
+class Trace {
+ public:
+  /// Adds an empty column and returns its index; names must be unique.
+  std::size_t add_column(std::string name);
+  /// Appends one row; `row` has one value per column in column order.
+  void append_row(const std::vector<double>& row);
+  /// Column named `name`, or nullptr.
+  [[nodiscard]] const std::vector<double>* column(std::string_view name) const noexcept;
+  /// Column names in order.
+  [[nodiscard]] const std::vector<std::string>& columns() const noexcept { return names_; }
+  /// Values of column `index`.
+  [[nodiscard]] const std::vector<double>& values(std::size_t index) const {
+    return values_.at(index);
+  }
+  /// Number of rows.
+  [[nodiscard]] std::size_t rows() const noexcept {
+    return values_.empty() ? 0 : values_.front().size();
+  }
+  /// True when there is no row.
+  [[nodiscard]] bool empty() const noexcept { return rows() == 0; }
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<std::vector<double>> values_;
+};
+
+/// Column name of a particle quantity, e.g. particle_column(0, "vx") = "p0.vx".
+std::string particle_column(std::size_t particle, std::string_view quantity);
+/// Column name of a contact quantity, e.g. pair_column(0, 1, "overlap") = "c0-1.overlap".
+std::string pair_column(std::size_t p, std::size_t q, std::string_view quantity);
+
+/// The quantities traced per particle, in column order.
+inline constexpr std::string_view kParticleQuantities[] = {"x",  "y",  "z",  "vx", "vy", "vz",
+                                                           "wx", "wy", "wz", "fx", "fy", "fz"};
+/// The quantities traced per contact, in column order.
+inline constexpr std::string_view kPairQuantities[] = {"overlap", "fn"};
+
+}  // namespace cases

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <unordered_map>
+
+#include "dem/core/vector.hpp"
+
+namespace dem {
+
+/// State a contact carries from step to step. A law receives the committed value and returns
+/// the new one; the integrator decides when to commit it (STYLE.md "laws are pure functions").
+struct ContactHistory {
+  Vec3 tangential_slip = Vec3::Zero();  ///< ς, integrated tangential displacement [m] (eq 3.9)
+  double max_overlap = 0.0;             ///< largest overlap of this contact so far [m]
+};
+
+/// Key of an unordered particle pair: the lower index in the high 32 bits.
+[[nodiscard]] constexpr std::uint64_t pair_key(std::uint32_t i, std::uint32_t j) noexcept {
+  const std::uint64_t lo = i < j ? i : j;
+  const std::uint64_t hi = i < j ? j : i;
+  return (lo << 32U) | hi;
+}
+
+/// Contact history of every interacting pair, keyed by `pair_key`.
+using ContactHistoryTable = std::unordered_map<std::uint64_t, ContactHistory>;
+
+}  // namespace dem

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "dem/contact/contact_geometry.hpp"
+#include "dem/contact/slots/responses.hpp"
+#include "dem/materials/material_properties.hpp"
+
+namespace dem {
+
+/// Shared metadata of the `none` sub-model of every optional slot.
+struct NoneModelInfo {
+  static constexpr std::string_view kKeyword = "none";
+  static constexpr std::array<std::string_view, 0> kProperties{};
+  static constexpr std::string_view kLammps = "omitted";
+  static constexpr std::string_view kYade = "omitted";
+};
+
+/// Damping sub-model `none`: purely elastic normal contact.
+struct NoDamping : NoneModelInfo {
+  static constexpr std::string_view kDescription = "no normal damping";
+  static NoDamping from_pair(const PairProperties&) { return {}; }
+  [[nodiscard]] double coefficient(const ContactGeometry&, const NormalResponse&) const noexcept {
+    return 0.0;
+  }
+  [[nodiscard]] double force(const ContactGeometry&, const NormalResponse&) const noexcept {
+    return 0.0;
+  }
+};
+
+/// Tangential sub-model `none`: frictionless contact.
+struct NoTangential : NoneModelInfo {
+  static constexpr std::string_view kDescription = "frictionless";
+  static constexpr std::string_view kLammps = "tangential linear_nohistory 0 0";
+  static NoTangential from_pair(const PairProperties&) { return {}; }
+};
+
+/// Cohesion sub-model `none`: no attraction; pairs interact only while their bodies overlap.
+struct NoCohesion : NoneModelInfo {
+  static constexpr std::string_view kDescription = "no cohesion";
+  static NoCohesion from_pair(const PairProperties&) { return {}; }
+};
+
+/// Rolling sub-model `none`: no rolling resistance.
+struct NoRolling : NoneModelInfo {
+  static constexpr std::string_view kDescription = "no rolling resistance";
+  static NoRolling from_pair(const PairProperties&) { return {}; }
+};
+
+}  // namespace dem

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "dem/contact/contact_geometry.hpp"
+#include "dem/contact/laws/linear_spring.hpp"
+#include "dem/contact/slots/property_access.hpp"
+#include "dem/contact/slots/responses.hpp"
+
+namespace dem {
+
+/// Normal sub-model `linear`: Hooke repulsion F = k_e δ (thesis eq 3.10, elastic part).
+struct LinearNormal {
+  static constexpr std::string_view kKeyword = "linear";
+  static constexpr std::string_view kDescription = "linear spring F = k_e δ (eq 3.10)";
+  static constexpr std::array<std::string_view, 1> kProperties{"normal_stiffness"};
+  static constexpr std::string_view kLammps =
+      "pair granular `hooke k_e η` with an explicit pair_coeff per type pair";
+  static constexpr std::string_view kYade =
+      "FrictMat + Ip2_FrictMat_FrictMat_FrictPhys(kn=k_e) + Law2_ScGeom_FrictPhys_CundallStrack";
+
+  double stiffness;  ///< k_e [N/m]
+
+  /// Sub-model for one material pair.
+  static LinearNormal from_pair(const PairProperties& pair) {
+    return {required_property(pair, &PairProperties::normal_stiffness, "normal_stiffness",
+                              "normal = 'linear'")};
+  }
+  /// Elastic response at the pair's overlap (δ > 0).
+  [[nodiscard]] NormalResponse evaluate(const ContactGeometry& g) const noexcept {
+    return {laws::linear_spring_force(stiffness, g.overlap), stiffness,
+            laws::linear_spring_energy(stiffness, g.overlap)};
+  }
+  /// Stiffness that sets the collision time scale (constant for a linear spring).
+  [[nodiscard]] double characteristic_stiffness() const noexcept { return stiffness; }
+};
+
+}  // namespace dem

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "dem/integrators/force_evaluator.hpp"
+#include "dem/integrators/scheme_id.hpp"
+#include "dem/particles/particles.hpp"
+
+namespace dem {
+
+/// Counters a scheme keeps for reports.
+struct SchemeDiagnostics {
+  std::uint64_t force_evaluations = 0;
+  std::uint64_t implicit_iterations = 0;
+  std::uint64_t unconverged_steps = 0;  ///< implicit steps that hit the iteration limit
+  std::uint64_t startup_steps = 0;      ///< steps taken by the RK4 start-up
+};
+
+/// A time-integration scheme. Contract of `step`: on entry `acc` holds the committed
+/// accelerations at `state`; on exit `state` is advanced by `dt` and `acc` holds the
+/// accelerations committed at the new state (the last commit of the step).
+class Scheme {
+ public:
+  virtual ~Scheme() = default;
+  /// Advances one step.
+  virtual void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) = 0;
+  /// Number of past states a multi-step scheme needs for an exact start (0 if none).
+  [[nodiscard]] virtual std::size_t past_states_needed() const noexcept { return 0; }
+  /// Supplies exact past states, most recent (t = −Δt) first; used with StartupPolicy::exact.
+  virtual void set_past(const std::vector<KinematicState>& past, ForceEvaluator& f, double dt);
+  /// Counters so far.
+  [[nodiscard]] const SchemeDiagnostics& diagnostics() const noexcept { return diagnostics_; }
+
+ protected:
+  SchemeDiagnostics diagnostics_;
+};
+
+/// Creates the scheme `id` with `settings`.
+std::unique_ptr<Scheme> make_scheme(SchemeId id, const SchemeSettings& settings);
+
+}  // namespace dem

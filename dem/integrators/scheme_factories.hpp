@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+
+#include "dem/integrators/scheme.hpp"
+
+// Factories of the concrete schemes, one translation unit per family (internal to dem).
+namespace dem::detail {
+
+std::unique_ptr<Scheme> make_forward_euler(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_symplectic_euler(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_runge_kutta_2(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_runge_kutta_4(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_adams_bashforth_2(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_adams_bashforth_4(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_adams_bashforth_moulton(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_backward_difference_1(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_backward_difference_2(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_velocity_verlet(const SchemeSettings& settings);
+std::unique_ptr<Scheme> make_leapfrog(const SchemeSettings& settings);
+
+/// One classical RK4 step (thesis eq D.5) of size dt, committing at the new state.
+/// Returns the number of force evaluations (4).
+int runge_kutta_4_step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
+                       bool rotation);
+
+}  // namespace dem::detail

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#include "dem/materials/mixing.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace dem {
+namespace {
+
+constexpr std::array<std::pair<MixingRule, std::string_view>, 5> kRuleNames{{
+    {MixingRule::harmonic, "harmonic"},
+    {MixingRule::arithmetic, "arithmetic"},
+    {MixingRule::geometric, "geometric"},
+    {MixingRule::min, "min"},
+    {MixingRule::max, "max"},
+}};
+
+}  // namespace
+
+double mix_values(MixingRule rule, double a, double b) noexcept {
+  if (a == b) return a;  // every rule is idempotent; keeps identical materials bit-exact
+  switch (rule) {
+    case MixingRule::harmonic: return 2.0 * a * b / (a + b);
+    case MixingRule::arithmetic: return 0.5 * (a + b);
+    case MixingRule::geometric: return std::sqrt(a * b);
+    case MixingRule::min: return std::min(a, b);
+    case MixingRule::max: return std::max(a, b);
+  }
+  return a;
+}
+
+std::string_view to_string(MixingRule rule) noexcept {
+  for (const auto& [r, name] : kRuleNames) {
+    if (r == rule) return name;
+  }
+  return "?";
+}
+
+std::optional<MixingRule> parse_mixing_rule(std::string_view keyword) noexcept {
+  for (const auto& [r, name] : kRuleNames) {
+    if (name == keyword) return r;
+  }
+  return std::nullopt;
+}
+
+MixingRule rule_for(const MixingRules& rules, const PropertySpec& spec) noexcept {
+  const auto it = rules.find(spec.key);
+  return it == rules.end() ? spec.default_mixing : it->second;
+}
+
+PairProperties mix_properties(const MaterialProperties& a, const MaterialProperties& b,
+                              const MixingRules& rules) {
+  PairProperties pair;
+  for (const auto& spec : property_specs()) {
+    if (spec.material_field == nullptr || spec.pair_field == nullptr) continue;
+    const auto& va = a.*spec.material_field;
+    const auto& vb = b.*spec.material_field;
+    if (va && vb) pair.*spec.pair_field = mix_values(rule_for(rules, spec), *va, *vb);
+  }
+  return pair;
+}
+
+void apply_overrides(PairProperties& base, const PairProperties& overrides) noexcept {
+  for (const auto& spec : property_specs()) {
+    if (spec.pair_field == nullptr) continue;
+    if (const auto& v = overrides.*spec.pair_field) base.*spec.pair_field = *v;
+  }
+}
+
+}  // namespace dem

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "dem/simulation/simulation.hpp"
+
+#include <stdexcept>
+
+namespace dem {
+namespace {
+
+/// Builds the particle arrays (a helper so the members can be initialised in order).
+ParticleProperties make_properties(const SimulationSetup& setup, KinematicState& state) {
+  ParticleProperties props;
+  build_particles(setup.particles, props, state);
+  return props;
+}
+
+}  // namespace
+
+Simulation::Simulation(const SimulationSetup& setup)
+    : props_(make_properties(setup, state_)),
+      table_(setup.materials, setup.mixing, setup.pair_overrides, setup.model),
+      field_(std::make_unique<ContactForceField>(props_, table_, setup.gravity)),
+      scheme_(make_scheme(setup.scheme, setup.scheme_settings)),
+      dt_(setup.timestep) {
+  if (!(dt_ > 0.0)) throw std::invalid_argument("time step must be > 0");
+  field_->commit(state_, 0.0, acc_);
+}
+
+std::size_t Simulation::past_states_needed() const noexcept {
+  return scheme_->past_states_needed();
+}
+
+void Simulation::set_exact_past(const std::vector<KinematicState>& past) {
+  scheme_->set_past(past, *field_, dt_);
+}
+
+void Simulation::step() {
+  scheme_->step(state_, acc_, dt_, *field_);
+  ++steps_;
+}
+
+double Simulation::kinetic_energy() const noexcept {
+  double e = 0.0;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props_.size()); ++i) {
+    if (props_.fixed[static_cast<std::size_t>(i)] != 0) continue;
+    e += 0.5 * props_.mass[i] * state_.velocity.col(i).squaredNorm() +
+         0.5 * props_.inertia[i] * state_.angular_velocity.col(i).squaredNorm();
+  }
+  return e;
+}
+
+}  // namespace dem

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "dem/contact/pair_table.hpp"
+#include "dem/forces/contact_force_field.hpp"
+#include "dem/integrators/scheme.hpp"
+#include "dem/particles/particles.hpp"
+
+namespace dem {
+
+/// Everything a run needs, already validated.
+struct SimulationSetup {
+  std::vector<ParticleInit> particles;
+  std::vector<MaterialProperties> materials;
+  MixingRules mixing;
+  std::vector<PairOverride> pair_overrides;
+  ModelChoice model;
+  Vec3 gravity = Vec3::Zero();
+  SchemeId scheme = SchemeId::velocity_verlet;
+  SchemeSettings scheme_settings;
+  double timestep = 0.0;  ///< Δt [s], > 0
+};
+
+/// Wires particles, pair laws, force field and scheme together and steps them. Holds no
+/// physics of its own (STYLE.md §6).
+class Simulation {
+ public:
+  /// Builds the run; throws ModelError when the model lacks a parameter.
+  explicit Simulation(const SimulationSetup& setup);
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// Supplies exact states at t = −Δt, −2Δt, … for a multi-step scheme's exact start.
+  void set_exact_past(const std::vector<KinematicState>& past);
+  /// States a multi-step scheme needs for an exact start.
+  [[nodiscard]] std::size_t past_states_needed() const noexcept;
+
+  /// Advances one time step.
+  void step();
+
+  /// Simulated time t = n Δt [s].
+  [[nodiscard]] double time() const noexcept { return static_cast<double>(steps_) * dt_; }
+  /// Steps taken.
+  [[nodiscard]] std::uint64_t steps() const noexcept { return steps_; }
+  /// Time step [s].
+  [[nodiscard]] double timestep() const noexcept { return dt_; }
+  /// Current state.
+  [[nodiscard]] const KinematicState& state() const noexcept { return state_; }
+  /// Static particle properties.
+  [[nodiscard]] const ParticleProperties& particles() const noexcept { return props_; }
+  /// The pair table (mixed parameters and laws).
+  [[nodiscard]] const PairTable& pair_table() const noexcept { return table_; }
+  /// The force field (forces, torques, watched pairs, contact history).
+  [[nodiscard]] ContactForceField& force_field() noexcept { return *field_; }
+  [[nodiscard]] const ContactForceField& force_field() const noexcept { return *field_; }
+  /// Scheme counters.
+  [[nodiscard]] const SchemeDiagnostics& diagnostics() const noexcept {
+    return scheme_->diagnostics();
+  }
+  /// Kinetic energy, translational plus rotational, of the mobile spheres [J].
+  [[nodiscard]] double kinetic_energy() const noexcept;
+
+ private:
+  ParticleProperties props_;
+  KinematicState state_;
+  PairTable table_;
+  std::unique_ptr<ContactForceField> field_;
+  std::unique_ptr<Scheme> scheme_;
+  Accelerations acc_;
+  double dt_;
+  std::uint64_t steps_ = 0;
+};
+
+}  // namespace dem

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+#include "reference/engine.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+#include <fmt/format.h>
+
+#include "reference/analytic/analytic_engine.hpp"
+#include "reference/inhouse/inhouse_engine.hpp"
+
+namespace reference {
+
+std::string Support::explain() const {
+  std::string out;
+  for (const auto& r : reasons) {
+    if (!out.empty()) out += "; ";
+    out += r;
+  }
+  return out;
+}
+
+std::unique_ptr<Engine> make_engine(std::string_view name) {
+  if (name == "inhouse") return std::make_unique<InhouseEngine>();
+  if (name == "analytic") return std::make_unique<AnalyticEngine>();
+  return nullptr;
+}
+
+namespace {
+
+/// Name of the first trace column holding a NaN or infinity, with the row, or empty.
+std::string first_non_finite(const cases::Trace& trace) {
+  for (std::size_t c = 0; c < trace.columns().size(); ++c) {
+    const auto& v = trace.values(c);
+    for (std::size_t r = 0; r < v.size(); ++r) {
+      if (!std::isfinite(v[r])) return fmt::format("{} at row {} is {}", trace.columns()[c], r, v[r]);
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
+                            const RunOptions& options) {
+  cases::RunResult result;
+  result.engine = std::string(engine.name());
+  const auto version = engine.version();
+  if (!version) {
+    result.status = cases::RunStatus::missing;
+    result.reason = fmt::format("engine '{}' is not installed", engine.name());
+    return result;
+  }
+  const Support support = engine.supports(scene);
+  if (!support.supported()) {
+    result.version = *version;
+    result.status = cases::RunStatus::not_applicable;
+    result.reason = support.explain();
+    return result;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    result = engine.run(scene, options);
+  } catch (const std::exception& e) {
+    result = cases::RunResult{};
+    result.status = cases::RunStatus::error;
+    result.reason = e.what();
+  }
+  result.engine = std::string(engine.name());
+  result.version = *version;
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (result.status == cases::RunStatus::ok) {
+    if (const std::string bad = first_non_finite(result.trace); !bad.empty()) {
+      result.status = cases::RunStatus::error;
+      result.reason = "non-finite value in trace: " + bad;
+    }
+  }
+  return result;
+}
+
+}  // namespace reference

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cases/run_result.hpp"
+#include "cases/scene.hpp"
+
+namespace reference {
+
+/// Whether an engine can express a scene, and if not, every reason why.
+struct Support {
+  std::vector<std::string> reasons;  ///< empty when supported
+  /// True when the engine can run the scene.
+  [[nodiscard]] bool supported() const noexcept { return reasons.empty(); }
+  /// Reasons joined with "; ".
+  [[nodiscard]] std::string explain() const;
+};
+
+/// Options of one run.
+struct RunOptions {
+  std::filesystem::path work_dir;  ///< scratch directory the engine may use (created if needed)
+  double timeout_s = 600.0;        ///< external engines are killed after this
+};
+
+/// One way of running a Scene: the in-house core, a closed-form solution, or a reference code.
+/// run() never throws for engine failures: it returns status error / missing / n/a with a reason.
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  /// Name used in case files, tables and results.json ("inhouse", "analytic", …).
+  [[nodiscard]] virtual std::string_view name() const noexcept = 0;
+  /// Version string, or empty when the engine is not installed.
+  [[nodiscard]] virtual std::optional<std::string> version() const = 0;
+  /// Can the engine express `scene`?
+  [[nodiscard]] virtual Support supports(const cases::Scene& scene) const = 0;
+  /// Runs `scene` and returns its traces (status ok) or why not.
+  [[nodiscard]] virtual cases::RunResult run(const cases::Scene& scene,
+                                             const RunOptions& options) const = 0;
+};
+
+/// The engine called `name`, or nullptr when no such engine exists.
+std::unique_ptr<Engine> make_engine(std::string_view name);
+
+/// Runs `engine` on `scene` with the common bookkeeping: `missing` when not installed,
+/// `n/a` with reasons when unsupported, `error` with the message when run() throws, and
+/// `error` when the trace holds a non-finite value. Sets engine name, version and wall time.
+cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
+                            const RunOptions& options);
+
+}  // namespace reference

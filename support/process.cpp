@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+#include "support/process.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace support {
+namespace {
+
+/// Opens `path` for a child's stdout/stderr (or /dev/null) and dup2s it onto `fd`.
+bool redirect(const std::filesystem::path& path, int fd) {
+  const std::string target = path.empty() ? "/dev/null" : path.string();
+  const int file = ::open(target.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (file < 0) return false;
+  const bool ok = ::dup2(file, fd) >= 0;
+  ::close(file);
+  return ok;
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> find_program(const std::string& program) {
+  if (program.find('/') != std::string::npos) {
+    if (::access(program.c_str(), X_OK) == 0) return std::filesystem::path(program);
+    return std::nullopt;
+  }
+  const char* path_env = std::getenv("PATH");
+  std::stringstream dirs(path_env != nullptr ? path_env : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    const std::filesystem::path candidate = std::filesystem::path(dir) / program;
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return std::nullopt;
+}
+
+ProcessResult run_process(const ProcessSpec& spec) {
+  ProcessResult result;
+  if (spec.argv.empty()) {
+    result.error = "empty command";
+    return result;
+  }
+  const auto program = find_program(spec.argv.front());
+  if (!program) {
+    result.error = spec.argv.front() + ": not found in PATH";
+    return result;
+  }
+  std::vector<std::string> env_strings;
+  for (char** e = environ; *e != nullptr; ++e) {
+    const std::string entry(*e);
+    const auto eq = entry.find('=');
+    if (spec.environment.count(entry.substr(0, eq)) == 0) env_strings.push_back(entry);
+  }
+  for (const auto& [k, v] : spec.environment) env_strings.push_back(k + "=" + v);
+  std::vector<char*> argv;
+  for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  std::vector<char*> envp;
+  for (auto& e : env_strings) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  const std::string program_path = program->string();
+
+  // The child reports an exec failure through a close-on-exec pipe.
+  int report[2];
+  if (::pipe2(report, O_CLOEXEC) != 0) {
+    result.error = std::string("pipe: ") + std::strerror(errno);
+    return result;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    result.error = std::string("fork: ") + std::strerror(errno);
+    ::close(report[0]);
+    ::close(report[1]);
+    return result;
+  }
+  if (pid == 0) {
+    ::close(report[0]);
+    ::setpgid(0, 0);
+    int err = 0;
+    if (!spec.working_directory.empty() && ::chdir(spec.working_directory.c_str()) != 0) {
+      err = errno;
+    } else if (!redirect(spec.stdout_file, STDOUT_FILENO) ||
+               !redirect(spec.stderr_file, STDERR_FILENO)) {
+      err = errno;
+    } else {
+      const int devnull = ::open("/dev/null", O_RDONLY);
+      if (devnull >= 0) ::dup2(devnull, STDIN_FILENO);
+      ::execve(program_path.c_str(), argv.data(), envp.data());
+      err = errno;
+    }
+    const ssize_t written = ::write(report[1], &err, sizeof err);
+    static_cast<void>(written);
+    ::_exit(127);
+  }
+  ::close(report[1]);
+  int child_errno = 0;
+  const ssize_t got = ::read(report[0], &child_errno, sizeof child_errno);
+  ::close(report[0]);
+  if (got == static_cast<ssize_t>(sizeof child_errno)) {
+    ::waitpid(pid, nullptr, 0);
+    result.error = program_path + ": cannot start (" + std::strerror(child_errno) + ")";
+    return result;
+  }
+  result.started = true;
+
+  int status = 0;
+  for (;;) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (spec.timeout_s > 0.0 && elapsed > spec.timeout_s) {
+      ::kill(-pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      result.timed_out = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+  return result;
+}
+
+std::string file_tail(const std::filesystem::path& path, std::size_t max_lines) {
+  std::ifstream in(path);
+  if (!in) return "";
+  std::deque<std::string> lines;
+  std::string line;
+  while (std::getline(in, line)) {
+    lines.push_back(line);
+    if (lines.size() > max_lines) lines.pop_front();
+  }
+  std::string out;
+  for (const auto& l : lines) out += l + "\n";
+  return out;
+}
+
+}  // namespace support

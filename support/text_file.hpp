@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace support {
+
+/// Whole content of a file as bytes; throws std::runtime_error naming the path on failure.
+std::string read_file(const std::filesystem::path& path);
+
+/// Writes `content` to `path` (creating parent directories); throws naming the path on failure.
+void write_file(const std::filesystem::path& path, std::string_view content);
+
+}  // namespace support
