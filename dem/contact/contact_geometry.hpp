@@ -23,9 +23,9 @@ struct ContactGeometry {
 
 /// Per-sphere inputs of `pair_geometry`. inverse_mass is 0 for a fixed sphere.
 struct SphereState {
-  const Vec3& position;
-  const Vec3& velocity;
-  const Vec3& angular_velocity;
+  Vec3 position;
+  Vec3 velocity;
+  Vec3 angular_velocity;
   double radius;
   double effect_radius;
   double inverse_mass;

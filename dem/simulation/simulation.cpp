@@ -33,6 +33,11 @@ void Simulation::set_exact_past(const std::vector<KinematicState>& past) {
   scheme_->set_past(past, *field_, dt_);
 }
 
+void Simulation::watch_pairs(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs) {
+  field_->watch_pairs(pairs);
+  field_->commit(state_, 0.0, acc_);  // same state, nothing elapsed: fills the observations
+}
+
 void Simulation::step() {
   scheme_->step(state_, acc_, dt_, *field_);
   ++steps_;

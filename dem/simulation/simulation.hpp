@@ -39,6 +39,9 @@ class Simulation {
   /// States a multi-step scheme needs for an exact start.
   [[nodiscard]] std::size_t past_states_needed() const noexcept;
 
+  /// Records overlap and normal force of these pairs at every commit, starting now.
+  void watch_pairs(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
+
   /// Advances one time step.
   void step();
 
@@ -65,8 +68,8 @@ class Simulation {
   [[nodiscard]] double kinetic_energy() const noexcept;
 
  private:
+  KinematicState state_;       // declared first: props_' initialiser fills it
   ParticleProperties props_;
-  KinematicState state_;
   PairTable table_;
   std::unique_ptr<ContactForceField> field_;
   std::unique_ptr<Scheme> scheme_;

@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+// `demwb suite`: every case of a suite on the engines each names, one report.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <future>
+#include <iostream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/case_runner.hpp"
+#include "app/cli.hpp"
+#include "app/options.hpp"
+#include "cases/case_library.hpp"
+#include "cases/case_loader.hpp"
+#include "reports/case_outputs.hpp"
+#include "reports/case_report.hpp"
+#include "reports/markdown.hpp"
+#include "reports/results_json.hpp"
+#include "support/text_file.hpp"
+
+namespace app {
+namespace {
+
+namespace po = boost::program_options;
+
+/// One case of the suite: its outcome, or the reason it could not be loaded.
+struct SuiteEntry {
+  std::filesystem::path file;
+  std::optional<comparison::CaseOutcome> outcome;
+  std::string load_error;
+  double seconds = 0.0;
+};
+
+SuiteEntry run_entry(const std::filesystem::path& file, const std::filesystem::path& out,
+                     double timeout) {
+  SuiteEntry e{file, std::nullopt, "", 0.0};
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const cases::Scene scene = cases::load_case(file);
+    e.outcome = run_case(scene, scene.compare.engines,
+                         reference::RunOptions{out / scene.name / "work", timeout});
+  } catch (const std::exception& ex) {
+    e.load_error = ex.what();
+  }
+  e.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return e;
+}
+
+comparison::Status entry_status(const SuiteEntry& e) {
+  return e.outcome ? comparison::worst_status(*e.outcome) : comparison::Status::error;
+}
+
+std::string summary_table(const std::vector<SuiteEntry>& entries) {
+  reports::MarkdownTable t({"case", "engines", "status", "worst rel. diff", "comparisons", "time (s)"});
+  for (const auto& e : entries) {
+    if (!e.outcome) {
+      t.add_row({e.file.filename().string(), "—", reports::status_cell(comparison::Status::error), "—",
+                 e.load_error, fmt::format("{:.2f}", e.seconds)});
+      continue;
+    }
+    std::string engines;
+    for (const auto& r : e.outcome->runs) {
+      engines += (engines.empty() ? "" : ", ") + r.engine + " (" + std::string(cases::to_string(r.status)) + ")";
+    }
+    std::optional<double> worst;
+    std::size_t green = 0;
+    for (const auto& c : e.outcome->comparisons) {
+      if (c.rel_diff && (!worst || *c.rel_diff > *worst)) worst = c.rel_diff;
+      if (comparison::is_green(c.status)) ++green;
+    }
+    t.add_row({"[`" + e.outcome->scene.name + "`](#" + e.outcome->scene.name + ")", engines,
+               reports::status_cell(entry_status(e)), reports::format_ratio(worst),
+               fmt::format("{}/{} green", green, e.outcome->comparisons.size()),
+               fmt::format("{:.2f}", e.seconds)});
+  }
+  return t.render();
+}
+
+}  // namespace
+
+int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
+  po::options_description opts("options");
+  opts.add_options()("output,o", po::value<std::string>(), "output directory (default out/<suite>)")(
+      "jobs,j", po::value<unsigned>()->default_value(1), "cases run concurrently")(
+      "timeout", po::value<double>()->default_value(600.0), "seconds before an external engine is killed");
+  const auto vm = parse_command(args, "usage: demwb suite canonical|DIR [-j N] [-o DIR]", opts, {"suite"});
+  if (!vm) return kExitOk;
+  const std::string suite_name = (*vm)["suite"].as<std::string>();
+  const std::filesystem::path dir = cases::resolve_suite(suite_name);
+  const std::filesystem::path out = vm->count("output") != 0
+                                        ? std::filesystem::path((*vm)["output"].as<std::string>())
+                                        : std::filesystem::path("out") / dir.filename();
+  const unsigned jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
+  const double timeout = (*vm)["timeout"].as<double>();
+  const auto files = cases::case_files(dir);
+  if (files.empty()) throw std::runtime_error("suite " + dir.string() + " holds no *.toml case");
+  const bool terminal = ::isatty(STDERR_FILENO) != 0;
+
+  std::vector<SuiteEntry> entries(files.size());
+  std::vector<std::future<SuiteEntry>> running;
+  std::size_t next = 0;
+  std::size_t done = 0;
+  const auto suite_start = std::chrono::steady_clock::now();
+  const auto report = [&](const SuiteEntry& e) {
+    ++done;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
+    const double eta = elapsed / static_cast<double>(done) * static_cast<double>(files.size() - done);
+    std::fprintf(stderr, "%s[%zu/%zu] %s: %s (%.2f s)%s", terminal ? "\r\033[K" : "", done, files.size(),
+                 e.file.stem().c_str(), std::string(comparison::to_string(entry_status(e))).c_str(), e.seconds,
+                 terminal ? fmt::format(", elapsed {:.1f} s, ETA {:.1f} s", elapsed, eta).c_str() : "\n");
+  };
+  std::vector<std::size_t> slot_of;
+  while (done < files.size()) {
+    while (running.size() < jobs && next < files.size()) {
+      running.push_back(std::async(std::launch::async, run_entry, files[next], out, timeout));
+      slot_of.push_back(next++);
+    }
+    for (std::size_t k = 0; k < running.size(); ++k) {
+      if (running[k].wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) continue;
+      entries[slot_of[k]] = running[k].get();
+      report(entries[slot_of[k]]);
+      running.erase(running.begin() + static_cast<std::ptrdiff_t>(k));
+      slot_of.erase(slot_of.begin() + static_cast<std::ptrdiff_t>(k));
+      break;
+    }
+  }
+  if (terminal) std::fputs("\n", stderr);
+
+  const std::string command = reports::reproduce_command(inv.argc, inv.argv);
+  std::string md = fmt::format("# dem-workbench suite `{}`\n\nCases from `{}`.\n\nReproduce with:\n\n```sh\n{}\n```\n\n",
+                               suite_name, dir.string(), command);
+  md += "## Summary\n\n" + summary_table(entries) + "\n";
+  nlohmann::ordered_json all;
+  all["suite"] = suite_name;
+  all["cases"] = nlohmann::ordered_json::array();
+  comparison::Status worst = comparison::Status::pass;
+  for (const auto& e : entries) {
+    if (!comparison::is_green(entry_status(e))) worst = entry_status(e);
+    if (!e.outcome) {
+      all["cases"].push_back({{"case_file", e.file.string()}, {"status", "error"}, {"reason", e.load_error}});
+      continue;
+    }
+    const std::filesystem::path case_dir = out / e.outcome->scene.name;
+    reports::write_case_outputs(*e.outcome, case_dir, command);
+    md += "<a id=\"" + e.outcome->scene.name + "\"></a>\n\n";
+    md += reports::case_section(*e.outcome, case_dir / "plots", out, 2);
+    all["cases"].push_back(reports::results_json(*e.outcome));
+  }
+  all["status"] = std::string(comparison::to_string(worst));
+  support::write_file(out / "report.md", md);
+  support::write_file(out / "results.json", all.dump(2) + "\n");
+  std::cout << summary_table(entries) << "\nwrote " << (out / "report.md").string() << "\n";
+  return comparison::is_green(worst) ? kExitOk : kExitFailed;
+}
+
+}  // namespace app

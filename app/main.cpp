@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// demwb: the dem-workbench command line. Thin: each command lives in its own file.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/cli.hpp"
+#include "support/build_info.hpp"
+
+namespace {
+
+constexpr std::string_view kUsage = R"(usage: demwb <command> [options]
+
+commands:
+  run CASE.toml [--engine E ...] [-o DIR]     run a case on engines, write results
+  compare CASE.toml [--engines E,F] [-o DIR]  run and print the discrepancy table
+  suite canonical|DIR [-j N] [-o DIR]         every case of a suite, one report
+  study integrators [-o DIR]                  the integrator-accuracy study (thesis ch. 4)
+  engines                                     installed engines and their versions
+
+options:
+  -h, --help      help (also after a command: demwb run --help)
+  --version       print the version
+
+exit codes: 0 all green, 1 a comparison failed or an engine errored, 2 bad usage or case file
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
+    std::fputs(kUsage.data(), args.empty() ? stderr : stdout);
+    return args.empty() ? app::kExitUsage : app::kExitOk;
+  }
+  if (args[0] == "--version") {
+    std::printf("demwb %s (%s)\n", support::kVersion, support::kGitCommit);
+    return app::kExitOk;
+  }
+  const app::Invocation inv{argc, argv};
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  try {
+    if (args[0] == "run") return app::command_run(rest, inv);
+    if (args[0] == "compare") return app::command_compare(rest, inv);
+    if (args[0] == "suite") return app::command_suite(rest, inv);
+    if (args[0] == "study") return app::command_study(rest, inv);
+    if (args[0] == "engines") return app::command_engines(rest, inv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "demwb %s: error: %s\n", args[0].c_str(), e.what());
+    return app::kExitUsage;
+  }
+  std::fprintf(stderr, "demwb: unknown command '%s'\n\n%s", args[0].c_str(), kUsage.data());
+  return app::kExitUsage;
+}

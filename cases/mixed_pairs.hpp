@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cases/scene.hpp"
+
+namespace cases {
+
+/// One mixed property of a material pair and where its value came from.
+struct MixedValue {
+  std::string key;
+  double value;
+  std::string origin;  ///< e.g. "harmonic mix" or "[[pairs]] override"
+};
+
+/// The mixed properties of one material pair (a ≤ b), for reports (STYLE.md §4).
+struct MixedPair {
+  std::string material_a;
+  std::string material_b;
+  std::vector<MixedValue> values;
+};
+
+/// Mixed and overridden properties of every material pair of the scene, in material order.
+std::vector<MixedPair> mixed_pairs(const Scene& scene);
+
+}  // namespace cases

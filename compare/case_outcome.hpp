@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cases/run_result.hpp"
+#include "cases/scene.hpp"
+#include "compare/discrepancy.hpp"
+#include "compare/metrics.hpp"
+
+namespace comparison {
+
+/// Everything one comparison of one case produced: the scene, each engine's run, the metrics
+/// computed from each run and the discrepancy rows (DESIGN.md steps 1-4).
+struct CaseOutcome {
+  cases::Scene scene;
+  std::vector<cases::RunResult> runs;
+  std::map<std::string, MetricSet> metrics;  ///< engine name → metrics
+  std::vector<Comparison> comparisons;
+};
+
+/// Worst status over the outcome's comparisons (pass when there are none).
+Status worst_status(const CaseOutcome& outcome) noexcept;
+
+/// Computes metrics and comparisons for runs already made.
+CaseOutcome evaluate_runs(cases::Scene scene, std::vector<cases::RunResult> runs);
+
+}  // namespace comparison

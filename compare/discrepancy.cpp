@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+#include "compare/discrepancy.hpp"
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace comparison {
+namespace {
+
+/// Default tolerances: relative for durations, lengths and forces; absolute for the
+/// dimensionless restitution and amplitude error.
+constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 6> kDefaults{{
+    {"contact_duration", {1e-3, 0.0}},
+    {"restitution", {0.0, 1e-3}},
+    {"max_overlap", {1e-3, 0.0}},
+    {"max_force", {1e-3, 0.0}},
+    {"max_position", {1e-3, 0.0}},
+    {"amplitude_error", {0.0, 1e-3}},
+}};
+
+const cases::RunResult* find_run(const std::vector<cases::RunResult>& runs,
+                                 const std::string& name) {
+  for (const auto& r : runs) {
+    if (r.engine == name) return &r;
+  }
+  return nullptr;
+}
+
+/// Status of an engine that did not produce results.
+Status status_of_run(cases::RunStatus s) {
+  switch (s) {
+    case cases::RunStatus::missing: return Status::missing;
+    case cases::RunStatus::not_applicable: return Status::not_applicable;
+    case cases::RunStatus::ok:
+    case cases::RunStatus::error: break;
+  }
+  return Status::error;
+}
+
+/// Metric value of `engine`, or empty with `why` set.
+std::optional<double> value_of(const std::map<std::string, MetricSet>& metrics,
+                               const std::string& engine, const std::string& metric,
+                               std::string& why) {
+  const auto e = metrics.find(engine);
+  if (e == metrics.end()) {
+    why = fmt::format("no metrics for engine '{}'", engine);
+    return std::nullopt;
+  }
+  const auto m = e->second.find(metric);
+  if (m == e->second.end()) {
+    why = fmt::format("metric '{}' not computed for '{}'", metric, engine);
+    return std::nullopt;
+  }
+  if (!m->second.value) why = fmt::format("{}: {}", engine, m->second.problem);
+  return m->second.value;
+}
+
+/// Fills one comparison row for an engine that ran.
+void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
+               const cases::RunResult& reference) {
+  std::string why;
+  row.value = value_of(metrics, row.engine, row.metric, why);
+  if (!row.value) {
+    row.note = why;
+    return;
+  }
+  if (row.metric == "amplitude_error") {
+    row.reference_value = 0.0;  // εx_amp measures the distance to the analytic solution itself
+  } else {
+    if (reference.status != cases::RunStatus::ok) {
+      row.note = fmt::format("reference '{}' has no results ({}: {})", reference.engine,
+                             cases::to_string(reference.status), reference.reason);
+      return;
+    }
+    row.reference_value = value_of(metrics, reference.engine, row.metric, why);
+    if (!row.reference_value) {
+      row.note = "reference " + why;
+      return;
+    }
+  }
+  row.abs_diff = std::abs(*row.value - *row.reference_value);
+  if (*row.reference_value != 0.0) row.rel_diff = *row.abs_diff / std::abs(*row.reference_value);
+  row.status = judge(*row.value, *row.reference_value, row.tolerance);
+}
+
+}  // namespace
+
+cases::Tolerance default_tolerance(std::string_view metric) noexcept {
+  for (const auto& [name, tol] : kDefaults) {
+    if (name == metric) return tol;
+  }
+  return {1e-3, 0.0};
+}
+
+cases::Tolerance tolerance_for(const cases::Scene& scene, const std::string& metric) {
+  const auto it = scene.compare.tolerances.find(metric);
+  return it == scene.compare.tolerances.end() ? default_tolerance(metric) : it->second;
+}
+
+Status judge(double value, double reference, const cases::Tolerance& tol) noexcept {
+  const double diff = std::abs(value - reference);
+  return diff <= tol.abs + tol.rel * std::abs(reference) ? Status::pass : Status::fail;
+}
+
+std::vector<Comparison> compare_runs(const cases::Scene& scene,
+                                     const std::vector<cases::RunResult>& runs,
+                                     const std::map<std::string, MetricSet>& metrics) {
+  std::vector<Comparison> rows;
+  const std::string& ref_name = scene.compare.reference;
+  const cases::RunResult* reference = find_run(runs, ref_name);
+  for (const std::string& metric : scene.compare.metrics) {
+    for (const cases::RunResult& run : runs) {
+      if (run.engine == ref_name) continue;
+      Comparison row;
+      row.metric = metric;
+      row.engine = run.engine;
+      row.reference = ref_name;
+      row.tolerance = tolerance_for(scene, metric);
+      if (run.status != cases::RunStatus::ok) {
+        row.status = status_of_run(run.status);
+        row.note = run.reason;
+      } else if (reference == nullptr && metric != "amplitude_error") {
+        row.note = fmt::format("reference engine '{}' was not run", ref_name);
+      } else if (reference != nullptr && reference->status == cases::RunStatus::not_applicable &&
+                 metric != "amplitude_error") {
+        // A reference that cannot express the case compares nothing: that is a broken case,
+        // not a pass.
+        row.note = fmt::format("reference '{}' cannot express this case: {}", ref_name,
+                               reference->reason);
+      } else {
+        static const cases::RunResult kNoReference{};
+        judge_row(row, metrics, reference != nullptr ? *reference : kNoReference);
+      }
+      rows.push_back(std::move(row));
+    }
+  }
+  return rows;
+}
+
+}  // namespace comparison

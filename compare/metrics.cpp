@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+#include "compare/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "compare/trace_analysis.hpp"
+
+namespace comparison {
+namespace {
+
+using Vec = std::array<double, 3>;
+
+/// A metric that cannot be computed; carries the reason to the table.
+struct MetricProblem : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double norm(const Vec& a) { return std::sqrt(dot(a, a)); }
+
+/// Column `name` of the trace, or a problem naming it.
+const std::vector<double>& column(const cases::Trace& trace, const std::string& name) {
+  const auto* c = trace.column(name);
+  if (c == nullptr) throw MetricProblem(fmt::format("trace has no column '{}'", name));
+  return *c;
+}
+
+/// Position and velocity of one particle at every trace row. A particle that is not traced
+/// but fixed is taken at rest at its initial position; any other untraced particle is a problem.
+class ParticleSeries {
+ public:
+  ParticleSeries(const cases::Scene& scene, const cases::Trace& trace, std::size_t index) {
+    const auto* x = trace.column(cases::particle_column(index, "x"));
+    if (x == nullptr) {
+      if (!scene.particles.at(index).fixed) {
+        throw MetricProblem(fmt::format("particle {} is not traced (output.trace_particles)", index));
+      }
+      rest_ = scene.particles.at(index).position;
+      return;
+    }
+    for (const char* q : {"x", "y", "z", "vx", "vy", "vz"}) {
+      columns_.push_back(&column(trace, cases::particle_column(index, q)));
+    }
+  }
+  [[nodiscard]] Vec position(std::size_t row) const {
+    if (columns_.empty()) return rest_;
+    return {(*columns_[0])[row], (*columns_[1])[row], (*columns_[2])[row]};
+  }
+  [[nodiscard]] Vec velocity(std::size_t row) const {
+    if (columns_.empty()) return {0.0, 0.0, 0.0};
+    return {(*columns_[3])[row], (*columns_[4])[row], (*columns_[5])[row]};
+  }
+
+ private:
+  std::vector<const std::vector<double>*> columns_;
+  Vec rest_{};
+};
+
+/// The compared pair with the subject first when it belongs to the pair.
+cases::ParticlePair oriented_pair(const cases::Scene& scene) {
+  if (!scene.compare.pair) throw MetricProblem("the case sets no compare.pair");
+  auto [p, q] = *scene.compare.pair;
+  if (scene.compare.subject && *scene.compare.subject == q) std::swap(p, q);
+  return {p, q};
+}
+
+/// The subject particle (compare.subject, else the first mobile particle).
+std::size_t subject_of(const cases::Scene& scene) {
+  if (scene.compare.subject) return *scene.compare.subject;
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    if (!scene.particles[i].fixed) return i;
+  }
+  throw MetricProblem("the scene has no mobile particle");
+}
+
+/// Unit vector of the collision axis: from the subject towards its partner at t = 0, or along
+/// the subject's initial velocity when it is not in the compared pair.
+Vec collision_axis(const cases::Scene& scene) {
+  const std::size_t s = subject_of(scene);
+  Vec axis = scene.particles[s].velocity;
+  if (scene.compare.pair) {
+    const auto [p, q] = oriented_pair(scene);
+    if (p == s) axis = sub(scene.particles[q].position, scene.particles[p].position);
+  }
+  const double n = norm(axis);
+  if (!(n > 0.0)) throw MetricProblem("no collision axis: the subject has no partner or velocity");
+  return {axis[0] / n, axis[1] / n, axis[2] / n};
+}
+
+/// The first contact of the compared pair in a trace.
+ContactInterval contact_of(const cases::Scene& scene, const cases::Trace& trace) {
+  const auto [p, q] = oriented_pair(scene);
+  const auto& t = column(trace, "time");
+  const auto& overlap = column(trace, cases::pair_column(p, q, "overlap"));
+  const IntervalSearch found = first_contact(t, overlap);
+  if (found.interval) return *found.interval;
+  switch (found.problem) {
+    case IntervalProblem::starts_in_contact:
+      throw MetricProblem(fmt::format("pair {}-{} is already in contact at the first sample", p, q));
+    case IntervalProblem::never_ends:
+      throw MetricProblem(fmt::format("the contact of pair {}-{} does not end within the run", p, q));
+    case IntervalProblem::no_contact: break;
+  }
+  throw MetricProblem(fmt::format("pair {}-{} never comes into contact", p, q));
+}
+
+/// Overlap column of the compared pair and a per-row "in contact" mask.
+std::pair<const std::vector<double>*, std::vector<bool>> overlap_mask(const cases::Scene& scene,
+                                                                      const cases::Trace& trace) {
+  const auto [p, q] = oriented_pair(scene);
+  const auto& overlap = column(trace, cases::pair_column(p, q, "overlap"));
+  std::vector<bool> mask(overlap.size());
+  for (std::size_t k = 0; k < overlap.size(); ++k) mask[k] = overlap[k] > 0.0;
+  return {&overlap, std::move(mask)};
+}
+
+double contact_duration(const cases::Scene& scene, const cases::Trace& trace) {
+  const ContactInterval c = contact_of(scene, trace);
+  return c.end - c.start;
+}
+
+/// Normal relative speed (u_p − u_q)·n at a row, n from q to p.
+double normal_speed(const ParticleSeries& p, const ParticleSeries& q, std::size_t row) {
+  const Vec x = sub(p.position(row), q.position(row));
+  const double d = norm(x);
+  const Vec n{x[0] / d, x[1] / d, x[2] / d};
+  return dot(sub(p.velocity(row), q.velocity(row)), n);
+}
+
+double restitution(const cases::Scene& scene, const cases::Trace& trace) {
+  const ContactInterval c = contact_of(scene, trace);
+  const auto [ip, iq] = oriented_pair(scene);
+  const ParticleSeries p(scene, trace, ip);
+  const ParticleSeries q(scene, trace, iq);
+  const double before = normal_speed(p, q, c.last_before);
+  const double after = normal_speed(p, q, c.first_after);
+  if (!(before < 0.0)) throw MetricProblem("the pair is not approaching before its contact");
+  return -after / before;
+}
+
+double max_of_pair_column(const cases::Scene& scene, const cases::Trace& trace,
+                          const char* quantity) {
+  const ContactInterval c = contact_of(scene, trace);
+  const auto [p, q] = oriented_pair(scene);
+  const auto& t = column(trace, "time");
+  const auto& y = column(trace, cases::pair_column(p, q, quantity));
+  const auto mask = overlap_mask(scene, trace).second;
+  return peak(t, y, mask, c.last_before + 1, c.first_after - 1).value;
+}
+
+/// Displacement of the subject along the collision axis, row by row.
+std::vector<double> displacement_along_axis(const cases::Scene& scene, const cases::Trace& trace) {
+  const std::size_t s = subject_of(scene);
+  const ParticleSeries series(scene, trace, s);
+  const Vec axis = collision_axis(scene);
+  const Vec origin = scene.particles[s].position;
+  std::vector<double> out(trace.rows());
+  for (std::size_t k = 0; k < trace.rows(); ++k) out[k] = dot(sub(series.position(k), origin), axis);
+  return out;
+}
+
+/// Largest displacement of the subject along the collision axis over the samples.
+double max_position(const cases::Scene& scene, const cases::Trace& trace) {
+  const std::vector<double> d = displacement_along_axis(scene, trace);
+  if (d.empty()) throw MetricProblem("the trace is empty");
+  return *std::max_element(d.begin(), d.end());
+}
+
+/// Largest overlap of the compared pair over the samples (no refinement: thesis eq 4.8).
+double sampled_max_overlap(const cases::Scene& scene, const cases::Trace& trace) {
+  const auto& overlap = *overlap_mask(scene, trace).first;
+  double best = -std::numeric_limits<double>::infinity();
+  for (const double v : overlap) best = std::max(best, v);
+  return best;
+}
+
+/// εx_amp, thesis eq 4.8, with both maxima over the same time points (§4.3.3).
+double amplitude_error(const cases::Scene& scene, const cases::Trace& trace,
+                       const cases::RunResult* analytic) {
+  if (analytic == nullptr || analytic->status != cases::RunStatus::ok) {
+    throw MetricProblem("amplitude_error needs an analytic solution, which did not run");
+  }
+  const auto& t = column(trace, "time");
+  const auto& ta = column(analytic->trace, "time");
+  if (t.size() != ta.size()) {
+    throw MetricProblem(fmt::format("analytic trace has {} samples, this one {}", ta.size(), t.size()));
+  }
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (std::abs(t[k] - ta[k]) > 1e-9 * std::max(std::abs(t[k]), 1e-300) + 1e-300) {
+      throw MetricProblem(fmt::format("analytic trace is sampled at other times (row {})", k));
+    }
+  }
+  const double overlap = sampled_max_overlap(scene, analytic->trace);
+  if (!(overlap > 0.0)) throw MetricProblem("the analytic solution has no overlap");
+  return std::abs(max_position(scene, trace) - max_position(scene, analytic->trace)) / overlap;
+}
+
+/// Computes one metric from the trace; throws MetricProblem when it cannot.
+double from_trace(const std::string& name, const cases::Scene& scene, const cases::RunResult& run,
+                  const cases::RunResult* analytic) {
+  const cases::Trace& trace = run.trace;
+  if (name == "contact_duration") return contact_duration(scene, trace);
+  if (name == "restitution") return restitution(scene, trace);
+  if (name == "max_overlap") return max_of_pair_column(scene, trace, "overlap");
+  if (name == "max_force") return max_of_pair_column(scene, trace, "fn");
+  if (name == "max_position") return max_position(scene, trace);
+  if (name == "amplitude_error") return amplitude_error(scene, trace, analytic);
+  throw MetricProblem(fmt::format("no implementation of metric '{}'", name));
+}
+
+}  // namespace
+
+std::optional<std::vector<double>> axis_displacement(const cases::Scene& scene,
+                                                     const cases::Trace& trace) {
+  try {
+    return displacement_along_axis(scene, trace);
+  } catch (const MetricProblem&) {
+    return std::nullopt;
+  }
+}
+
+MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run,
+                          const cases::RunResult* analytic) {
+  MetricSet out;
+  for (const std::string& name : scene.compare.metrics) {
+    MetricValue v;
+    if (run.status != cases::RunStatus::ok) {
+      v.problem = fmt::format("engine status {}", cases::to_string(run.status));
+    } else if (const auto exact = run.exact_metrics.find(name); exact != run.exact_metrics.end()) {
+      v.value = exact->second;
+      v.source = "closed form";
+    } else {
+      try {
+        v.value = from_trace(name, scene, run, analytic);
+        v.source = "trace";
+      } catch (const MetricProblem& e) {
+        v.problem = e.what();
+      }
+    }
+    if (v.value && !std::isfinite(*v.value)) {
+      v.problem = fmt::format("non-finite value {}", *v.value);
+      v.value.reset();
+    }
+    out[name] = v;
+  }
+  return out;
+}
+
+}  // namespace comparison

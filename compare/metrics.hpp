@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cases/run_result.hpp"
+#include "cases/scene.hpp"
+
+namespace comparison {
+
+/// Value of one metric for one engine, or why there is none (never NaN).
+struct MetricValue {
+  std::optional<double> value;
+  std::string source;   ///< "trace" (computed here) or "closed form" (given by the engine)
+  std::string problem;  ///< set when value is empty
+};
+
+/// Metric name → value for one engine.
+using MetricSet = std::map<std::string, MetricValue>;
+
+/// Computes every metric the scene lists (scene.compare.metrics) from one engine's result,
+/// with one implementation shared by all engines (DESIGN.md step 3). Closed-form values an
+/// engine supplies in exact_metrics take precedence. `analytic` (may be null) is the analytic
+/// engine's result, needed by amplitude_error. A run that is not ok yields no values.
+MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run,
+                          const cases::RunResult* analytic);
+
+/// Displacement of the subject along the collision axis at every trace row (the observable of
+/// max_position and amplitude_error), or empty when the trace cannot give it.
+std::optional<std::vector<double>> axis_displacement(const cases::Scene& scene,
+                                                     const cases::Trace& trace);
+
+}  // namespace comparison

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+#include "reference/inhouse/inhouse_engine.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "dem/integrators/scheme.hpp"
+#include "reference/analytic/analytic_engine.hpp"
+#include "reference/inhouse/scene_to_core.hpp"
+#include "support/build_info.hpp"
+
+namespace reference {
+namespace {
+
+/// Trace columns for the scene's traced particles and pairs, in the order `record` fills them.
+cases::Trace make_trace(const cases::Scene& scene) {
+  cases::Trace trace;
+  trace.add_column("time");
+  for (const std::size_t i : scene.output.trace_particles) {
+    for (const auto q : cases::kParticleQuantities) trace.add_column(cases::particle_column(i, q));
+  }
+  for (const auto& [p, q] : scene.output.trace_pairs) {
+    for (const auto name : cases::kPairQuantities) trace.add_column(cases::pair_column(p, q, name));
+  }
+  return trace;
+}
+
+/// Appends the simulation's current state as one trace row.
+void record(const cases::Scene& scene, const dem::Simulation& sim, cases::Trace& trace) {
+  std::vector<double> row;
+  row.reserve(trace.columns().size());
+  row.push_back(sim.time());
+  const dem::KinematicState& s = sim.state();
+  const dem::Vec3Array& force = sim.force_field().forces();
+  for (const std::size_t i : scene.output.trace_particles) {
+    const auto c = static_cast<Eigen::Index>(i);
+    for (const dem::Vec3Array* field : {&s.position, &s.velocity, &s.angular_velocity, &force}) {
+      for (Eigen::Index k = 0; k < 3; ++k) row.push_back((*field)(k, c));
+    }
+  }
+  for (const auto& o : sim.force_field().observations()) {
+    row.push_back(o.overlap);
+    row.push_back(o.normal_force);
+  }
+  trace.append_row(row);
+}
+
+/// Full particle state at the simulation's current time.
+cases::Snapshot snapshot(const dem::Simulation& sim) {
+  cases::Snapshot snap;
+  snap.time = sim.time();
+  const dem::KinematicState& s = sim.state();
+  for (Eigen::Index i = 0; i < s.position.cols(); ++i) {
+    snap.position.push_back({s.position(0, i), s.position(1, i), s.position(2, i)});
+    snap.velocity.push_back({s.velocity(0, i), s.velocity(1, i), s.velocity(2, i)});
+    snap.angular_velocity.push_back(
+        {s.angular_velocity(0, i), s.angular_velocity(1, i), s.angular_velocity(2, i)});
+  }
+  return snap;
+}
+
+/// Gives a multi-step scheme exact states at t = −Δt, −2Δt, … from the analytic solution.
+void supply_exact_past(const cases::Scene& scene, dem::Simulation& sim) {
+  const std::size_t needed = sim.past_states_needed();
+  if (needed == 0) return;
+  std::vector<double> times;
+  for (std::size_t k = 1; k <= needed; ++k) times.push_back(-static_cast<double>(k) * sim.timestep());
+  std::vector<dem::KinematicState> past;
+  try {
+    for (const auto& snap : exact_states(scene, times)) past.push_back(to_state(snap));
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(
+        std::string("integration.startup = \"exact\" needs the analytic solution of the scene, "
+                    "which is not available: ") + e.what());
+  }
+  sim.set_exact_past(past);
+}
+
+/// The conventions this run used, for reports.
+std::map<std::string, std::string> conventions(const cases::Scene& scene, const CoreSetup& setup) {
+  const dem::SchemeInfo& info = dem::scheme_info(scene.integration.scheme);
+  std::map<std::string, std::string> c;
+  c["integrator"] = fmt::format("{} ({})", info.name, info.source);
+  c["timestep"] = fmt::format("{:.6g} s ({})", setup.simulation.timestep,
+                              scene.integration.timestep ? "fixed" : "automatic");
+  c["contact onset"] = "a pair interacts while its overlap δ > 0 (strictly)";
+  c["trace velocity"] = scene.integration.scheme == dem::SchemeId::leapfrog
+                            ? "half-step velocity v(t − Δt/2), as YADE reports it"
+                            : "velocity at the sample time";
+  c["multistep start-up"] = scene.integration.startup == dem::StartupPolicy::exact
+                                ? "exact past states from the analytic solution"
+                                : fmt::format("RK4, {} sub-steps per step",
+                                              scene.integration.startup_substeps);
+  c["rotation"] = scene.integration.rotation ? "integrated" : "held at initial values";
+  return c;
+}
+
+}  // namespace
+
+std::optional<std::string> InhouseEngine::version() const {
+  return fmt::format("dem-workbench {} ({})", support::kVersion, support::kGitCommit);
+}
+
+Support InhouseEngine::supports(const cases::Scene&) const { return {}; }
+
+cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&) const {
+  const CoreSetup setup = core_setup(scene);
+  dem::Simulation sim(setup.simulation);
+  if (scene.integration.startup == dem::StartupPolicy::exact) supply_exact_past(scene, sim);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> watched;
+  for (const auto& [p, q] : scene.output.trace_pairs) {
+    watched.emplace_back(static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(q));
+  }
+  sim.watch_pairs(watched);
+
+  cases::RunResult result;
+  result.status = cases::RunStatus::ok;
+  result.trace = make_trace(scene);
+  std::vector<double> snapshot_times = scene.output.snapshot_times;
+  std::sort(snapshot_times.begin(), snapshot_times.end());
+  std::size_t next_snapshot = 0;
+  const double dt = sim.timestep();
+  const auto take_snapshots = [&] {
+    while (next_snapshot < snapshot_times.size() &&
+           sim.time() >= snapshot_times[next_snapshot] - 0.5 * dt) {
+      result.snapshots.push_back(snapshot(sim));
+      ++next_snapshot;
+    }
+  };
+
+  const std::uint64_t steps = step_count(scene.integration.duration, dt);
+  record(scene, sim, result.trace);
+  take_snapshots();
+  for (std::uint64_t n = 1; n <= steps; ++n) {
+    sim.step();
+    if (n % scene.output.trace_every == 0) record(scene, sim, result.trace);
+    take_snapshots();
+  }
+
+  result.warnings = setup.warnings;
+  if (const auto bad = sim.diagnostics().unconverged_steps; bad > 0) {
+    result.warnings.push_back(fmt::format(
+        "integration.implicit_tolerance: {} implicit steps did not converge within {} iterations",
+        bad, scene.integration.implicit_max_iterations));
+  }
+  result.conventions = conventions(scene, setup);
+  return result;
+}
+
+}  // namespace reference

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+#include "reference/inhouse/scene_to_core.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "dem/contact/pair_table.hpp"
+
+namespace reference {
+namespace {
+
+dem::Vec3 to_vec(const cases::Vector3& v) { return {v[0], v[1], v[2]}; }
+
+/// Smallest body radius, the length scale of implicit-iteration tolerances.
+double smallest_radius(const cases::Scene& scene) {
+  double r = scene.particles.front().radius;
+  for (const auto& p : scene.particles) r = std::min(r, p.radius);
+  return r;
+}
+
+}  // namespace
+
+CoreSetup core_setup(const cases::Scene& scene) {
+  CoreSetup out;
+  dem::SimulationSetup& s = out.simulation;
+  for (const auto& p : scene.particles) {
+    s.particles.push_back(dem::ParticleInit{
+        p.radius, p.effect_radius, scene.materials.at(p.material).density,
+        static_cast<std::uint32_t>(p.material), to_vec(p.position), to_vec(p.velocity),
+        to_vec(p.angular_velocity), p.fixed});
+  }
+  s.materials = scene.materials;
+  s.mixing = scene.mixing;
+  s.pair_overrides = scene.pair_overrides;
+  s.model = scene.model;
+  s.gravity = to_vec(scene.gravity);
+  const cases::IntegrationSpec& in = scene.integration;
+  s.scheme = in.scheme;
+  s.scheme_settings = dem::SchemeSettings{in.rotation,
+                                          in.startup,
+                                          in.startup_substeps,
+                                          in.implicit_tolerance,
+                                          in.implicit_max_iterations,
+                                          smallest_radius(scene),
+                                          in.leapfrog_start};
+
+  dem::ParticleProperties props;
+  dem::KinematicState initial;
+  dem::build_particles(s.particles, props, initial);
+  const dem::PairTable table(s.materials, s.mixing, s.pair_overrides, s.model);
+  out.limits = dem::timestep_limits(props, table, in.rotation, in.steps_per_collision);
+  if (in.timestep) {
+    s.timestep = *in.timestep;
+    for (const auto& w : dem::timestep_warnings(s.timestep, out.limits)) {
+      out.warnings.push_back("integration.timestep: " + w);
+    }
+  } else {
+    s.timestep = dem::automatic_timestep(out.limits);
+    if (!std::isfinite(s.timestep)) {
+      throw dem::ModelError("integration.timestep",
+                            "timestep = \"auto\" needs at least one possible contact to size "
+                            "the step; give a number instead");
+    }
+  }
+  return out;
+}
+
+std::uint64_t step_count(double duration, double dt) {
+  const double n = std::ceil(duration / dt * (1.0 - 1e-12));
+  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(n));
+}
+
+dem::KinematicState to_state(const cases::Snapshot& snapshot) {
+  dem::KinematicState s;
+  const auto n = static_cast<Eigen::Index>(snapshot.position.size());
+  s.position.resize(3, n);
+  s.velocity.resize(3, n);
+  s.angular_velocity.resize(3, n);
+  s.orientation.assign(snapshot.position.size(), dem::Quat::Identity());
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    s.position.col(i) = to_vec(snapshot.position[k]);
+    s.velocity.col(i) = to_vec(snapshot.velocity[k]);
+    s.angular_velocity.col(i) = to_vec(snapshot.angular_velocity[k]);
+  }
+  return s;
+}
+
+}  // namespace reference

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cases/run_result.hpp"
+#include "cases/scene.hpp"
+#include "dem/particles/particles.hpp"
+#include "dem/simulation/simulation.hpp"
+#include "dem/timestep/timestep_control.hpp"
+
+namespace reference {
+
+/// The core's set-up for a scene, with the time step resolved (fixed or automatic).
+struct CoreSetup {
+  dem::SimulationSetup simulation;
+  dem::TimestepLimits limits;
+  std::vector<std::string> warnings;  ///< time-step warnings, naming integration.timestep
+};
+
+/// Translates `scene` into the core's terms. Throws dem::ModelError on an incomplete model.
+CoreSetup core_setup(const cases::Scene& scene);
+
+/// Number of steps that cover the scene's duration with time step dt (at least 1).
+std::uint64_t step_count(double duration, double dt);
+
+/// Converts an exact snapshot into the core's state (orientations at identity).
+dem::KinematicState to_state(const cases::Snapshot& snapshot);
+
+}  // namespace reference

@@ -1,0 +1,190 @@
+// SPDX-License-Identifier: MIT
+#include "reports/case_report.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include <fmt/format.h>
+
+#include "cases/catalogue.hpp"
+#include "cases/mixed_pairs.hpp"
+#include "dem/integrators/scheme_id.hpp"
+#include "reports/gnuplot.hpp"
+#include "reports/markdown.hpp"
+
+namespace reports {
+namespace {
+
+std::string heading(int level, const std::string& text) {
+  return std::string(static_cast<std::size_t>(level), '#') + " " + text + "\n\n";
+}
+
+std::string unit_of(const std::string& metric) {
+  for (const auto& m : cases::metric_catalogue()) {
+    if (m.name == metric) return std::string(m.unit);
+  }
+  return "";
+}
+
+std::string model_section(const cases::Scene& scene, int level) {
+  std::string md = heading(level, "Model and parameters");
+  MarkdownTable slots({"slot", "sub-model"});
+  slots.add_row({"normal", scene.model.normal});
+  slots.add_row({"damping", scene.model.damping});
+  slots.add_row({"tangential", scene.model.tangential});
+  slots.add_row({"cohesion", scene.model.cohesion});
+  slots.add_row({"rolling", scene.model.rolling});
+  md += slots.render() + "\n";
+  MarkdownTable pairs({"pair", "property", "value", "origin"});
+  for (const auto& p : cases::mixed_pairs(scene)) {
+    for (const auto& v : p.values) {
+      pairs.add_row({p.material_a + "–" + p.material_b, v.key, format_number(v.value), v.origin});
+    }
+  }
+  if (pairs.rows() > 0) md += "Mixed pair table:\n\n" + pairs.render() + "\n";
+  const auto& in = scene.integration;
+  md += fmt::format(
+      "Integration: `{}`, Δt = {}, duration {} s, {} particles ({} fixed), trace every {} "
+      "step(s).\n\n",
+      dem::scheme_info(in.scheme).keyword, in.timestep ? fmt::format("{:.6g} s", *in.timestep) : "auto",
+      in.duration, scene.particles.size(),
+      std::count_if(scene.particles.begin(), scene.particles.end(),
+                    [](const auto& p) { return p.fixed; }),
+      scene.output.trace_every);
+  return md;
+}
+
+std::string runs_section(const comparison::CaseOutcome& o, int level) {
+  std::string md = heading(level, "Engines");
+  MarkdownTable t({"engine", "status", "version", "wall time (s)", "note"});
+  for (const auto& r : o.runs) {
+    t.add_row({r.engine, std::string(cases::to_string(r.status)), r.version,
+               fmt::format("{:.3f}", r.wall_time_s), r.reason});
+  }
+  return md + t.render() + "\n";
+}
+
+std::string metrics_section(const comparison::CaseOutcome& o, int level) {
+  if (o.scene.compare.metrics.empty()) return "";
+  std::vector<std::string> header{"metric", "unit"};
+  for (const auto& r : o.runs) header.push_back(r.engine);
+  MarkdownTable t(header);
+  for (const auto& name : o.scene.compare.metrics) {
+    std::vector<std::string> row{name, unit_of(name)};
+    for (const auto& r : o.runs) {
+      const auto& set = o.metrics.at(r.engine);
+      const auto it = set.find(name);
+      if (it == set.end() || !it->second.value) {
+        row.push_back(r.status == cases::RunStatus::ok && it != set.end() ? "— (" + it->second.problem + ")"
+                                                                          : "—");
+      } else {
+        row.push_back(format_number(it->second.value) +
+                      (it->second.source == "closed form" ? " (closed form)" : ""));
+      }
+    }
+    t.add_row(row);
+  }
+  return heading(level, "Metrics") + t.render() + "\n";
+}
+
+/// Overlay plots of every engine's trace; returns the markdown image lines.
+std::string plots_section(const comparison::CaseOutcome& o, const std::filesystem::path& plot_dir,
+                          const std::filesystem::path& report_dir, int level) {
+  Plot position;
+  position.title = "Subject displacement along the collision axis";
+  position.xlabel = "time (s)";
+  position.ylabel = "displacement (m)";
+  Plot overlap;
+  overlap.title = "Overlap of the compared pair";
+  overlap.xlabel = "time (s)";
+  overlap.ylabel = "overlap (m)";
+  Plot force;
+  force.title = "Normal force against overlap";
+  force.xlabel = "overlap (m)";
+  force.ylabel = "normal force (N)";
+  const auto pair = o.scene.compare.pair;
+  for (const auto& r : o.runs) {
+    if (r.status != cases::RunStatus::ok) continue;
+    const auto* t = r.trace.column("time");
+    if (t == nullptr) continue;
+    const std::string style = r.engine == "analytic" ? "lines dt 2" : "lines";
+    if (const auto d = comparison::axis_displacement(o.scene, r.trace)) {
+      position.series.push_back({r.engine, *t, *d, style});
+    }
+    if (pair) {
+      const auto* ov = r.trace.column(cases::pair_column(pair->first, pair->second, "overlap"));
+      const auto* fn = r.trace.column(cases::pair_column(pair->first, pair->second, "fn"));
+      if (ov != nullptr) overlap.series.push_back({r.engine, *t, *ov, style});
+      if (ov != nullptr && fn != nullptr) force.series.push_back({r.engine, *ov, *fn, style});
+    }
+  }
+  std::string md;
+  const std::array<std::pair<const Plot*, const char*>, 3> plots{
+      {{&position, "position.png"}, {&overlap, "overlap.png"}, {&force, "force_overlap.png"}}};
+  for (const auto& [plot, file] : plots) {
+    if (plot->series.empty()) continue;
+    const std::filesystem::path png = plot_dir / file;
+    if (const auto problem = render_png(*plot, png)) {
+      md += fmt::format("- plot `{}` not drawn: {}\n", file, *problem);
+    } else {
+      md += fmt::format("![{}]({})\n\n", plot->title,
+                        std::filesystem::relative(png, report_dir).generic_string());
+    }
+  }
+  return md.empty() ? "" : heading(level, "Plots") + md + "\n";
+}
+
+std::string conventions_section(const comparison::CaseOutcome& o, int level) {
+  MarkdownTable t({"engine", "convention", "value"});
+  for (const auto& r : o.runs) {
+    for (const auto& [k, v] : r.conventions) t.add_row({r.engine, k, v});
+  }
+  return t.rows() == 0 ? "" : heading(level, "Conventions") + t.render() + "\n";
+}
+
+std::string warnings_section(const comparison::CaseOutcome& o, int level) {
+  std::string md;
+  for (const auto& w : o.scene.warnings) md += "- case: " + w + "\n";
+  for (const auto& r : o.runs) {
+    for (const auto& w : r.warnings) md += "- " + r.engine + ": " + w + "\n";
+  }
+  return md.empty() ? "" : heading(level, "Warnings") + md + "\n";
+}
+
+}  // namespace
+
+std::string discrepancy_table(const comparison::CaseOutcome& o) {
+  MarkdownTable t({"metric", "engine", "value", "reference", "ref. value", "abs. diff",
+                   "rel. diff", "tolerance", "status", "note"});
+  for (const auto& c : o.comparisons) {
+    std::string tol;
+    if (c.tolerance.rel > 0.0) tol += fmt::format("rel {:.1e}", c.tolerance.rel);
+    if (c.tolerance.abs > 0.0) tol += fmt::format("{}abs {:.1e}", tol.empty() ? "" : ", ", c.tolerance.abs);
+    t.add_row({c.metric, c.engine, format_number(c.value), c.reference,
+               format_number(c.reference_value), format_ratio(c.abs_diff), format_ratio(c.rel_diff),
+               tol, status_cell(c.status), c.note});
+  }
+  return t.render();
+}
+
+std::string case_section(const comparison::CaseOutcome& o, const std::filesystem::path& plot_dir,
+                         const std::filesystem::path& report_dir, int level) {
+  const cases::Scene& s = o.scene;
+  std::string md = heading(level, fmt::format("`{}` — {}", s.name, status_cell(comparison::worst_status(o))));
+  if (!s.description.empty()) md += s.description + "\n\n";
+  if (!s.thesis_reference.empty()) md += "Thesis: " + s.thesis_reference + ".  \n";
+  md += fmt::format("Case file: `{}` (sha256 `{}`).\n\n", s.source_path, s.source_sha256.substr(0, 16));
+  md += model_section(s, level + 1);
+  md += runs_section(o, level + 1);
+  md += metrics_section(o, level + 1);
+  if (!o.comparisons.empty()) {
+    md += heading(level + 1, fmt::format("Discrepancies against `{}`", s.compare.reference));
+    md += discrepancy_table(o) + "\n";
+  }
+  md += plots_section(o, plot_dir, report_dir, level + 1);
+  md += conventions_section(o, level + 1);
+  md += warnings_section(o, level + 1);
+  return md;
+}
+
+}  // namespace reports

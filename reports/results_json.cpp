@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#include "reports/results_json.hpp"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+namespace reports {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// A finite number, or null.
+Json number(std::optional<double> v) {
+  if (!v || !std::isfinite(*v)) return nullptr;
+  return *v;
+}
+
+Json engine_entry(const cases::RunResult& run, const comparison::MetricSet& metrics) {
+  Json e;
+  e["status"] = std::string(cases::to_string(run.status));
+  e["version"] = run.version;
+  e["wall_time_s"] = number(run.wall_time_s);
+  if (!run.reason.empty()) e["reason"] = run.reason;
+  Json values = Json::object();
+  Json sources = Json::object();
+  Json problems = Json::object();
+  for (const auto& [name, m] : metrics) {
+    values[name] = number(m.value);
+    if (m.value) sources[name] = m.source;
+    if (!m.problem.empty()) problems[name] = m.problem;
+  }
+  e["metrics"] = values;
+  e["metric_sources"] = sources;
+  if (!problems.empty()) e["metric_problems"] = problems;
+  if (!run.warnings.empty()) e["warnings"] = run.warnings;
+  if (!run.conventions.empty()) {
+    Json c = Json::object();
+    for (const auto& [k, v] : run.conventions) c[k] = v;
+    e["conventions"] = c;
+  }
+  if (!run.log_tail.empty()) e["log_tail"] = run.log_tail;
+  return e;
+}
+
+Json comparison_entry(const comparison::Comparison& c) {
+  Json j;
+  j["metric"] = c.metric;
+  j["engine"] = c.engine;
+  j["reference"] = c.reference;
+  j["value"] = number(c.value);
+  j["reference_value"] = number(c.reference_value);
+  j["abs_diff"] = number(c.abs_diff);
+  j["rel_diff"] = number(c.rel_diff);
+  Json tol = Json::object();
+  if (c.tolerance.rel > 0.0) tol["rel"] = c.tolerance.rel;
+  if (c.tolerance.abs > 0.0) tol["abs"] = c.tolerance.abs;
+  j["tolerance"] = tol;
+  j["status"] = std::string(comparison::to_string(c.status));
+  if (!c.note.empty()) j["note"] = c.note;
+  return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome) {
+  Json doc;
+  doc["case"] = outcome.scene.name;
+  doc["case_sha256"] = outcome.scene.source_sha256;
+  doc["case_file"] = outcome.scene.source_path;
+  Json engines = Json::object();
+  for (const auto& run : outcome.runs) {
+    const auto m = outcome.metrics.find(run.engine);
+    engines[run.engine] = engine_entry(run, m == outcome.metrics.end() ? comparison::MetricSet{} : m->second);
+  }
+  doc["engines"] = engines;
+  Json rows = Json::array();
+  for (const auto& c : outcome.comparisons) rows.push_back(comparison_entry(c));
+  doc["comparisons"] = rows;
+  doc["status"] = std::string(comparison::to_string(comparison::worst_status(outcome)));
+  if (!outcome.scene.warnings.empty()) doc["warnings"] = outcome.scene.warnings;
+  return doc;
+}
+
+}  // namespace reports
