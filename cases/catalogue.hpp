@@ -11,12 +11,16 @@ struct MetricInfo {
   std::string_view name;
   std::string_view unit;
   std::string_view meaning;
+  bool needs_pair;     ///< measured on the contact compare.pair
+  bool needs_subject;  ///< measured on the motion of compare.subject
 };
 
 /// Every metric name a case file may list under compare.metrics.
 std::span<const MetricInfo> metric_catalogue() noexcept;
 /// True when `name` is in the metric catalogue.
 bool is_known_metric(std::string_view name) noexcept;
+/// Catalogue entry of `name`, or nullptr.
+const MetricInfo* find_metric(std::string_view name) noexcept;
 
 /// Every engine name a case file may list under compare.engines.
 std::span<const std::string_view> engine_catalogue() noexcept;

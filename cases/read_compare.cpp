@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// Section readers for what is recorded and compared: [compare] and [output].
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cases/catalogue.hpp"
+#include "cases/loader_sections.hpp"
+#include "cases/suggestion.hpp"
+
+namespace cases::loader {
+namespace {
+
+constexpr auto kCompareKeys = std::to_array<std::string_view>(
+    {"engines", "reference", "subject", "pair", "metrics", "tolerances"});
+
+constexpr auto kOutputKeys = std::to_array<std::string_view>(
+    {"trace_every", "trace_particles", "trace_pairs", "snapshot_times"});
+
+constexpr auto kToleranceKeys = std::to_array<std::string_view>({"rel", "abs"});
+
+/// The engine everything is measured against when the case names none and it is listed.
+constexpr std::string_view kPreferredReference = "analytic";
+
+/// Name of every metric in the catalogue.
+std::vector<std::string_view> metric_names() {
+  std::vector<std::string_view> out;
+  for (const auto& m : metric_catalogue()) out.push_back(m.name);
+  return out;
+}
+
+/// True when `item` is an element of `range`.
+template <class Range, class Item>
+bool contains(const Range& range, const Item& item) {
+  return std::find(range.begin(), range.end(), item) != range.end();
+}
+
+/// Strings of an array, each one of `known`, none repeated.
+std::vector<std::string> read_keyword_list(const Value& list,
+                                           std::span<const std::string_view> known,
+                                           std::string_view what) {
+  std::vector<std::string> out;
+  for (const Value& item : list.elements()) {
+    std::string word = item.keyword(known, what);
+    if (contains(out, word)) item.fail(fmt::format("{} '{}' is listed twice", what, word));
+    out.push_back(std::move(word));
+  }
+  return out;
+}
+
+/// compare.engines, default ["inhouse"].
+std::vector<std::string> read_engines(const Table& table) {
+  const auto value = table.find("engines");
+  if (!value) return {"inhouse"};
+  auto engines = read_keyword_list(*value, engine_catalogue(), "engine");
+  if (engines.empty()) value->fail("must list at least one engine");
+  return engines;
+}
+
+/// compare.reference: one of the engines; default "analytic" when listed, else the first.
+std::string read_reference(const Table& table, const std::vector<std::string>& engines) {
+  const auto value = table.find("reference");
+  if (!value) {
+    return contains(engines, kPreferredReference) ? std::string(kPreferredReference)
+                                                  : engines.front();
+  }
+  const std::string name = value->string();
+  if (contains(engines, name)) return name;
+  const std::vector<std::string_view> listed(engines.begin(), engines.end());
+  value->fail(fmt::format("must be one of compare.engines ({}), got '{}'{}", join(listed), name,
+                          did_you_mean(name, listed)));
+}
+
+/// Index of the first particle that is not fixed, if any.
+std::optional<std::size_t> first_moving(const std::vector<ParticleSpec>& particles) {
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (!particles[i].fixed) return i;
+  }
+  return std::nullopt;
+}
+
+/// compare.subject: a moving particle; default the first moving one.
+std::optional<std::size_t> read_subject(const Table& table,
+                                        const std::vector<ParticleSpec>& particles) {
+  const auto value = table.find("subject");
+  if (!value) return first_moving(particles);
+  const std::size_t index = value->index(particles.size(), "particles");
+  if (particles[index].fixed) {
+    value->fail(fmt::format("particle {} is fixed; the subject must be a moving particle", index));
+  }
+  return index;
+}
+
+/// Throws when a listed metric needs compare.pair or compare.subject and it is unset.
+void check_metric_needs(const Table& table, const CompareSpec& spec) {
+  for (const std::string& metric : spec.metrics) {
+    const MetricInfo* info = find_metric(metric);
+    if (info == nullptr) continue;  // unknown names were rejected when the list was read
+    if (!spec.pair && info->needs_pair) {
+      table.fail("metrics", fmt::format("metric '{}' needs compare.pair (the contact it is "
+                                        "measured on), which is not set",
+                                        metric));
+    }
+    if (!spec.subject && info->needs_subject) {
+      table.fail("metrics", fmt::format("metric '{}' needs a moving subject particle "
+                                        "(compare.subject), but every particle is fixed",
+                                        metric));
+    }
+  }
+}
+
+/// One { rel = …, abs = … } entry of compare.tolerances.
+Tolerance read_tolerance(const Value& value) {
+  const Table table = value.table();
+  table.allow_only(kToleranceKeys);
+  if (!table.has("rel") && !table.has("abs")) table.fail("needs 'rel' or 'abs' (or both)");
+  Tolerance tolerance;
+  if (const auto v = table.find("rel")) tolerance.rel = v->number(non_negative_range());
+  if (const auto v = table.find("abs")) tolerance.abs = v->number(non_negative_range());
+  return tolerance;
+}
+
+/// compare.tolerances: one entry per listed metric at most.
+std::map<std::string, Tolerance> read_tolerances(const Table& compare,
+                                                 const std::vector<std::string>& metrics) {
+  std::map<std::string, Tolerance> out;
+  const auto section = compare.find("tolerances");
+  if (!section) return out;
+  const std::vector<std::string_view> known = metric_names();
+  for (const auto& [name, value] : section->table().entries()) {
+    if (!contains(known, name)) {
+      value.fail(fmt::format("unknown metric '{}'{} (known: {})", name, did_you_mean(name, known),
+                             join(known)));
+    }
+    if (!contains(metrics, name)) {
+      value.fail(
+          fmt::format("tolerance for metric '{}', which compare.metrics does not list", name));
+    }
+    out[name] = read_tolerance(value);
+  }
+  return out;
+}
+
+/// output.trace_particles: default every moving particle.
+std::vector<std::size_t> read_trace_particles(const Table& table,
+                                              const std::vector<ParticleSpec>& particles) {
+  std::vector<std::size_t> out;
+  const auto value = table.find("trace_particles");
+  if (!value) {
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+      if (!particles[i].fixed) out.push_back(i);
+    }
+    return out;
+  }
+  for (const Value& item : value->elements()) {
+    const std::size_t index = item.index(particles.size(), "particles");
+    if (contains(out, index)) item.fail(fmt::format("particle {} is listed twice", index));
+    out.push_back(index);
+  }
+  return out;
+}
+
+/// output.trace_pairs: default [compare.pair] when set, else none.
+std::vector<ParticlePair> read_trace_pairs(const Table& table, const Scene& scene) {
+  std::vector<ParticlePair> out;
+  const auto value = table.find("trace_pairs");
+  if (!value) {
+    if (scene.compare.pair) out.push_back(*scene.compare.pair);
+    return out;
+  }
+  std::set<std::pair<std::size_t, std::size_t>> seen;
+  for (const Value& item : value->elements()) {
+    const ParticlePair pair = item.particle_pair(scene.particles.size());
+    if (!seen.insert(std::minmax(pair.first, pair.second)).second) {
+      item.fail(fmt::format("the pair [{}, {}] is listed twice", pair.first, pair.second));
+    }
+    out.push_back(pair);
+  }
+  return out;
+}
+
+/// output.snapshot_times: increasing times within [0, duration].
+std::vector<double> read_snapshot_times(const Table& table, double duration) {
+  std::vector<double> out;
+  const auto value = table.find("snapshot_times");
+  if (!value) return out;
+  for (const Value& item : value->elements()) {
+    const double t = item.number();
+    if (t < 0.0 || t > duration) {
+      item.fail(fmt::format("must be in [0, integration.duration] = [0, {}], got {}", duration, t));
+    }
+    if (!out.empty() && t <= out.back()) {
+      item.fail(fmt::format("must be greater than the previous time {}, got {}", out.back(), t));
+    }
+    out.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace
+
+void read_compare(const Table& root, Scene& scene) {
+  const toml::table absent;
+  const Table table = root.table_or("compare", absent);
+  table.allow_only(kCompareKeys);
+  CompareSpec& spec = scene.compare;
+  spec.engines = read_engines(table);
+  spec.reference = read_reference(table, spec.engines);
+  spec.subject = read_subject(table, scene.particles);
+  if (const auto v = table.find("pair")) spec.pair = v->particle_pair(scene.particles.size());
+  if (const auto v = table.find("metrics")) {
+    spec.metrics = read_keyword_list(*v, metric_names(), "metric");
+  }
+  check_metric_needs(table, spec);
+  spec.tolerances = read_tolerances(table, spec.metrics);
+}
+
+void read_output(const Table& root, Scene& scene) {
+  const toml::table absent;
+  const Table table = root.table_or("output", absent);
+  table.allow_only(kOutputKeys);
+  OutputSpec& spec = scene.output;
+  if (const auto v = table.find("trace_every")) {
+    spec.trace_every =
+        static_cast<std::size_t>(v->integer(1, std::numeric_limits<std::int64_t>::max()));
+  }
+  spec.trace_particles = read_trace_particles(table, scene.particles);
+  spec.trace_pairs = read_trace_pairs(table, scene);
+  spec.snapshot_times = read_snapshot_times(table, scene.integration.duration);
+}
+
+}  // namespace cases::loader

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// Every file in tests/data/bad_cases/ is a malformed case whose first line says what the loader
+// must report: "# expect: KEY | FRAGMENT".
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cases/case_loader.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// What a bad case file promises about its error.
+struct Expectation {
+  std::string key;
+  std::string fragment;
+};
+
+/// Folder of the malformed case files.
+fs::path bad_cases_dir() { return fs::path(DEMWB_TEST_DATA_DIR) / "bad_cases"; }
+
+/// Every malformed case file, sorted by name.
+std::vector<fs::path> bad_case_files() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(bad_cases_dir())) {
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+/// Parses "# expect: KEY | FRAGMENT" from the first line of `file`.
+Expectation read_expectation(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  const std::string prefix = "# expect: ";
+  const auto bar = line.find(" | ");
+  if (line.rfind(prefix, 0) != 0 || bar == std::string::npos) return {};
+  return {line.substr(prefix.size(), bar - prefix.size()), line.substr(bar + 3)};
+}
+
+/// Parameterised over the malformed case files.
+class BadCase : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(BadCase, IsRejectedNamingFileKeyAndProblem) {
+  const fs::path file = GetParam();
+  const Expectation expected = read_expectation(file);
+  ASSERT_FALSE(expected.key.empty()) << file << " lacks a '# expect: KEY | FRAGMENT' first line";
+  ASSERT_FALSE(expected.fragment.empty()) << file << " has an empty expected fragment";
+  try {
+    static_cast<void>(cases::load_case(file));
+    FAIL() << file << " loaded without error";
+  } catch (const cases::CaseError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(file.string() + ":", 0), 0u) << what;
+    EXPECT_EQ(e.file(), file.string());
+    EXPECT_EQ(e.key(), expected.key) << what;
+    EXPECT_NE(what.find(": " + expected.key + ": "), std::string::npos) << what;
+    EXPECT_NE(what.find(expected.fragment), std::string::npos) << what;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CaseLoader, BadCase, ::testing::ValuesIn(bad_case_files()),
+                         [](const ::testing::TestParamInfo<fs::path>& param) {
+                           return param.param.stem().string();
+                         });
+
+TEST(CaseLoader, BadCaseLibraryHasAtLeastThirtyFiles) { EXPECT_GE(bad_case_files().size(), 30u); }
+
+TEST(CaseLoader, EveryBadCaseErrorPointsAtALineAndColumn) {
+  for (const fs::path& file : bad_case_files()) {
+    try {
+      static_cast<void>(cases::load_case(file));
+    } catch (const cases::CaseError& e) {
+      const std::string rest = std::string(e.what()).substr(file.string().size());
+      EXPECT_TRUE(rest.size() > 1 && rest[0] == ':' &&
+                  std::isdigit(static_cast<unsigned char>(rest[1])))
+          << e.what();
+    }
+  }
+}
+
+}  // namespace
