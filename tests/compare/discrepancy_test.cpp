@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// Statuses of comparisons: pass/fail by tolerance; error, missing and n/a never pass.
+#include <gtest/gtest.h>
+
+#include "compare/case_outcome.hpp"
+#include "scene_fixtures.hpp"
+
+namespace {
+
+using comparison::Status;
+using test_support::collision_scene;
+using test_support::collision_trace;
+using test_support::ok_run;
+
+TEST(Judge, PassesWithinAbsPlusRelTimesReference) {
+  EXPECT_EQ(comparison::judge(1.0009, 1.0, {1e-3, 0.0}), Status::pass);
+  EXPECT_EQ(comparison::judge(1.0011, 1.0, {1e-3, 0.0}), Status::fail);
+  EXPECT_EQ(comparison::judge(0.0009, 0.0, {0.0, 1e-3}), Status::pass);
+  EXPECT_EQ(comparison::judge(0.0011, 0.0, {0.0, 1e-3}), Status::fail);
+}
+
+TEST(Statuses, OnlyPassAndNotApplicableAreGreen) {
+  EXPECT_TRUE(comparison::is_green(Status::pass));
+  EXPECT_TRUE(comparison::is_green(Status::not_applicable));
+  EXPECT_FALSE(comparison::is_green(Status::fail));
+  EXPECT_FALSE(comparison::is_green(Status::error));
+  EXPECT_FALSE(comparison::is_green(Status::missing));
+  for (const auto s : {Status::pass, Status::fail, Status::error, Status::missing, Status::not_applicable}) {
+    EXPECT_EQ(comparison::parse_status(comparison::to_string(s)), s);
+  }
+}
+
+cases::RunResult failed_run(const std::string& engine, cases::RunStatus status, const std::string& reason) {
+  cases::RunResult r;
+  r.engine = engine;
+  r.status = status;
+  r.reason = reason;
+  return r;
+}
+
+TEST(CompareRuns, IdenticalTracesPassAndAmplitudeErrorIsMeasuredAgainstZero) {
+  const auto scene = collision_scene({"contact_duration", "amplitude_error"});
+  const auto o = comparison::evaluate_runs(scene, {ok_run("analytic", collision_trace(5e-6)),
+                                                   ok_run("inhouse", collision_trace(5e-6))});
+  ASSERT_EQ(o.comparisons.size(), 2U);
+  for (const auto& c : o.comparisons) {
+    EXPECT_EQ(c.status, Status::pass) << c.metric << ": " << c.note;
+    EXPECT_EQ(c.engine, "inhouse");
+  }
+  EXPECT_EQ(*o.comparisons[1].reference_value, 0.0);
+  EXPECT_FALSE(o.comparisons[1].rel_diff.has_value());  // relative to 0 is undefined, not NaN
+  EXPECT_EQ(comparison::worst_status(o), Status::pass);
+}
+
+TEST(CompareRuns, OutOfToleranceFails) {
+  auto scene = collision_scene({"restitution"});
+  const auto o = comparison::evaluate_runs(scene, {ok_run("analytic", collision_trace(5e-6)),
+                                                   ok_run("inhouse", collision_trace(5e-6, 0.99))});
+  ASSERT_EQ(o.comparisons.size(), 1U);
+  EXPECT_EQ(o.comparisons[0].status, Status::fail);
+  EXPECT_NEAR(*o.comparisons[0].abs_diff, 0.01, 1e-9);
+}
+
+TEST(CompareRuns, MissingErrorAndNotApplicableEnginesNeverPass) {
+  const auto scene = collision_scene({"max_overlap"});
+  const auto o = comparison::evaluate_runs(
+      scene, {ok_run("analytic", collision_trace(5e-6)), failed_run("lammps", cases::RunStatus::missing, "not installed"),
+              failed_run("yade", cases::RunStatus::error, "segfault"),
+              failed_run("inhouse", cases::RunStatus::not_applicable, "cannot")});
+  ASSERT_EQ(o.comparisons.size(), 3U);
+  EXPECT_EQ(o.comparisons[0].status, Status::missing);
+  EXPECT_EQ(o.comparisons[1].status, Status::error);
+  EXPECT_EQ(o.comparisons[1].note, "segfault");
+  EXPECT_EQ(o.comparisons[2].status, Status::not_applicable);
+  EXPECT_EQ(comparison::worst_status(o), Status::error);
+}
+
+TEST(CompareRuns, AReferenceThatCannotExpressTheCaseIsAnErrorNotAPass) {
+  const auto scene = collision_scene({"max_overlap"});
+  const auto o = comparison::evaluate_runs(
+      scene, {failed_run("analytic", cases::RunStatus::not_applicable, "no closed form"),
+              ok_run("inhouse", collision_trace(5e-6))});
+  ASSERT_EQ(o.comparisons.size(), 1U);
+  EXPECT_EQ(o.comparisons[0].status, Status::error);
+  EXPECT_NE(o.comparisons[0].note.find("no closed form"), std::string::npos);
+}
+
+TEST(CompareRuns, AMetricThatCannotBeComputedIsAnError) {
+  auto scene = collision_scene({"max_overlap"});
+  cases::Trace empty;
+  empty.add_column("time");
+  const auto o = comparison::evaluate_runs(scene, {ok_run("analytic", collision_trace(5e-6)), ok_run("inhouse", empty)});
+  ASSERT_EQ(o.comparisons.size(), 1U);
+  EXPECT_EQ(o.comparisons[0].status, Status::error);
+  EXPECT_FALSE(o.comparisons[0].note.empty());
+}
+
+TEST(CompareRuns, CaseTolerancesOverrideTheDefaults) {
+  auto scene = collision_scene({"restitution"});
+  EXPECT_EQ(comparison::tolerance_for(scene, "restitution").abs, 1e-3);
+  scene.compare.tolerances["restitution"] = {0.0, 0.05};
+  const auto o = comparison::evaluate_runs(scene, {ok_run("analytic", collision_trace(5e-6)),
+                                                   ok_run("inhouse", collision_trace(5e-6, 0.99))});
+  EXPECT_EQ(o.comparisons[0].status, Status::pass);
+}
+
+}  // namespace

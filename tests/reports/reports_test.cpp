@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// Report building blocks: tables, numbers, results.json, trace CSV, gnuplot PNGs.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "reports/gnuplot.hpp"
+#include "reports/markdown.hpp"
+#include "reports/results_json.hpp"
+#include "reports/trace_csv.hpp"
+#include "support/text_file.hpp"
+
+namespace {
+
+TEST(MarkdownTable, RendersHeaderSeparatorAndEscapedCells) {
+  reports::MarkdownTable t({"a", "b"});
+  t.add_row({"x|y", "line\nbreak"});
+  t.add_row({"only one"});
+  EXPECT_EQ(t.render(), "| a | b |\n|---|---|\n| x\\|y | line break |\n| only one |  |\n");
+  EXPECT_THROW(t.add_row({"1", "2", "3"}), std::invalid_argument);
+}
+
+TEST(Numbers, NeverPrintNaN) {
+  EXPECT_EQ(reports::format_number(std::nan("")), "—");
+  EXPECT_EQ(reports::format_number(std::nullopt), "—");
+  EXPECT_EQ(reports::format_number(0.000643), "0.000643");
+  EXPECT_EQ(reports::format_ratio(1.5e-7), "1.50e-07");
+}
+
+TEST(ResultsJson, HasTheContractFieldsAndNullInsteadOfNaN) {
+  comparison::CaseOutcome o;
+  o.scene.name = "c";
+  o.scene.source_sha256 = "abc";
+  cases::RunResult r;
+  r.engine = "inhouse";
+  r.status = cases::RunStatus::ok;
+  r.version = "v";
+  r.wall_time_s = 0.5;
+  o.runs.push_back(r);
+  o.metrics["inhouse"]["restitution"] = comparison::MetricValue{1.0, "trace", ""};
+  o.metrics["inhouse"]["max_overlap"] = comparison::MetricValue{std::nullopt, "", "no contact"};
+  comparison::Comparison c;
+  c.metric = "restitution";
+  c.engine = "inhouse";
+  c.reference = "analytic";
+  c.value = 1.0;
+  c.reference_value = 0.0;
+  c.rel_diff = std::nan("");
+  c.tolerance = {1e-3, 0.0};
+  c.status = comparison::Status::pass;
+  o.comparisons.push_back(c);
+  const auto j = reports::results_json(o);
+  EXPECT_EQ(j["case"], "c");
+  EXPECT_EQ(j["case_sha256"], "abc");
+  EXPECT_EQ(j["engines"]["inhouse"]["status"], "ok");
+  EXPECT_EQ(j["engines"]["inhouse"]["metrics"]["restitution"], 1.0);
+  EXPECT_TRUE(j["engines"]["inhouse"]["metrics"]["max_overlap"].is_null());
+  EXPECT_EQ(j["engines"]["inhouse"]["metric_problems"]["max_overlap"], "no contact");
+  EXPECT_TRUE(j["comparisons"][0]["rel_diff"].is_null());
+  EXPECT_EQ(j["comparisons"][0]["tolerance"]["rel"], 1e-3);
+  EXPECT_EQ(j["comparisons"][0]["status"], "pass");
+  EXPECT_EQ(j.dump().find("NaN"), std::string::npos);
+}
+
+TEST(TraceCsv, RoundTripsDoublesExactly) {
+  cases::Trace t;
+  t.add_column("time");
+  t.add_column("p0.x");
+  t.append_row({0.1, 1.0 / 3.0});
+  const std::string csv = reports::trace_csv(t);
+  std::istringstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  std::getline(in, line);
+  EXPECT_EQ(header, "time,p0.x");
+  EXPECT_EQ(std::stod(line.substr(line.find(',') + 1)), 1.0 / 3.0);
+}
+
+TEST(Gnuplot, RendersAPngAndKeepsItsDataAndScript) {
+  const auto dir = std::filesystem::temp_directory_path() / "demwb_gnuplot_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  reports::Plot p;
+  p.title = "test";
+  p.xlabel = "x";
+  p.ylabel = "y";
+  p.log_y = true;
+  p.series.push_back({"curve", {1, 2, 3, 4}, {1, 4, 9, std::nan("")}, "linespoints"});
+  const auto problem = reports::render_png(p, dir / "plot.png");
+  ASSERT_FALSE(problem.has_value()) << *problem;
+  const std::string png = support::read_file(dir / "plot.png");
+  ASSERT_GT(png.size(), 8U);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_TRUE(std::filesystem::exists(dir / "plot.gp"));
+  EXPECT_EQ(support::read_file(dir / "plot.dat").find("nan"), std::string::npos);
+}
+
+}  // namespace
