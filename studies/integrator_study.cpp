@@ -127,20 +127,27 @@ std::vector<ErrorPoint> run_all(const std::vector<std::function<ErrorPoint()>>& 
   return out;
 }
 
-/// Least-squares slope of log ε against log x over the points above the floor.
+/// Least-squares slope of log ε against log x over the points above the floor, with its
+/// standard error (large when the errors scatter instead of following a power law).
 void fit(SchemeSweep& s, double floor) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  std::size_t n = 0;
+  std::vector<std::pair<double, double>> xy;
   for (const auto& p : s.points) {
     if (!p.amplitude_error || !(*p.amplitude_error > floor) || !(p.x > 0.0)) continue;
-    const double lx = std::log(p.x);
-    const double ly = std::log(*p.amplitude_error);
-    sx += lx; sy += ly; sxx += lx * lx; sxy += lx * ly;
-    ++n;
+    xy.emplace_back(std::log(p.x), std::log(*p.amplitude_error));
   }
-  s.fitted_points = n;
-  const double den = static_cast<double>(n) * sxx - sx * sx;
-  if (n >= 2 && den > 0.0) s.slope = (static_cast<double>(n) * sxy - sx * sy) / den;
+  s.fitted_points = xy.size();
+  if (xy.size() < 2) return;
+  const double n = static_cast<double>(xy.size());
+  double mx = 0, my = 0;
+  for (const auto& [x, y] : xy) { mx += x / n; my += y / n; }
+  double sxx = 0, sxy = 0;
+  for (const auto& [x, y] : xy) { sxx += (x - mx) * (x - mx); sxy += (x - mx) * (y - my); }
+  if (!(sxx > 0.0)) return;
+  const double slope = sxy / sxx;
+  double residual = 0;
+  for (const auto& [x, y] : xy) residual += std::pow(y - my - slope * (x - mx), 2);
+  s.slope = slope;
+  s.slope_error = xy.size() > 2 ? std::sqrt(residual / (n - 2.0) / sxx) : 0.0;
 }
 
 /// A planned sweep: for each scheme and each x, the scene to run.
@@ -220,7 +227,7 @@ IntegratorStudy run_integrator_study(const IntegratorStudyOptions& given) {
   std::size_t r = 0;
   for (auto& plan : plans) {
     for (const dem::SchemeId scheme : dem::thesis_schemes()) {
-      SchemeSweep s{scheme, {}, std::nullopt, 0};
+      SchemeSweep s{scheme, {}, std::nullopt, 0.0, 0};
       for (std::size_t i = 0; i < plan.xs.size(); ++i) {
         s.points.push_back(results[r++]);
         if (!s.points.back().amplitude_error) {

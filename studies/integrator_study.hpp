@@ -41,6 +41,7 @@ struct SchemeSweep {
   dem::SchemeId scheme;
   std::vector<ErrorPoint> points;
   std::optional<double> slope;  ///< least-squares slope over points above the fit floor
+  double slope_error = 0.0;     ///< standard error of the slope (scatter about the line)
   std::size_t fitted_points = 0;
 };
 

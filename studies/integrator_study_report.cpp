@@ -42,8 +42,12 @@ const ThesisOrders& thesis_orders(dem::SchemeId id) {
 }
 
 std::string order_cell(const IntegratorStudy& study, const std::string& key, dem::SchemeId id) {
-  const auto o = fitted_order(study, key, id);
-  return o ? fmt::format("{:.2f}", *o) : "—";
+  const Sweep* sweep = find_sweep(study, key);
+  if (sweep == nullptr) return "—";
+  for (const auto& s : sweep->schemes) {
+    if (s.scheme == id && s.slope) return fmt::format("{:.2f} ± {:.2f}", *s.slope, s.slope_error);
+  }
+  return "—";
 }
 
 /// Schemes of one local order, as the thesis groups its figures.
@@ -188,7 +192,9 @@ void write_integrator_study(const IntegratorStudy& study, const std::filesystem:
       "discrete time points (§4.3.3). Multi-step schemes start from exact past states "
       "(`startup = \"exact\"`, §4.2.2); BD1/BD2 iterate to a relative tolerance of 1e-12.\n\n"
       "Global orders are least-squares slopes of log εx_amp against log Δt over Δt ∈ [{:.3g}, {:.3g}] s "
-      "({} points); points with εx_amp ≤ {:.0e} are at the round-off floor and are left out of the fit. "
+      "({} points), ± one standard error of the slope: a large one means the errors scatter about the "
+      "line rather than follow a power law. Points with εx_amp ≤ {:.0e} are at the round-off floor "
+      "and are left out of the fit. "
       "Other sweeps use Δt = {:.3g} s.\n\nReproduce with:\n\n```sh\n{}\n```\n\n",
       o.timesteps.front(), o.timesteps.back(), o.timesteps.size(), o.fit_floor, o.base_timestep, command);
   md += "## Global order of accuracy\n\n" + orders_table(study) + "\n";

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// End-to-end tests of the demwb program: real process, real files.
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/process.hpp"
+#include "support/text_file.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+/// Runs demwb with `args` in a scratch directory.
+Outcome demwb(const std::vector<std::string>& args) {
+  static int counter = 0;
+  const fs::path dir = fs::temp_directory_path() / ("demwb_e2e_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string n = std::to_string(counter++);
+  support::ProcessSpec spec;
+  spec.argv = {DEMWB_BINARY};
+  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+  spec.stdout_file = dir / ("out" + n);
+  spec.stderr_file = dir / ("err" + n);
+  spec.timeout_s = 120;
+  const auto r = support::run_process(spec);
+  EXPECT_TRUE(r.started) << r.error;
+  EXPECT_FALSE(r.timed_out);
+  return {r.exit_code, support::read_file(spec.stdout_file), support::read_file(spec.stderr_file)};
+}
+
+std::string canonical(const char* name) {
+  return std::string(DEMWB_SOURCE_DIR) + "/cases/canonical/" + name + ".toml";
+}
+
+fs::path scratch(const char* name) {
+  const fs::path p = fs::temp_directory_path() / ("demwb_e2e_out_" + std::to_string(::getpid())) / name;
+  fs::remove_all(p);
+  return p;
+}
+
+TEST(DemwbRun, SingleCollisionMatchesTheClosedFormAndEveryComparisonPasses) {
+  const fs::path out = scratch("run");
+  const auto r = demwb({"run", canonical("single_collision"), "--engine", "inhouse", "--engine", "analytic", "-o", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(support::read_file(out / "results.json"));
+  EXPECT_EQ(j["case"], "single_collision");
+  const double m = 4.0 / 3.0 * std::numbers::pi * 1000.0 * 1e-6;
+  const double tc = std::numbers::pi * std::sqrt(m / 1e5);
+  const double duration = j["engines"]["inhouse"]["metrics"]["contact_duration"];
+  EXPECT_NEAR(duration, tc, 1e-3 * tc);
+  EXPECT_LT(std::abs(j["engines"]["inhouse"]["metrics"]["restitution"].get<double>() - 1.0), 1e-3);
+  ASSERT_FALSE(j["comparisons"].empty());
+  for (const auto& c : j["comparisons"]) EXPECT_EQ(c["status"], "pass") << c.dump();
+  EXPECT_EQ(support::read_file(out / "case.toml"), support::read_file(canonical("single_collision")));
+  EXPECT_NE(support::read_file(out / "command.txt").find("single_collision.toml"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "trace_inhouse.csv"));
+  EXPECT_TRUE(fs::exists(out / "trace_analytic.csv"));
+  EXPECT_TRUE(fs::exists(out / "plots" / "position.png"));
+}
+
+TEST(DemwbRun, SameCaseTwiceGivesBitIdenticalTraces) {
+  const fs::path a = scratch("repro_a"), b = scratch("repro_b");
+  ASSERT_EQ(demwb({"run", canonical("sandwich"), "-o", a.string()}).exit_code, 0);
+  ASSERT_EQ(demwb({"run", canonical("sandwich"), "-o", b.string()}).exit_code, 0);
+  EXPECT_EQ(support::read_file(a / "trace_inhouse.csv"), support::read_file(b / "trace_inhouse.csv"));
+}
+
+TEST(DemwbCompare, PrintsTheTableAndPassesOnTheCanonicalCases) {
+  for (const char* name : {"single_collision", "sandwich"}) {
+    const auto r = demwb({"compare", canonical(name)});
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("| amplitude_error | inhouse |"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("result: ✅ pass"), std::string::npos) << r.out;
+  }
+}
+
+TEST(DemwbCompare, ExitsNonZeroWhenAComparisonFails) {
+  // The canonical case with an impossible amplitude tolerance.
+  std::string text = support::read_file(canonical("single_collision"));
+  const std::string from = "amplitude_error = { abs = 1.0e-3 }";
+  text.replace(text.find(from), from.size(), "amplitude_error = { abs = 1.0e-12 }");
+  const fs::path file = scratch("strict") / "strict.toml";
+  support::write_file(file, text);
+  const auto r = demwb({"compare", file.string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("❌ fail"), std::string::npos) << r.out;
+}
+
+TEST(DemwbErrors, BadCaseFileNamesFileLineAndKeyAndExitsTwo) {
+  const std::string bad = std::string(DEMWB_TEST_DATA_DIR) + "/bad_cases/negative_radius.toml";
+  const auto r = demwb({"run", bad});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("negative_radius.toml:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("radius"), std::string::npos) << r.err;
+}
+
+TEST(DemwbErrors, UnknownCommandsEnginesAndOptionsExitTwo) {
+  EXPECT_EQ(demwb({"frobnicate"}).exit_code, 2);
+  EXPECT_EQ(demwb({}).exit_code, 2);
+  EXPECT_EQ(demwb({"run", canonical("sandwich"), "--engine", "gromacs"}).exit_code, 2);
+  EXPECT_EQ(demwb({"run", canonical("sandwich"), "--no-such-option"}).exit_code, 2);
+  EXPECT_EQ(demwb({"study", "turbulence"}).exit_code, 2);
+}
+
+TEST(DemwbHelp, EveryCommandHasHelp) {
+  EXPECT_EQ(demwb({"--help"}).exit_code, 0);
+  for (const char* cmd : {"run", "compare", "suite", "study", "engines"}) {
+    const auto r = demwb({cmd, "--help"});
+    EXPECT_EQ(r.exit_code, 0) << cmd;
+    EXPECT_NE(r.out.find("usage: demwb"), std::string::npos) << cmd << ": " << r.out;
+  }
+}
+
+TEST(DemwbSuite, CanonicalSuiteWritesOneReportCoveringEveryCase) {
+  const fs::path out = scratch("suite");
+  const auto r = demwb({"suite", "canonical", "-o", out.string(), "-j", "2"});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(support::read_file(out / "results.json"));
+  EXPECT_EQ(j["status"], "pass");
+  EXPECT_GE(j["cases"].size(), 2U);
+  const std::string report = support::read_file(out / "report.md");
+  for (const char* name : {"single_collision", "sandwich"}) {
+    EXPECT_NE(report.find(std::string("`") + name + "`"), std::string::npos) << name;
+    EXPECT_TRUE(fs::exists(out / name / "results.json")) << name;
+  }
+}
+
+TEST(DemwbEngines, ListsTheBuiltInEngines) {
+  const auto r = demwb({"engines"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("| inhouse | installed |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| analytic | installed |"), std::string::npos) << r.out;
+}
+
+}  // namespace
