@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "reports/case_outputs.hpp"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "reports/case_report.hpp"
 #include "reports/results_json.hpp"
+#include "reports/snapshot_vtk.hpp"
 #include "reports/trace_csv.hpp"
 #include "support/text_file.hpp"
 
@@ -43,6 +45,10 @@ void write_case_outputs(const comparison::CaseOutcome& outcome, const std::files
   for (const auto& run : outcome.runs) {
     if (run.status == cases::RunStatus::ok) {
       support::write_file(dir / ("trace_" + run.engine + ".csv"), trace_csv(run.trace));
+      for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
+        support::write_file(dir / "snapshots" / fmt::format("{}_{:04d}.vtk", run.engine, k),
+                            snapshot_vtk(outcome.scene, run.snapshots[k], run.engine));
+      }
     }
   }
   support::write_file(dir / "case.toml", outcome.scene.source_text);

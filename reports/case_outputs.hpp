@@ -9,8 +9,9 @@
 namespace reports {
 
 /// Writes everything one case produced into `dir`: results.json, trace_<engine>.csv per engine
-/// that ran, the exact case file used (case.toml), the command that reproduces the run
-/// (command.txt), and report.md with its plots under plots/.
+/// that ran, snapshots/<engine>_<k>.vtk for each requested snapshot, the exact case file used
+/// (case.toml), the command that reproduces the run (command.txt), and report.md with its plots
+/// under plots/.
 void write_case_outputs(const comparison::CaseOutcome& outcome, const std::filesystem::path& dir,
                         const std::string& command);
 

@@ -66,6 +66,13 @@ TEST(DemwbRun, SingleCollisionMatchesTheClosedFormAndEveryComparisonPasses) {
   EXPECT_TRUE(fs::exists(out / "trace_inhouse.csv"));
   EXPECT_TRUE(fs::exists(out / "trace_analytic.csv"));
   EXPECT_TRUE(fs::exists(out / "plots" / "position.png"));
+  for (const char* engine : {"inhouse", "analytic"}) {
+    for (int k = 0; k < 3; ++k) {
+      const fs::path vtk = out / "snapshots" / (std::string(engine) + "_000" + std::to_string(k) + ".vtk");
+      ASSERT_TRUE(fs::exists(vtk)) << vtk;
+      EXPECT_NE(support::read_file(vtk).find("POINTS 2 double"), std::string::npos);
+    }
+  }
 }
 
 TEST(DemwbRun, SameCaseTwiceGivesBitIdenticalTraces) {

@@ -11,6 +11,7 @@
 #include "reports/gnuplot.hpp"
 #include "reports/markdown.hpp"
 #include "reports/results_json.hpp"
+#include "reports/snapshot_vtk.hpp"
 #include "reports/trace_csv.hpp"
 #include "support/text_file.hpp"
 
@@ -78,6 +79,26 @@ TEST(TraceCsv, RoundTripsDoublesExactly) {
   std::getline(in, line);
   EXPECT_EQ(header, "time,p0.x");
   EXPECT_EQ(std::stod(line.substr(line.find(',') + 1)), 1.0 / 3.0);
+}
+
+TEST(SnapshotVtk, WritesPointsRadiiAndVelocities) {
+  cases::Scene scene;
+  scene.name = "s";
+  scene.particles.resize(2);
+  scene.particles[0].radius = 0.01;
+  scene.particles[1].radius = 0.1;
+  scene.particles[1].fixed = true;
+  cases::Snapshot snap;
+  snap.time = 0.5;
+  snap.position = {{0, 0, 0}, {0.11, 0, 0}};
+  snap.velocity = {{4, 0, 0}, {0, 0, 0}};
+  snap.angular_velocity = {{0, 0, 0}, {0, 0, 0}};
+  const std::string vtk = reports::snapshot_vtk(scene, snap, "inhouse");
+  EXPECT_EQ(vtk.rfind("# vtk DataFile Version 3.0\n", 0), 0U);
+  EXPECT_NE(vtk.find("POINTS 2 double\n0 0 0\n0.11 0 0\n"), std::string::npos) << vtk;
+  EXPECT_NE(vtk.find("SCALARS radius double 1\nLOOKUP_TABLE default\n0.01\n0.10000000000000001\n"), std::string::npos);
+  EXPECT_NE(vtk.find("SCALARS fixed int 1\nLOOKUP_TABLE default\n0\n1\n"), std::string::npos);
+  EXPECT_NE(vtk.find("VECTORS velocity double\n4 0 0\n"), std::string::npos);
 }
 
 TEST(Gnuplot, RendersAPngAndKeepsItsDataAndScript) {
