@@ -22,7 +22,7 @@ namespace {
 
 constexpr auto kTopLevelKeys =
     std::to_array<std::string_view>({"case", "model", "mixing", "materials", "pairs", "particles",
-                                     "fields", "integration", "output", "compare"});
+                                     "walls", "fields", "integration", "output", "compare"});
 
 /// Largest initial body overlap allowed, as a fraction of the smaller radius.
 constexpr double kMaxInitialOverlap = 0.01;
@@ -57,6 +57,29 @@ void check_initial_overlaps(const loader::Table& root, const Scene& scene) {
                       fmt::format("particles {} and {} overlap by {:.6g} m at the start, more "
                                   "than 1% of the smaller radius ({:.6g} m); move them apart",
                                   i, j, overlap, limit),
+                      static_cast<int>(entry.where().begin.line),
+                      static_cast<int>(entry.where().begin.column));
+    }
+  }
+}
+
+/// Throws when a mobile particle starts overlapping a wall by more than kMaxInitialOverlap of
+/// its radius.
+void check_wall_overlaps(const loader::Table& root, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const ParticleSpec& p = scene.particles[i];
+    if (p.fixed) continue;
+    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+      const WallSpec& wall = scene.walls[w];
+      double distance = 0.0;
+      for (std::size_t k = 0; k < 3; ++k) distance += (p.position[k] - wall.point[k]) * wall.normal[k];
+      const double overlap = p.radius - distance;
+      if (overlap <= kMaxInitialOverlap * p.radius) continue;
+      const loader::Value entry = root.require("particles").elements()[i];
+      throw CaseError(scene.source_path, "particles",
+                      fmt::format("particle {} overlaps wall '{}' by {:.6g} m at the start, more than "
+                                  "1% of its radius; move it inside the domain",
+                                  i, wall.name, overlap),
                       static_cast<int>(entry.where().begin.line),
                       static_cast<int>(entry.where().begin.column));
     }
@@ -107,6 +130,7 @@ namespace loader {
 
 void check_scene(const Table& root, const Scene& scene) {
   check_initial_overlaps(root, scene);
+  check_wall_overlaps(root, scene);
   check_model_buildable(root, scene);
   warn_held_spin(root, scene);
 }
@@ -139,6 +163,7 @@ Scene load_case_text(std::string_view text, const std::string& path) {
   loader::read_materials(root, scene);
   loader::read_pairs(root, scene);
   loader::read_particles(root, scene);
+  loader::read_walls(root, scene);
   loader::read_fields(root, scene);
   loader::read_integration(root, scene);
   loader::read_compare(root, scene);

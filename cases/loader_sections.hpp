@@ -26,7 +26,9 @@ void read_materials(const Table& root, Scene& scene);
 void read_pairs(const Table& root, Scene& scene);
 /// Reads the [[particles]] entries.
 void read_particles(const Table& root, Scene& scene);
-/// Reads the optional [fields] table.
+/// Reads the optional [[walls]] entries (planes, and boxes as up to six inner planes).
+void read_walls(const Table& root, Scene& scene);
+/// Reads the optional [fields] table (gravity and [fields.fluid]).
 void read_fields(const Table& root, Scene& scene);
 /// Reads [integration].
 void read_integration(const Table& root, Scene& scene);

@@ -17,10 +17,11 @@ namespace cases::loader {
 namespace {
 
 constexpr auto kCompareKeys = std::to_array<std::string_view>(
-    {"engines", "reference", "subject", "pair", "metrics", "tolerances"});
+    {"engines", "reference", "subject", "pair", "wall_contact", "metrics", "tolerances"});
 
 constexpr auto kOutputKeys = std::to_array<std::string_view>(
-    {"trace_every", "trace_particles", "trace_pairs", "snapshot_times"});
+    {"trace_every", "trace_particles", "trace_pairs", "trace_walls", "trace_energy",
+     "snapshot_times"});
 
 constexpr auto kToleranceKeys = std::to_array<std::string_view>({"rel", "abs"});
 
@@ -101,9 +102,9 @@ void check_metric_needs(const Table& table, const CompareSpec& spec) {
   for (const std::string& metric : spec.metrics) {
     const MetricInfo* info = find_metric(metric);
     if (info == nullptr) continue;  // unknown names were rejected when the list was read
-    if (!spec.pair && info->needs_pair) {
-      table.fail("metrics", fmt::format("metric '{}' needs compare.pair (the contact it is "
-                                        "measured on), which is not set",
+    if (!spec.pair && !spec.wall_contact && info->needs_pair) {
+      table.fail("metrics", fmt::format("metric '{}' needs compare.pair or compare.wall_contact "
+                                        "(the contact it is measured on), which is not set",
                                         metric));
     }
     if (!spec.subject && info->needs_subject) {
@@ -184,6 +185,32 @@ std::vector<ParticlePair> read_trace_pairs(const Table& table, const Scene& scen
   return out;
 }
 
+/// A [particle, wall] index pair; the particle must be mobile.
+ParticlePair read_wall_contact(const Value& value, const Scene& scene) {
+  const std::vector<Value> items = value.elements();
+  if (items.size() != 2) value.fail(fmt::format("expected [particle, wall], got {} values", items.size()));
+  const std::size_t p = items[0].index(scene.particles.size(), "particles");
+  const std::size_t w = items[1].index(scene.walls.size(), "walls");
+  if (scene.particles[p].fixed) items[0].fail(fmt::format("particle {} is fixed; walls touch only mobile particles", p));
+  return {p, w};
+}
+
+/// output.trace_walls: default [compare.wall_contact] when set, else none.
+std::vector<ParticlePair> read_trace_walls(const Table& table, const Scene& scene) {
+  std::vector<ParticlePair> out;
+  const auto value = table.find("trace_walls");
+  if (!value) {
+    if (scene.compare.wall_contact) out.push_back(*scene.compare.wall_contact);
+    return out;
+  }
+  for (const Value& item : value->elements()) {
+    const ParticlePair pw = read_wall_contact(item, scene);
+    if (contains(out, pw)) item.fail(fmt::format("the contact [{}, {}] is listed twice", pw.first, pw.second));
+    out.push_back(pw);
+  }
+  return out;
+}
+
 /// output.snapshot_times: increasing times within [0, duration].
 std::vector<double> read_snapshot_times(const Table& table, double duration) {
   std::vector<double> out;
@@ -213,6 +240,10 @@ void read_compare(const Table& root, Scene& scene) {
   spec.reference = read_reference(table, spec.engines);
   spec.subject = read_subject(table, scene.particles);
   if (const auto v = table.find("pair")) spec.pair = v->particle_pair(scene.particles.size());
+  if (const auto v = table.find("wall_contact")) {
+    if (spec.pair) v->fail("give either compare.pair or compare.wall_contact, not both");
+    spec.wall_contact = read_wall_contact(*v, scene);
+  }
   if (const auto v = table.find("metrics")) {
     spec.metrics = read_keyword_list(*v, metric_names(), "metric");
   }
@@ -231,6 +262,8 @@ void read_output(const Table& root, Scene& scene) {
   }
   spec.trace_particles = read_trace_particles(table, scene.particles);
   spec.trace_pairs = read_trace_pairs(table, scene);
+  spec.trace_walls = read_trace_walls(table, scene);
+  if (const auto v = table.find("trace_energy")) spec.trace_energy = v->boolean();
   spec.snapshot_times = read_snapshot_times(table, scene.integration.duration);
 }
 

@@ -3,6 +3,7 @@
 // [materials.NAME] and [[pairs]].
 #include <algorithm>
 #include <array>
+#include <span>
 #include <map>
 #include <string>
 #include <utility>
@@ -23,6 +24,37 @@ constexpr auto kCaseKeys = std::to_array<std::string_view>({"name", "description
 constexpr std::array kMixingRules{dem::MixingRule::harmonic, dem::MixingRule::arithmetic,
                                   dem::MixingRule::geometric, dem::MixingRule::min,
                                   dem::MixingRule::max};
+
+/// Keys of [model] that name policies rather than sub-models.
+constexpr auto kPolicyKeys = std::to_array<std::string_view>(
+    {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm"});
+
+/// The enumerator a policy keyword names; `names` lists the keywords in enumerator order.
+template <class Enum, class Parse>
+Enum read_policy(const Value& value, std::span<const std::string_view> names, Parse parse,
+                 std::string_view what) {
+  return *parse(value.keyword(names, what));
+}
+
+/// Reads the named policies of [model] (all optional).
+void read_policies(const Table& model, dem::ModelChoice& choice) {
+  if (const auto v = model.find("clamp_tensile")) choice.clamp_tensile = v->boolean();
+  if (const auto v = model.find("friction_limit")) {
+    constexpr auto names = std::to_array<std::string_view>({"total", "elastic", "elastic_damping", "jkr_shifted"});
+    choice.friction_limit = read_policy<dem::FrictionLimit>(
+        *v, names, [](std::string_view k) { return dem::parse_friction_limit(k); }, "friction-limit policy");
+  }
+  if (const auto v = model.find("jkr_rupture")) {
+    constexpr auto names = std::to_array<std::string_view>({"displacement", "load"});
+    choice.jkr_rupture = read_policy<dem::JkrRupture>(
+        *v, names, [](std::string_view k) { return dem::parse_jkr_rupture(k); }, "JKR rupture policy");
+  }
+  if (const auto v = model.find("wall_lever_arm")) {
+    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius"});
+    choice.wall_lever_arm = read_policy<dem::WallLeverArm>(
+        *v, names, [](std::string_view k) { return dem::parse_wall_lever_arm(k); }, "wall lever-arm policy");
+  }
+}
 
 /// True when `text` is non-empty and every character is a digit, '_', a lowercase letter, or
 /// (when `upper` is set) an uppercase letter.
@@ -155,6 +187,11 @@ std::set<std::string_view> used_properties(const dem::ModelChoice& choice) {
       used.insert(row->properties.begin(), row->properties.end());
     }
   }
+  // Material-level inputs of derived pair properties.
+  if (used.contains("effective_modulus") || used.contains("effective_shear_modulus")) {
+    used.insert({"youngs_modulus", "poisson_ratio"});
+  }
+  if (used.contains("cohesive_stiffness")) used.insert("interaction_ratio");
   return used;
 }
 
@@ -191,9 +228,11 @@ void read_case_section(const Table& root, Scene& scene) {
 
 void read_model(const Table& root, Scene& scene) {
   const Table model = root.require("model", "table [model]").table();
-  std::vector<std::string_view> slot_names;
-  for (const dem::Slot slot : dem::all_slots()) slot_names.push_back(dem::to_string(slot));
-  model.allow_only(slot_names);
+  std::vector<std::string_view> keys;
+  for (const dem::Slot slot : dem::all_slots()) keys.push_back(dem::to_string(slot));
+  keys.insert(keys.end(), kPolicyKeys.begin(), kPolicyKeys.end());
+  model.allow_only(keys);
+  read_policies(model, scene.model);
   for (const dem::Slot slot : dem::all_slots()) {
     const std::string_view name = dem::to_string(slot);
     const auto value = slot == dem::Slot::normal ? model.require(name) : model.find(name);

@@ -16,7 +16,10 @@ namespace cases::loader {
 namespace {
 
 constexpr auto kParticleKeys = std::to_array<std::string_view>(
-    {"radius", "effect_radius", "material", "position", "velocity", "angular_velocity", "fixed"});
+    {"radius", "effect_radius", "material", "position", "velocity", "angular_velocity", "fixed",
+     "charge", "motion"});
+
+constexpr auto kSegmentKeys = std::to_array<std::string_view>({"duration", "velocity"});
 
 constexpr auto kIntegrationKeys = std::to_array<std::string_view>(
     {"scheme", "timestep", "steps_per_collision", "duration", "rotation", "startup",
@@ -66,9 +69,32 @@ int positive_int(const Value& value) { return static_cast<int>(value.integer(1, 
 /// Throws when a fixed particle is given a nonzero velocity or spin.
 void require_at_rest(const Table& particle, std::string_view key, const Vector3& v) {
   if (is_zero(v)) return;
-  particle.fail(key, fmt::format("must be zero for a fixed particle, got {} (fixed particles "
-                                 "never move; prescribed motion is not supported yet)",
+  particle.fail(key, fmt::format("must be zero for a fixed particle, got {} (a fixed particle "
+                                 "moves only by a prescribed `motion`)",
                                  format_vector(v)));
+}
+
+/// particles[i].motion: an array of { duration, velocity } segments; every segment but the
+/// last needs a duration > 0, the last lasts forever and must not give one.
+std::vector<MotionSegmentSpec> read_motion(const Value& value) {
+  const std::vector<Value> items = value.elements();
+  if (items.empty()) value.fail("must list at least one { velocity = [...] } segment");
+  std::vector<MotionSegmentSpec> out;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const Table seg = items[k].table();
+    seg.allow_only(kSegmentKeys);
+    MotionSegmentSpec m;
+    m.velocity = seg.require("velocity").vector3();
+    const bool last = k + 1 == items.size();
+    if (const auto d = seg.find("duration")) {
+      if (last) d->fail("the last segment lasts until the end of the run; remove its duration");
+      m.duration = d->number(positive_range());
+    } else if (!last) {
+      static_cast<void>(seg.require("duration"));  // throws: every segment but the last needs one
+    }
+    out.push_back(m);
+  }
+  return out;
 }
 
 /// One [[particles]] entry.
@@ -76,21 +102,28 @@ ParticleSpec read_particle(const Table& table, const Scene& scene) {
   table.allow_only(kParticleKeys);
   ParticleSpec p;
   p.radius = table.require("radius").number(positive_range());
-  p.effect_radius = p.radius;
+  p.material = material_index(table.require("material"), scene);
+  // Effect radius: given, else λ r from the material's interaction_ratio, else r.
+  p.effect_radius = p.radius * scene.materials[p.material].interaction_ratio.value_or(1.0);
   if (const auto v = table.find("effect_radius")) {
     p.effect_radius = v->number();
     if (p.effect_radius < p.radius) {
       v->fail(fmt::format("must be >= radius ({}), got {}", p.radius, p.effect_radius));
     }
   }
-  p.material = material_index(table.require("material"), scene);
   p.position = table.require("position").vector3();
   if (const auto v = table.find("velocity")) p.velocity = v->vector3();
   if (const auto v = table.find("angular_velocity")) p.angular_velocity = v->vector3();
   if (const auto v = table.find("fixed")) p.fixed = v->boolean();
+  if (const auto v = table.find("charge")) p.charge = v->number();
+  if (const auto v = table.find("motion")) {
+    if (!p.fixed) v->fail("a prescribed motion needs fixed = true (an infinite-mass sphere)");
+    p.motion = read_motion(*v);
+  }
   if (p.fixed) {
     require_at_rest(table, "velocity", p.velocity);
     require_at_rest(table, "angular_velocity", p.angular_velocity);
+    if (!p.motion.empty()) p.velocity = p.motion.front().velocity;
   }
   return p;
 }
@@ -155,14 +188,6 @@ void read_particles(const Table& root, Scene& scene) {
   const std::vector<Value> entries = section.elements();
   if (entries.empty()) section.fail("must list at least one particle ([[particles]])");
   for (const Value& entry : entries) scene.particles.push_back(read_particle(entry.table(), scene));
-}
-
-void read_fields(const Table& root, Scene& scene) {
-  const auto section = root.find("fields");
-  if (!section) return;
-  const Table fields = section->table();
-  fields.allow_only(std::array<std::string_view, 1>{"gravity"});
-  if (const auto v = fields.find("gravity")) scene.gravity = v->vector3();
 }
 
 void read_integration(const Table& root, Scene& scene) {

@@ -40,6 +40,7 @@ struct RunResult {
   double wall_time_s = 0.0;
   std::string log_tail;                        ///< last lines of the engine's log on error
   Trace trace;
+  Trace energy;                                ///< energy ledger over time, when the case asks
   std::vector<Snapshot> snapshots;
   std::map<std::string, double> exact_metrics;
   std::map<std::string, std::string> conventions;  ///< conventions this engine used

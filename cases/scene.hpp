@@ -22,6 +22,12 @@ using Vector3 = std::array<double, 3>;
 /// Index pair of two particles, as a case file lists them.
 using ParticlePair = std::pair<std::size_t, std::size_t>;
 
+/// One stretch of a prescribed motion: constant velocity for a duration (the last lasts forever).
+struct MotionSegmentSpec {
+  double duration = 0.0;  ///< [s]; ignored for the last segment
+  Vector3 velocity{};     ///< [m/s]
+};
+
 /// One sphere of a scene, fully explicit.
 struct ParticleSpec {
   double radius = 0.0;          ///< body radius r [m]
@@ -30,7 +36,40 @@ struct ParticleSpec {
   Vector3 position{};           ///< [m]
   Vector3 velocity{};           ///< [m/s]
   Vector3 angular_velocity{};   ///< [rad/s]
-  bool fixed = false;           ///< never moves; infinite-mass partner
+  bool fixed = false;           ///< infinite-mass partner; moves only by `motion`
+  double charge = 0.0;          ///< electric charge [C] (eq 3.36)
+  std::vector<MotionSegmentSpec> motion;  ///< prescribed motion of a fixed sphere (may be empty)
+};
+
+/// A plane wall: a point on it at t = 0, its unit normal pointing into the domain, a constant
+/// velocity, and its material. A box in a case file becomes up to six of these.
+struct WallSpec {
+  std::string name;
+  Vector3 point{};
+  Vector3 normal{};
+  Vector3 velocity{};
+  std::size_t material = 0;
+};
+
+/// One rectangular zone of plug flow (thesis §6.5).
+struct FlowZoneSpec {
+  Vector3 min{};
+  Vector3 max{};
+  Vector3 direction{};  ///< unit vector
+};
+
+/// The fluid the particles move in (thesis §3.7, §6.5).
+struct FluidSpec {
+  double density = 1.205;      ///< [kg/m³]
+  double viscosity = 1.81e-5;  ///< [Pa·s]
+  bool drag = true;
+  bool buoyancy = false;
+  bool virtual_mass = false;
+  Vector3 pressure_gradient{};  ///< [Pa/m]
+  Vector3 velocity{};           ///< uniform fluid velocity [m/s] when there are no zones
+  std::vector<FlowZoneSpec> zones;
+  double plug_speed = 0.0;      ///< [m/s]
+  double ramp_time = 0.0;       ///< [s]
 };
 
 /// How the equations of motion are integrated (PHYSICS.md §7).
@@ -53,6 +92,8 @@ struct OutputSpec {
   std::vector<std::size_t> trace_particles;   ///< particles whose state is traced
   std::vector<ParticlePair> trace_pairs;      ///< contacts whose overlap/force are traced
   std::vector<double> snapshot_times;         ///< [s] times of full particle snapshots
+  std::vector<ParticlePair> trace_walls;      ///< (particle, wall) contacts traced
+  bool trace_energy = false;                  ///< record the energy ledger (in-house engine)
 };
 
 /// Acceptable discrepancy of one metric: pass when |value − ref| ≤ abs + rel·|ref|.
@@ -67,6 +108,7 @@ struct CompareSpec {
   std::string reference;                      ///< engine the others are measured against
   std::optional<std::size_t> subject;         ///< particle whose motion the metrics read
   std::optional<ParticlePair> pair;           ///< contact whose overlap/force the metrics read
+  std::optional<ParticlePair> wall_contact;   ///< (particle, wall) contact read instead of `pair`
   std::vector<std::string> metrics;           ///< metric names (see metric_catalogue())
   std::map<std::string, Tolerance> tolerances;  ///< per metric
 };
@@ -86,7 +128,9 @@ struct Scene {
   std::vector<dem::PairOverride> pair_overrides;
   dem::ModelChoice model;
   std::vector<ParticleSpec> particles;
+  std::vector<WallSpec> walls;
   Vector3 gravity{};
+  std::optional<FluidSpec> fluid;
 
   IntegrationSpec integration;
   OutputSpec output;

@@ -38,4 +38,8 @@ std::string pair_column(std::size_t p, std::size_t q, std::string_view quantity)
   return fmt::format("c{}-{}.{}", p, q, quantity);
 }
 
+std::string wall_column(std::size_t p, std::size_t wall, std::string_view quantity) {
+  return fmt::format("c{}-w{}.{}", p, wall, quantity);
+}
+
 }  // namespace cases

@@ -10,7 +10,8 @@ namespace cases {
 
 /// Time series of named quantities, one column per quantity, sampled at the same rows.
 /// Column names: `time`; per particle i `p<i>.x|y|z|vx|vy|vz|wx|wy|wz|fx|fy|fz`; per contact
-/// (i, j) `c<i>-<j>.overlap` and `c<i>-<j>.fn` (normal force, repulsive positive).
+/// (i, j) `c<i>-<j>.overlap` and `c<i>-<j>.fn` (normal force, repulsive positive); per
+/// particle–wall contact (i, w) `c<i>-w<w>.overlap` and `.fn`, after the pair columns.
 class Trace {
  public:
   /// Adds an empty column and returns its index; names must be unique.
@@ -41,11 +42,17 @@ class Trace {
 std::string particle_column(std::size_t particle, std::string_view quantity);
 /// Column name of a contact quantity, e.g. pair_column(0, 1, "overlap") = "c0-1.overlap".
 std::string pair_column(std::size_t p, std::size_t q, std::string_view quantity);
+/// Column name of a particle–wall contact quantity, e.g. wall_column(0, 2, "fn") = "c0-w2.fn".
+std::string wall_column(std::size_t p, std::size_t wall, std::string_view quantity);
 
 /// The quantities traced per particle, in column order.
 inline constexpr std::string_view kParticleQuantities[] = {"x",  "y",  "z",  "vx", "vy", "vz",
                                                            "wx", "wy", "wz", "fx", "fy", "fz"};
 /// The quantities traced per contact, in column order.
 inline constexpr std::string_view kPairQuantities[] = {"overlap", "fn"};
+/// Columns of the energy trace (RunResult::energy), after "time".
+inline constexpr std::string_view kEnergyQuantities[] = {
+    "energy.kinetic", "energy.elastic", "energy.cohesive", "energy.gravitational",
+    "energy.dissipated_damping", "energy.dissipated_friction", "energy.fluid_work", "energy.balance"};
 
 }  // namespace cases

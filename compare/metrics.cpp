@@ -31,17 +31,41 @@ const std::vector<double>& column(const cases::Trace& trace, const std::string& 
   return *c;
 }
 
-/// Position and velocity of one particle at every trace row. A particle that is not traced
-/// but fixed is taken at rest at its initial position; any other untraced particle is a problem.
+/// Position of a prescribed motion at time t (piecewise-constant velocity from the start).
+Vec motion_position(const cases::ParticleSpec& p, double t) {
+  Vec x = p.position;
+  double begin = 0.0;
+  for (std::size_t k = 0; k < p.motion.size(); ++k) {
+    const bool last = k + 1 == p.motion.size();
+    const double span = last ? t - begin : std::min(p.motion[k].duration, std::max(0.0, t - begin));
+    for (std::size_t c = 0; c < 3; ++c) x[c] += span * p.motion[k].velocity[c];
+    if (last || t < begin + p.motion[k].duration) break;
+    begin += p.motion[k].duration;
+  }
+  return x;
+}
+
+/// Velocity of a prescribed motion at time t.
+Vec motion_velocity(const cases::ParticleSpec& p, double t) {
+  double end = 0.0;
+  for (std::size_t k = 0; k + 1 < p.motion.size(); ++k) {
+    end += p.motion[k].duration;
+    if (t < end) return p.motion[k].velocity;
+  }
+  return p.motion.back().velocity;
+}
+
+/// Position and velocity of one particle at every trace row. A fixed particle that is not
+/// traced is taken from the case (at rest, or on its prescribed motion); any other untraced
+/// particle is a problem.
 class ParticleSeries {
  public:
-  ParticleSeries(const cases::Scene& scene, const cases::Trace& trace, std::size_t index) {
-    const auto* x = trace.column(cases::particle_column(index, "x"));
-    if (x == nullptr) {
-      if (!scene.particles.at(index).fixed) {
+  ParticleSeries(const cases::Scene& scene, const cases::Trace& trace, std::size_t index)
+      : spec_(scene.particles.at(index)), time_(&column(trace, "time")) {
+    if (trace.column(cases::particle_column(index, "x")) == nullptr) {
+      if (!spec_.fixed) {
         throw MetricProblem(fmt::format("particle {} is not traced (output.trace_particles)", index));
       }
-      rest_ = scene.particles.at(index).position;
       return;
     }
     for (const char* q : {"x", "y", "z", "vx", "vy", "vz"}) {
@@ -49,26 +73,19 @@ class ParticleSeries {
     }
   }
   [[nodiscard]] Vec position(std::size_t row) const {
-    if (columns_.empty()) return rest_;
+    if (columns_.empty()) return spec_.motion.empty() ? spec_.position : motion_position(spec_, (*time_)[row]);
     return {(*columns_[0])[row], (*columns_[1])[row], (*columns_[2])[row]};
   }
   [[nodiscard]] Vec velocity(std::size_t row) const {
-    if (columns_.empty()) return {0.0, 0.0, 0.0};
+    if (columns_.empty()) return spec_.motion.empty() ? Vec{0.0, 0.0, 0.0} : motion_velocity(spec_, (*time_)[row]);
     return {(*columns_[3])[row], (*columns_[4])[row], (*columns_[5])[row]};
   }
 
  private:
+  const cases::ParticleSpec& spec_;
+  const std::vector<double>* time_;
   std::vector<const std::vector<double>*> columns_;
-  Vec rest_{};
 };
-
-/// The compared pair with the subject first when it belongs to the pair.
-cases::ParticlePair oriented_pair(const cases::Scene& scene) {
-  if (!scene.compare.pair) throw MetricProblem("the case sets no compare.pair");
-  auto [p, q] = *scene.compare.pair;
-  if (scene.compare.subject && *scene.compare.subject == q) std::swap(p, q);
-  return {p, q};
-}
 
 /// The subject particle (compare.subject, else the first mobile particle).
 std::size_t subject_of(const cases::Scene& scene) {
@@ -79,42 +96,75 @@ std::size_t subject_of(const cases::Scene& scene) {
   throw MetricProblem("the scene has no mobile particle");
 }
 
-/// Unit vector of the collision axis: from the subject towards its partner at t = 0, or along
-/// the subject's initial velocity when it is not in the compared pair.
+/// The contact the metrics read: compare.pair (subject first when it belongs to it) or the
+/// particle–wall contact compare.wall_contact.
+struct ComparedContact {
+  std::size_t p;
+  std::size_t q;  ///< partner particle, or wall index when `wall`
+  bool wall;
+
+  /// Trace column of a contact quantity ("overlap", "fn").
+  [[nodiscard]] std::string column_name(std::string_view quantity) const {
+    return wall ? cases::wall_column(p, q, quantity) : cases::pair_column(p, q, quantity);
+  }
+  /// "pair 0-1" or "particle 0 and wall 2", for messages.
+  [[nodiscard]] std::string label() const {
+    return wall ? fmt::format("particle {} and wall {}", p, q) : fmt::format("pair {}-{}", p, q);
+  }
+};
+
+ComparedContact compared_contact(const cases::Scene& scene) {
+  if (scene.compare.wall_contact) {
+    return {scene.compare.wall_contact->first, scene.compare.wall_contact->second, true};
+  }
+  if (!scene.compare.pair) throw MetricProblem("the case sets no compare.pair or compare.wall_contact");
+  auto [p, q] = *scene.compare.pair;
+  if (scene.compare.subject && *scene.compare.subject == q) std::swap(p, q);
+  return {p, q, false};
+}
+
+/// Unit vector of the collision axis: from the subject towards its partner (or into the wall)
+/// at t = 0, or along the subject's initial velocity when it is not in the compared contact.
 Vec collision_axis(const cases::Scene& scene) {
   const std::size_t s = subject_of(scene);
   Vec axis = scene.particles[s].velocity;
-  if (scene.compare.pair) {
-    const auto [p, q] = oriented_pair(scene);
-    if (p == s) axis = sub(scene.particles[q].position, scene.particles[p].position);
+  if (scene.compare.pair || scene.compare.wall_contact) {
+    const ComparedContact c = compared_contact(scene);
+    if (c.p == s) {
+      if (c.wall) {
+        const auto& n = scene.walls.at(c.q).normal;
+        axis = {-n[0], -n[1], -n[2]};
+      } else {
+        axis = sub(scene.particles[c.q].position, scene.particles[c.p].position);
+      }
+    }
   }
   const double n = norm(axis);
   if (!(n > 0.0)) throw MetricProblem("no collision axis: the subject has no partner or velocity");
   return {axis[0] / n, axis[1] / n, axis[2] / n};
 }
 
-/// The first contact of the compared pair in a trace.
+/// The first contact of the compared contact in a trace.
 ContactInterval contact_of(const cases::Scene& scene, const cases::Trace& trace) {
-  const auto [p, q] = oriented_pair(scene);
+  const ComparedContact cc = compared_contact(scene);
   const auto& t = column(trace, "time");
-  const auto& overlap = column(trace, cases::pair_column(p, q, "overlap"));
+  const auto& overlap = column(trace, cc.column_name("overlap"));
   const IntervalSearch found = first_contact(t, overlap);
   if (found.interval) return *found.interval;
   switch (found.problem) {
     case IntervalProblem::starts_in_contact:
-      throw MetricProblem(fmt::format("pair {}-{} is already in contact at the first sample", p, q));
+      throw MetricProblem(fmt::format("{} are already in contact at the first sample", cc.label()));
     case IntervalProblem::never_ends:
-      throw MetricProblem(fmt::format("the contact of pair {}-{} does not end within the run", p, q));
+      throw MetricProblem(fmt::format("the contact of {} does not end within the run", cc.label()));
     case IntervalProblem::no_contact: break;
   }
-  throw MetricProblem(fmt::format("pair {}-{} never comes into contact", p, q));
+  throw MetricProblem(fmt::format("{} never come into contact", cc.label()));
 }
 
-/// Overlap column of the compared pair and a per-row "in contact" mask.
+/// Overlap column of the compared contact and a per-row "in contact" mask.
 std::pair<const std::vector<double>*, std::vector<bool>> overlap_mask(const cases::Scene& scene,
                                                                       const cases::Trace& trace) {
-  const auto [p, q] = oriented_pair(scene);
-  const auto& overlap = column(trace, cases::pair_column(p, q, "overlap"));
+  const auto& overlap = column(trace, compared_contact(scene).column_name("overlap"));
   std::vector<bool> mask(overlap.size());
   for (std::size_t k = 0; k < overlap.size(); ++k) mask[k] = overlap[k] > 0.0;
   return {&overlap, std::move(mask)};
@@ -125,31 +175,46 @@ double contact_duration(const cases::Scene& scene, const cases::Trace& trace) {
   return c.end - c.start;
 }
 
-/// Normal relative speed (u_p − u_q)·n at a row, n from q to p.
-double normal_speed(const ParticleSeries& p, const ParticleSeries& q, std::size_t row) {
-  const Vec x = sub(p.position(row), q.position(row));
-  const double d = norm(x);
-  const Vec n{x[0] / d, x[1] / d, x[2] / d};
-  return dot(sub(p.velocity(row), q.velocity(row)), n);
-}
+/// Normal relative speed (u_p − u_q)·n of the compared contact at a row, n from q to p (the
+/// wall normal for a wall).
+class NormalSpeed {
+ public:
+  NormalSpeed(const cases::Scene& scene, const cases::Trace& trace, const ComparedContact& c)
+      : p_(scene, trace, c.p) {
+    if (c.wall) {
+      wall_ = &scene.walls.at(c.q);
+    } else {
+      q_.emplace(scene, trace, c.q);
+    }
+  }
+  [[nodiscard]] double at(std::size_t row) const {
+    if (wall_ != nullptr) return dot(sub(p_.velocity(row), wall_->velocity), wall_->normal);
+    const Vec x = sub(p_.position(row), q_->position(row));
+    const double d = norm(x);
+    const Vec n{x[0] / d, x[1] / d, x[2] / d};
+    return dot(sub(p_.velocity(row), q_->velocity(row)), n);
+  }
+
+ private:
+  ParticleSeries p_;
+  std::optional<ParticleSeries> q_;
+  const cases::WallSpec* wall_ = nullptr;
+};
 
 double restitution(const cases::Scene& scene, const cases::Trace& trace) {
   const ContactInterval c = contact_of(scene, trace);
-  const auto [ip, iq] = oriented_pair(scene);
-  const ParticleSeries p(scene, trace, ip);
-  const ParticleSeries q(scene, trace, iq);
-  const double before = normal_speed(p, q, c.last_before);
-  const double after = normal_speed(p, q, c.first_after);
-  if (!(before < 0.0)) throw MetricProblem("the pair is not approaching before its contact");
+  const NormalSpeed speed(scene, trace, compared_contact(scene));
+  const double before = speed.at(c.last_before);
+  const double after = speed.at(c.first_after);
+  if (!(before < 0.0)) throw MetricProblem("the contact partners are not approaching before the contact");
   return -after / before;
 }
 
 double max_of_pair_column(const cases::Scene& scene, const cases::Trace& trace,
                           const char* quantity) {
   const ContactInterval c = contact_of(scene, trace);
-  const auto [p, q] = oriented_pair(scene);
   const auto& t = column(trace, "time");
-  const auto& y = column(trace, cases::pair_column(p, q, quantity));
+  const auto& y = column(trace, compared_contact(scene).column_name(quantity));
   const auto mask = overlap_mask(scene, trace).second;
   return peak(t, y, mask, c.last_before + 1, c.first_after - 1).value;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
+
 #include "dem/core/vector.hpp"
 
 namespace dem {
@@ -17,8 +19,19 @@ struct ContactGeometry {
   Vec3 contact_velocity;    ///< u_c = (u_p + ω_p × a_p) − (u_q + ω_q × a_q) [m/s]
   double normal_speed;      ///< u_c · n [m/s], negative while approaching
   Vec3 tangential_velocity; ///< u_t = u_c − (u_c·n) n [m/s]
+  Vec3 relative_angular_velocity;  ///< ω_p − ω_q [rad/s]
   double reduced_mass;      ///< m* [kg]; the mobile mass when the partner is fixed
-  double reduced_radius;    ///< R* = r_p r_q / (r_p + r_q) [m]
+  double reduced_radius;    ///< R* = r_p r_q / (r_p + r_q) [m]; r against a plane wall
+  double contact_distance;  ///< r_p + r_q [m] (r for a wall): centre distance at first touch
+  double effect_distance;   ///< r̂_p + r̂_q [m] (r̂ for a wall)
+  double charge_product;    ///< q_p q_q [C²] (0 for a wall)
+};
+
+/// The extent of a pair that sets how far its law reaches (for neighbour search).
+struct PairExtent {
+  double contact_distance;  ///< r_p + r_q [m]
+  double effect_distance;   ///< r̂_p + r̂_q [m]
+  double reduced_radius;    ///< R* [m]
 };
 
 /// Per-sphere inputs of `pair_geometry`. inverse_mass is 0 for a fixed sphere.
@@ -29,6 +42,7 @@ struct SphereState {
   double radius;
   double effect_radius;
   double inverse_mass;
+  double charge = 0.0;  ///< [C]
 };
 
 /// Contact kinematics of p and q by the common-normal method (thesis §3.3.3). Coincident
@@ -47,8 +61,46 @@ struct SphereState {
                        (q.velocity + q.angular_velocity.cross(g.branch_q));
   g.normal_speed = g.contact_velocity.dot(g.normal);
   g.tangential_velocity = g.contact_velocity - g.normal_speed * g.normal;
+  g.relative_angular_velocity = p.angular_velocity - q.angular_velocity;
   g.reduced_mass = 1.0 / (p.inverse_mass + q.inverse_mass);
   g.reduced_radius = p.radius * q.radius / (p.radius + q.radius);
+  g.contact_distance = p.radius + q.radius;
+  g.effect_distance = p.effect_radius + q.effect_radius;
+  g.charge_product = p.charge * q.charge;
+  return g;
+}
+
+/// A plane wall: a point on it at t = 0, its unit normal pointing into the domain, a constant
+/// velocity (moving walls), and its material.
+struct PlaneWall {
+  Vec3 point;
+  Vec3 normal;
+  Vec3 velocity = Vec3::Zero();
+  std::uint32_t material = 0;
+};
+
+/// Kinematics of sphere p against a plane wall at time t (the wall acts as an infinite-mass
+/// partner: m* = m, R* = r). The normal is the wall's; the lever arm is r − δ/2 (common normal)
+/// or r when `lever_arm_is_radius` (LAMMPS fix wall/gran).
+[[nodiscard]] inline ContactGeometry wall_geometry(const SphereState& p, const PlaneWall& w,
+                                                   double t, bool lever_arm_is_radius) noexcept {
+  ContactGeometry g;
+  const double distance = (p.position - (w.point + t * w.velocity)).dot(w.normal);
+  g.normal = w.normal;
+  g.distance = distance;
+  g.overlap = p.radius - distance;
+  g.effect_overlap = p.effect_radius - distance;
+  g.branch_p = -(lever_arm_is_radius ? p.radius : p.radius - 0.5 * g.overlap) * g.normal;
+  g.branch_q = Vec3::Zero();
+  g.contact_velocity = p.velocity + p.angular_velocity.cross(g.branch_p) - w.velocity;
+  g.normal_speed = g.contact_velocity.dot(g.normal);
+  g.tangential_velocity = g.contact_velocity - g.normal_speed * g.normal;
+  g.relative_angular_velocity = p.angular_velocity;
+  g.reduced_mass = 1.0 / p.inverse_mass;
+  g.reduced_radius = p.radius;
+  g.contact_distance = p.radius;
+  g.effect_distance = p.effect_radius;
+  g.charge_product = 0.0;
   return g;
 }
 

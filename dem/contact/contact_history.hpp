@@ -12,7 +12,9 @@ namespace dem {
 /// the new one; the integrator decides when to commit it (STYLE.md "laws are pure functions").
 struct ContactHistory {
   Vec3 tangential_slip = Vec3::Zero();  ///< ς, integrated tangential displacement [m] (eq 3.9)
-  double max_overlap = 0.0;             ///< largest overlap of this contact so far [m]
+  Vec3 rolling_slip = Vec3::Zero();     ///< integrated rolling displacement [m]
+  double max_overlap = 0.0;             ///< largest overlap of this contact so far [m] (eq 3.20)
+  bool attached = false;                ///< a JKR neck has formed and not yet broken
 };
 
 /// Key of an unordered particle pair: the lower index in the high 32 bits.
@@ -22,7 +24,7 @@ struct ContactHistory {
   return (lo << 32U) | hi;
 }
 
-/// Contact history of every interacting pair, keyed by `pair_key`.
+/// Contact history of every interacting pair (or particle–wall pair), keyed by `pair_key`.
 using ContactHistoryTable = std::unordered_map<std::uint64_t, ContactHistory>;
 
 }  // namespace dem

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <variant>
 
 #include "dem/contact/contact_geometry.hpp"
@@ -10,6 +11,7 @@
 #include "dem/contact/slots/damping_restitution.hpp"
 #include "dem/contact/slots/none.hpp"
 #include "dem/contact/slots/normal_linear.hpp"
+#include "dem/contact/slots/responses.hpp"
 
 namespace dem {
 
@@ -25,55 +27,114 @@ using CohesionModel = std::variant<NoCohesion>;
 using RollingModel = std::variant<NoRolling>;
 
 /// The contact law of one material pair: one sub-model per slot, each holding its mixed
-/// parameters (STYLE.md "a contact model is a composition of named slots").
+/// parameters, plus the model's policies (STYLE.md "a composition of named slots").
 struct PairLaw {
   NormalModel normal;
   DampingModel damping;
   TangentialModel tangential;
   CohesionModel cohesion;
   RollingModel rolling;
+  ContactPolicies policies;
 };
 
-/// Result of evaluating one pair: forces, torques and the proposed new history.
+/// Result of evaluating one pair: forces, torques, energies and the proposed new history.
 struct ContactOutcome {
-  bool interacting = false;  ///< the pair is in contact; its history must be kept
-  double normal_force = 0.0; ///< total normal force [N], repulsive positive
-  double elastic_energy = 0.0; ///< energy stored in the contact [J]
-  Vec3 force_on_p = Vec3::Zero();   ///< force on p [N]; q receives the opposite
-  Vec3 torque_on_p = Vec3::Zero();  ///< torque on p about its centre [N·m]
-  Vec3 torque_on_q = Vec3::Zero();  ///< torque on q about its centre [N·m]
-  ContactHistory history;           ///< history after this evaluation
+  bool interacting = false;          ///< the pair interacts; its history must be kept
+  bool contact = false;              ///< the bodies touch (δ > 0, or a JKR neck)
+  double normal_force = 0.0;         ///< total normal force [N], repulsive positive
+  double elastic_energy = 0.0;       ///< normal and tangential spring energy [J]
+  double cohesive_energy = 0.0;      ///< cohesive potential energy [J]
+  double dissipated_damping = 0.0;   ///< dashpot work since the last commit [J], ≥ 0
+  double dissipated_friction = 0.0;  ///< sliding and rolling work since the last commit [J], ≥ 0
+  Vec3 force_on_p = Vec3::Zero();    ///< force on p [N]; q receives the opposite
+  Vec3 torque_on_p = Vec3::Zero();   ///< torque on p about its centre [N·m]
+  Vec3 torque_on_q = Vec3::Zero();   ///< torque on q about its centre [N·m]
+  ContactHistory history;            ///< history after this evaluation
 };
+
+/// The normal force the Coulomb limit is based on, per policy (STYLE.md table).
+[[nodiscard]] inline double friction_limit_basis(FrictionLimit policy, double elastic,
+                                                 double damping, double cohesion,
+                                                 double pulloff) noexcept {
+  switch (policy) {
+    case FrictionLimit::elastic: return std::abs(elastic);
+    case FrictionLimit::elastic_damping: return std::abs(elastic + damping);
+    case FrictionLimit::jkr_shifted: return std::abs(elastic + damping + cohesion + 2.0 * pulloff);
+    case FrictionLimit::total: break;
+  }
+  return std::abs(elastic + damping + cohesion);
+}
 
 /// Evaluates the contact law of one pair. The order reads top to bottom:
-/// normal → damping → (cohesion, friction limit, tangential, rolling: none yet) → assemble.
+/// normal → cohesion → damping (→ clamp) → friction limit → tangential → rolling → assemble.
 /// `committed` is the history at the last commit, `elapsed` the time since then [s].
 [[nodiscard]] inline ContactOutcome evaluate_contact(const PairLaw& law, const ContactGeometry& g,
                                                      const ContactHistory& committed,
                                                      double elapsed) noexcept {
-  static_cast<void>(elapsed);  // read by history-carrying tangential sub-models (issue #3)
   ContactOutcome out;
-  if (g.overlap <= 0.0) return out;  // a contact exists only while δ > 0 strictly
+  out.history = committed;
+  ContactHistory& next = out.history;
+  const ContactInput in{g, committed, elapsed, law.policies};
 
   const NormalResponse elastic =
-      std::visit([&](const auto& m) { return m.evaluate(g); }, law.normal);
-  const double damping =
-      std::visit([&](const auto& m) { return m.force(g, elastic); }, law.damping);
+      std::visit([&](const auto& m) { return m.evaluate(in, next); }, law.normal);
+  const CohesionResponse cohesion =
+      std::visit([&](const auto& m) { return m.evaluate(in, elastic, next); }, law.cohesion);
+  out.contact = g.overlap > 0.0 || cohesion.contact;
+  out.interacting = out.contact || elastic.active || cohesion.active;
+  if (!out.interacting) return out;
 
-  out.interacting = true;
-  out.normal_force = elastic.force + damping;
-  out.elastic_energy = elastic.energy;
-  out.force_on_p = out.normal_force * g.normal;
-  out.history = committed;
-  out.history.max_overlap = std::max(committed.max_overlap, g.overlap);
+  const double eta =
+      out.contact ? std::visit([&](const auto& m) { return m.coefficient(g, elastic); }, law.damping)
+                  : 0.0;
+  double damping = -eta * g.normal_speed;
+  if (law.policies.clamp_tensile && elastic.force + damping < 0.0) damping = -elastic.force;
+  out.normal_force = elastic.force + damping + cohesion.force;
+
+  TangentialResponse tangential;
+  RollingResponse rolling;
+  if (out.contact) {
+    const double basis = friction_limit_basis(law.policies.friction_limit, elastic.force, damping,
+                                              cohesion.force, cohesion.pulloff_force);
+    const TangentialInput t_in{elastic, eta, basis};
+    tangential = std::visit([&](const auto& m) { return m.evaluate(in, t_in, next); }, law.tangential);
+    rolling = std::visit([&](const auto& m) { return m.evaluate(in, basis, next); }, law.rolling);
+    next.max_overlap = std::max(committed.max_overlap, g.overlap);
+  } else {
+    next.tangential_slip.setZero();
+    next.rolling_slip.setZero();
+  }
+
+  out.force_on_p = out.normal_force * g.normal + tangential.force;
+  out.torque_on_p = g.branch_p.cross(tangential.force) + rolling.torque_p;
+  out.torque_on_q = g.branch_q.cross(-tangential.force) + rolling.torque_q;
+  out.elastic_energy = elastic.energy + tangential.energy;
+  out.cohesive_energy = cohesion.energy;
+  out.dissipated_damping = std::max(0.0, -damping * g.normal_speed) * elapsed;
+  out.dissipated_friction = tangential.dissipated + rolling.dissipated;
   return out;
 }
 
-/// Damping coefficient η [kg/s] of the pair law at overlap δ (for time-step control and reports).
-[[nodiscard]] inline double damping_coefficient(const PairLaw& law, const ContactGeometry& g) {
-  const NormalResponse elastic =
-      std::visit([&](const auto& m) { return m.evaluate(g); }, law.normal);
-  return std::visit([&](const auto& m) { return m.coefficient(g, elastic); }, law.damping);
+/// Largest centre distance at which the law of a pair with extent `e` acts (neighbour search).
+[[nodiscard]] inline double interaction_range(const PairLaw& law, const PairExtent& e) noexcept {
+  const double normal = std::visit([&](const auto& m) { return m.range(e); }, law.normal);
+  const double cohesion = std::visit([&](const auto& m) { return m.range(e); }, law.cohesion);
+  return std::max(normal, cohesion);
+}
+
+/// Normal stiffness that sets the contact time scale of a collision of the given scale.
+[[nodiscard]] inline double collision_stiffness(const PairLaw& law, const CollisionScale& s) noexcept {
+  return std::visit([&](const auto& m) { return m.collision_stiffness(s); }, law.normal);
+}
+
+/// Damping coefficient η [kg/s] of the law with tangent stiffness k and reduced mass m*.
+[[nodiscard]] inline double damping_coefficient(const PairLaw& law, double reduced_mass,
+                                                double stiffness) noexcept {
+  ContactGeometry g{};
+  g.reduced_mass = reduced_mass;
+  NormalResponse n;
+  n.stiffness = stiffness;
+  return std::visit([&](const auto& m) { return m.coefficient(g, n); }, law.damping);
 }
 
 }  // namespace dem

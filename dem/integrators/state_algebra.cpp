@@ -20,6 +20,7 @@ Derivative scaled(double c, const Derivative& x) {
 
 void advance(const KinematicState& base, double h, const Derivative& d, bool rotation,
              KinematicState& out) {
+  out.time = base.time + h;
   out.position = base.position + h * d.velocity;
   out.velocity = base.velocity + h * d.acceleration;
   if (!rotation) {

@@ -27,11 +27,13 @@ double mix_values(MixingRule rule, double a, double b) noexcept {
     case MixingRule::geometric: return std::sqrt(a * b);
     case MixingRule::min: return std::min(a, b);
     case MixingRule::max: return std::max(a, b);
+    case MixingRule::derived: break;
   }
   return a;
 }
 
 std::string_view to_string(MixingRule rule) noexcept {
+  if (rule == MixingRule::derived) return "derived";
   for (const auto& [r, name] : kRuleNames) {
     if (r == rule) return name;
   }
@@ -53,6 +55,12 @@ MixingRule rule_for(const MixingRules& rules, const PropertySpec& spec) noexcept
 PairProperties mix_properties(const MaterialProperties& a, const MaterialProperties& b,
                               const MixingRules& rules) {
   PairProperties pair;
+  if (a.youngs_modulus && a.poisson_ratio && b.youngs_modulus && b.poisson_ratio) {
+    pair.effective_modulus =
+        effective_modulus(*a.youngs_modulus, *a.poisson_ratio, *b.youngs_modulus, *b.poisson_ratio);
+    pair.effective_shear_modulus = effective_shear_modulus(*a.youngs_modulus, *a.poisson_ratio,
+                                                           *b.youngs_modulus, *b.poisson_ratio);
+  }
   for (const auto& spec : property_specs()) {
     if (spec.material_field == nullptr || spec.pair_field == nullptr) continue;
     const auto& va = a.*spec.material_field;
@@ -60,6 +68,16 @@ PairProperties mix_properties(const MaterialProperties& a, const MaterialPropert
     if (va && vb) pair.*spec.pair_field = mix_values(rule_for(rules, spec), *va, *vb);
   }
   return pair;
+}
+
+double effective_modulus(double e_p, double nu_p, double e_q, double nu_q) noexcept {
+  return 1.0 / ((1.0 - nu_p * nu_p) / e_p + (1.0 - nu_q * nu_q) / e_q);
+}
+
+double effective_shear_modulus(double e_p, double nu_p, double e_q, double nu_q) noexcept {
+  const double g_p = e_p / (2.0 * (1.0 + nu_p));
+  const double g_q = e_q / (2.0 * (1.0 + nu_q));
+  return 1.0 / ((2.0 - nu_p) / g_p + (2.0 - nu_q) / g_q);
 }
 
 void apply_overrides(PairProperties& base, const PairProperties& overrides) noexcept {

@@ -29,7 +29,8 @@ struct ParticleInit {
   Vec3 position;                 ///< x [m]
   Vec3 velocity;                 ///< u [m/s]
   Vec3 angular_velocity;         ///< ω [rad/s]
-  bool fixed;                    ///< never moves; an infinite-mass partner
+  bool fixed;                    ///< infinite-mass partner (moves only by prescribed motion)
+  double charge = 0.0;           ///< electric charge q [C] (eq 3.36)
 };
 
 /// Properties of every sphere that do not change during a run, one array per field.
@@ -41,6 +42,7 @@ struct ParticleProperties {
   ScalarArray inverse_mass;
   ScalarArray inertia;
   ScalarArray inverse_inertia;
+  ScalarArray charge;
   std::vector<std::uint32_t> material;
   std::vector<std::uint8_t> fixed;
 
@@ -55,6 +57,7 @@ struct KinematicState {
   Vec3Array velocity;
   Vec3Array angular_velocity;
   std::vector<Quat> orientation;
+  double time = 0.0;  ///< [s] the instant this state describes (stages and iterates included)
 
   /// Number of spheres.
   [[nodiscard]] std::size_t size() const noexcept { return orientation.size(); }

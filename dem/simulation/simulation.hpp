@@ -19,7 +19,9 @@ struct SimulationSetup {
   MixingRules mixing;
   std::vector<PairOverride> pair_overrides;
   ModelChoice model;
-  Vec3 gravity = Vec3::Zero();
+  ExternalFields fields;                  ///< gravity and fluid
+  std::vector<PlaneWall> walls;
+  std::vector<PrescribedMotion> motions;  ///< for fixed spheres that move
   SchemeId scheme = SchemeId::velocity_verlet;
   SchemeSettings scheme_settings;
   double timestep = 0.0;  ///< Δt [s], > 0
@@ -39,8 +41,8 @@ class Simulation {
   /// States a multi-step scheme needs for an exact start.
   [[nodiscard]] std::size_t past_states_needed() const noexcept;
 
-  /// Records overlap and normal force of these pairs at every commit, starting now.
-  void watch_pairs(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
+  /// Records overlap and normal force of these contacts at every commit, starting now.
+  void watch(const std::vector<ContactObservation>& contacts);
 
   /// Advances one time step.
   void step();
@@ -66,6 +68,9 @@ class Simulation {
   }
   /// Kinetic energy, translational plus rotational, of the mobile spheres [J].
   [[nodiscard]] double kinetic_energy() const noexcept;
+  /// Energy ledger at the current state: kinetic and gravitational energy of this state,
+  /// contact energies of the last commit, accumulated work.
+  [[nodiscard]] EnergyLedger energy() const noexcept;
 
  private:
   KinematicState state_;       // declared first: props_' initialiser fills it
@@ -76,6 +81,8 @@ class Simulation {
   Accelerations acc_;
   double dt_;
   std::uint64_t steps_ = 0;
+
+  void apply_prescribed_motion();
 };
 
 }  // namespace dem

@@ -15,41 +15,52 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// What one material contributes: how many mobile and fixed spheres, the lightest mobile one.
+/// What one material contributes: how many mobile and fixed spheres, the lightest and smallest.
 struct MaterialCensus {
   std::size_t mobile = 0;
   std::size_t fixed = 0;
   double lightest_mobile = kInf;
+  double smallest_radius = kInf;
 };
 
-/// Stiffness that sets the collision time scale of a law.
-double characteristic_stiffness(const PairLaw& law) {
-  return std::visit([](const auto& m) { return m.characteristic_stiffness(); }, law.normal);
+/// Contact duration of a law for a collision of the given scale, with the law's damping.
+double collision_duration(const PairLaw& law, const CollisionScale& scale) {
+  const double k = collision_stiffness(law, scale);
+  const double eta = damping_coefficient(law, scale.reduced_mass, k);
+  return laws::linear_contact_duration(k, scale.reduced_mass, eta);
 }
 
-/// Contact duration of a law for reduced mass m*, with the law's damping at that mass.
-double collision_duration(const PairLaw& law, double reduced_mass) {
-  ContactGeometry g{};
-  g.reduced_mass = reduced_mass;
-  const double k = characteristic_stiffness(law);
-  const double eta = damping_coefficient(law, g);
-  return laws::linear_contact_duration(k, reduced_mass, eta);
+/// Largest normal approach speed to expect: twice the fastest particle, or a fall through the
+/// largest diameter under gravity, whichever is larger.
+double expected_impact_speed(const ParticleProperties& props, const KinematicState& state,
+                             const Vec3& gravity) {
+  double fastest = 0.0;
+  double largest = 0.0;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props.size()); ++i) {
+    fastest = std::max(fastest, state.velocity.col(i).norm());
+    largest = std::max(largest, 2.0 * props.radius[i]);
+  }
+  return std::max(2.0 * fastest, std::sqrt(2.0 * gravity.norm() * largest));
 }
 
 }  // namespace
 
-TimestepLimits timestep_limits(const ParticleProperties& props, const PairTable& table,
-                               bool rotation, double steps_per_collision) {
+TimestepLimits timestep_limits(const ParticleProperties& props, const KinematicState& state,
+                               const PairTable& table, const Vec3& gravity, bool rotation,
+                               double steps_per_collision) {
   std::vector<MaterialCensus> census(table.material_count());
   for (std::size_t i = 0; i < props.size(); ++i) {
     MaterialCensus& c = census[props.material[i]];
+    const auto k = static_cast<Eigen::Index>(i);
+    c.smallest_radius = std::min(c.smallest_radius, props.radius[k]);
     if (props.fixed[i] != 0) {
       ++c.fixed;
     } else {
       ++c.mobile;
-      c.lightest_mobile = std::min(c.lightest_mobile, props.mass[static_cast<Eigen::Index>(i)]);
+      c.lightest_mobile = std::min(c.lightest_mobile, props.mass[k]);
     }
   }
+  const double speed = expected_impact_speed(props, state, gravity);
   double sqrt_m_over_k = kInf;
   double t_c = kInf;
   for (std::size_t a = 0; a < census.size(); ++a) {
@@ -57,15 +68,18 @@ TimestepLimits timestep_limits(const ParticleProperties& props, const PairTable&
     for (std::size_t b = 0; b < census.size(); ++b) {
       const PairLaw& law = table.law(a, b);
       const double m_a = census[a].lightest_mobile;
+      const double r_a = census[a].smallest_radius;
+      const double r_b = census[b].smallest_radius;
       const bool mobile_partner = a == b ? census[a].mobile >= 2 : census[b].mobile >= 1;
       const bool fixed_partner = census[b].fixed >= 1;
       if (!mobile_partner && !fixed_partner) continue;
-      sqrt_m_over_k = std::min(sqrt_m_over_k, std::sqrt(m_a / characteristic_stiffness(law)));
+      const CollisionScale scale{m_a, r_a * r_b / (r_a + r_b), speed};
+      sqrt_m_over_k = std::min(sqrt_m_over_k, std::sqrt(m_a / collision_stiffness(law, scale)));
       if (mobile_partner) {
         const double m_b = census[b].lightest_mobile;
-        t_c = std::min(t_c, collision_duration(law, m_a * m_b / (m_a + m_b)));
+        t_c = std::min(t_c, collision_duration(law, {m_a * m_b / (m_a + m_b), scale.reduced_radius, speed}));
       }
-      if (fixed_partner) t_c = std::min(t_c, collision_duration(law, m_a));
+      if (fixed_partner) t_c = std::min(t_c, collision_duration(law, scale));
     }
   }
   return TimestepLimits{sqrt_m_over_k, (rotation ? 0.22 : 0.34) * sqrt_m_over_k, t_c,

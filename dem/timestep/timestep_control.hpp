@@ -19,11 +19,14 @@ struct TimestepLimits {
   bool rotation;                 ///< which O'Sullivan–Bray factor applies
 };
 
-/// Limits for the spheres `props` under the pair laws `table`. m is the smallest mobile mass
-/// and k the stiffest pair it can meet; t_c uses the smallest reduced mass of each material pair
-/// that can actually touch (mobile–mobile, or mobile–fixed with m* = m).
-TimestepLimits timestep_limits(const ParticleProperties& props, const PairTable& table,
-                               bool rotation, double steps_per_collision);
+/// Limits for the spheres `props` in `state` under the pair laws `table` and gravity. m is the
+/// smallest mobile mass and k the stiffest pair it can meet; t_c uses the smallest reduced mass
+/// of each material pair that can actually touch (mobile–mobile, or mobile–fixed with m* = m).
+/// Stiffness that grows with overlap (Hertz) is taken at the overlap of an impact at twice the
+/// fastest initial speed, or of a fall through the largest diameter (PHYSICS.md §7).
+TimestepLimits timestep_limits(const ParticleProperties& props, const KinematicState& state,
+                               const PairTable& table, const Vec3& gravity, bool rotation,
+                               double steps_per_collision);
 
 /// Automatic time step: the smaller of the O'Sullivan–Bray limit and t_c / a.
 [[nodiscard]] double automatic_timestep(const TimestepLimits& limits) noexcept;

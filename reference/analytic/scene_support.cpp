@@ -166,6 +166,21 @@ std::vector<std::string> unsupported_reasons(const cases::Scene& scene) {
         "force)",
         g[0], g[1], g[2]));
   }
+  if (!scene.walls.empty()) {
+    reasons.push_back("analytic: walls are not part of the collinear closed forms");
+  }
+  if (scene.fluid) reasons.push_back("analytic: a fluid (drag, buoyancy) has no closed form here");
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    if (!scene.particles[i].motion.empty()) {
+      reasons.push_back(fmt::format("analytic: particle {} has a prescribed motion", i));
+    }
+    if (scene.particles[i].charge != 0.0) {
+      reasons.push_back(fmt::format("analytic: particle {} is charged", i));
+    }
+  }
+  if (scene.model.clamp_tensile) {
+    reasons.push_back("analytic: clamp_tensile changes the dashpot law; no closed form here");
+  }
   check_layout(scene, reasons);
   if (!reasons.empty()) return reasons;
   try {

@@ -24,7 +24,37 @@ cases::Trace make_trace(const cases::Scene& scene) {
   for (const auto& [p, q] : scene.output.trace_pairs) {
     for (const auto name : cases::kPairQuantities) trace.add_column(cases::pair_column(p, q, name));
   }
+  for (const auto& [p, w] : scene.output.trace_walls) {
+    for (const auto name : cases::kPairQuantities) trace.add_column(cases::wall_column(p, w, name));
+  }
   return trace;
+}
+
+/// Energy trace columns: time, then the ledger.
+cases::Trace make_energy_trace() {
+  cases::Trace trace;
+  trace.add_column("time");
+  for (const auto name : cases::kEnergyQuantities) trace.add_column(std::string(name));
+  return trace;
+}
+
+/// Appends the energy ledger at the simulation's current time.
+void record_energy(const dem::Simulation& sim, cases::Trace& trace) {
+  const dem::EnergyLedger& e = sim.energy();
+  trace.append_row({sim.time(), e.kinetic, e.elastic, e.cohesive, e.gravitational,
+                    e.dissipated_damping, e.dissipated_friction, e.fluid_work, e.balance()});
+}
+
+/// The contacts the trace reports, pairs first, then particle–wall contacts.
+std::vector<dem::ContactObservation> watched_contacts(const cases::Scene& scene) {
+  std::vector<dem::ContactObservation> out;
+  for (const auto& [p, q] : scene.output.trace_pairs) {
+    out.push_back({static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(q), false, 0.0, 0.0, false});
+  }
+  for (const auto& [p, w] : scene.output.trace_walls) {
+    out.push_back({static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(w), true, 0.0, 0.0, false});
+  }
+  return out;
 }
 
 /// Appends the simulation's current state as one trace row.
@@ -40,7 +70,7 @@ void record(const cases::Scene& scene, const dem::Simulation& sim, cases::Trace&
       for (Eigen::Index k = 0; k < 3; ++k) row.push_back((*field)(k, c));
     }
   }
-  for (const auto& o : sim.force_field().observations()) {
+  for (const auto& o : sim.force_field().observations()) {  // pairs, then walls
     row.push_back(o.overlap);
     row.push_back(o.normal_force);
   }
@@ -109,11 +139,7 @@ cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&
   const CoreSetup setup = core_setup(scene);
   dem::Simulation sim(setup.simulation);
   if (scene.integration.startup == dem::StartupPolicy::exact) supply_exact_past(scene, sim);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> watched;
-  for (const auto& [p, q] : scene.output.trace_pairs) {
-    watched.emplace_back(static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(q));
-  }
-  sim.watch_pairs(watched);
+  sim.watch(watched_contacts(scene));
 
   cases::RunResult result;
   result.status = cases::RunStatus::ok;
@@ -131,11 +157,17 @@ cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&
   };
 
   const std::uint64_t steps = step_count(scene.integration.duration, dt);
-  record(scene, sim, result.trace);
+  const bool energy = scene.output.trace_energy;
+  if (energy) result.energy = make_energy_trace();
+  const auto record_all = [&] {
+    record(scene, sim, result.trace);
+    if (energy) record_energy(sim, result.energy);
+  };
+  record_all();
   take_snapshots();
   for (std::uint64_t n = 1; n <= steps; ++n) {
     sim.step();
-    if (n % scene.output.trace_every == 0) record(scene, sim, result.trace);
+    if (n % scene.output.trace_every == 0) record_all();
     take_snapshots();
   }
 

@@ -11,6 +11,22 @@ namespace {
 
 dem::Vec3 to_vec(const cases::Vector3& v) { return {v[0], v[1], v[2]}; }
 
+/// The core's fluid from the case's.
+dem::Fluid to_fluid(const cases::FluidSpec& f) {
+  dem::Fluid out;
+  out.density = f.density;
+  out.viscosity = f.viscosity;
+  out.drag = f.drag;
+  out.buoyancy = f.buoyancy;
+  out.virtual_mass = f.virtual_mass;
+  out.pressure_gradient = to_vec(f.pressure_gradient);
+  out.velocity.uniform = to_vec(f.velocity);
+  for (const auto& z : f.zones) out.velocity.zones.push_back({to_vec(z.min), to_vec(z.max), to_vec(z.direction)});
+  out.velocity.speed = f.plug_speed;
+  out.velocity.ramp_time = f.ramp_time;
+  return out;
+}
+
 /// Smallest body radius, the length scale of implicit-iteration tolerances.
 double smallest_radius(const cases::Scene& scene) {
   double r = scene.particles.front().radius;
@@ -27,13 +43,25 @@ CoreSetup core_setup(const cases::Scene& scene) {
     s.particles.push_back(dem::ParticleInit{
         p.radius, p.effect_radius, scene.materials.at(p.material).density,
         static_cast<std::uint32_t>(p.material), to_vec(p.position), to_vec(p.velocity),
-        to_vec(p.angular_velocity), p.fixed});
+        to_vec(p.angular_velocity), p.fixed, p.charge});
   }
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const auto& p = scene.particles[i];
+    if (p.motion.empty()) continue;
+    dem::PrescribedMotion m{static_cast<std::uint32_t>(i), to_vec(p.position), {}};
+    for (const auto& seg : p.motion) m.segments.push_back({seg.duration, to_vec(seg.velocity)});
+    s.motions.push_back(std::move(m));
+  }
+  for (const auto& w : scene.walls) {
+    s.walls.push_back(dem::PlaneWall{to_vec(w.point), to_vec(w.normal), to_vec(w.velocity),
+                                     static_cast<std::uint32_t>(w.material)});
+  }
+  s.fields.gravity = to_vec(scene.gravity);
+  if (scene.fluid) s.fields.fluid = to_fluid(*scene.fluid);
   s.materials = scene.materials;
   s.mixing = scene.mixing;
   s.pair_overrides = scene.pair_overrides;
   s.model = scene.model;
-  s.gravity = to_vec(scene.gravity);
   const cases::IntegrationSpec& in = scene.integration;
   s.scheme = in.scheme;
   s.scheme_settings = dem::SchemeSettings{in.rotation,
@@ -48,7 +76,8 @@ CoreSetup core_setup(const cases::Scene& scene) {
   dem::KinematicState initial;
   dem::build_particles(s.particles, props, initial);
   const dem::PairTable table(s.materials, s.mixing, s.pair_overrides, s.model);
-  out.limits = dem::timestep_limits(props, table, in.rotation, in.steps_per_collision);
+  out.limits = dem::timestep_limits(props, initial, table, s.fields.gravity, in.rotation,
+                                    in.steps_per_collision);
   if (in.timestep) {
     s.timestep = *in.timestep;
     for (const auto& w : dem::timestep_warnings(s.timestep, out.limits)) {

@@ -285,7 +285,7 @@ TEST(CaseLoader, ErrorWithoutPositionOmitsLineAndColumn) {
 TEST(CaseLoader, UnknownKeyWithoutCloseMatchListsKnownKeys) {
   const CaseError e = error_of(minimal_with("[fields]\nmagnetism = 1.0\n"));
   EXPECT_EQ(e.key(), "fields.magnetism");
-  EXPECT_EQ(e.problem(), "unknown key 'magnetism' (known: gravity)");
+  EXPECT_EQ(e.problem(), "unknown key 'magnetism' (known: gravity, fluid)");
 }
 
 TEST(CaseLoader, WarnsWhenStartupIsSetForSingleStepScheme) {

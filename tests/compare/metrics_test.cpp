@@ -85,7 +85,7 @@ TEST(Metrics, MissingContactGivesAProblemNotANumber) {
   tr.append_row({1, 1, 0, 0, 1, 0, 0, -0.5, 0});
   const auto m = comparison::compute_metrics(scene, ok_run("inhouse", tr), nullptr);
   EXPECT_FALSE(m.at("contact_duration").value.has_value());
-  EXPECT_NE(m.at("contact_duration").problem.find("never comes into contact"), std::string::npos);
+  EXPECT_NE(m.at("contact_duration").problem.find("never come into contact"), std::string::npos);
 }
 
 TEST(Metrics, EngineThatDidNotRunHasNoValues) {
@@ -102,6 +102,34 @@ TEST(Metrics, NonFiniteValuesBecomeProblems) {
   run.exact_metrics["max_overlap"] = std::nan("");
   const auto m = comparison::compute_metrics(collision_scene({"max_overlap"}), run, nullptr);
   EXPECT_FALSE(m.at("max_overlap").value.has_value());
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Metrics, WallContactRestitutionUsesTheWallNormalAndVelocity) {
+  // A sphere falling onto a floor (normal +z) at 2 m/s, rebounding at 1.5 m/s.
+  cases::Scene s;
+  s.particles.resize(1);
+  s.particles[0].radius = 0.01;
+  s.particles[0].position = {0.0, 0.0, 0.012};
+  s.particles[0].velocity = {0.0, 0.0, -2.0};
+  s.walls.push_back({"floor", {0, 0, 0}, {0, 0, 1}, {0, 0, 0}, 0});
+  s.compare.subject = 0;
+  s.compare.wall_contact = cases::ParticlePair{0, 0};
+  s.compare.metrics = {"restitution", "contact_duration", "max_position"};
+  cases::Trace tr;
+  for (const char* c : {"time", "p0.x", "p0.y", "p0.z", "p0.vx", "p0.vy", "p0.vz", "c0-w0.overlap", "c0-w0.fn"}) tr.add_column(c);
+  tr.append_row({0.0, 0, 0, 0.012, 0, 0, -2.0, -0.002, 0});
+  tr.append_row({1.0, 0, 0, 0.009, 0, 0, -1.0, 0.001, 1});
+  tr.append_row({2.0, 0, 0, 0.009, 0, 0, 1.0, 0.001, 1});
+  tr.append_row({3.0, 0, 0, 0.012, 0, 0, 1.5, -0.002, 0});
+  const auto m = comparison::compute_metrics(s, test_support::ok_run("inhouse", tr), nullptr);
+  EXPECT_NEAR(*m.at("restitution").value, 0.75, 1e-15);
+  EXPECT_NEAR(*m.at("contact_duration").value, (3.0 - 2.0 / 3.0) - (2.0 / 3.0), 1e-12);
+  // The collision axis points into the wall (−z): the deepest approach is 3 mm.
+  EXPECT_NEAR(*m.at("max_position").value, 0.003, 1e-15);
 }
 
 }  // namespace

@@ -16,7 +16,7 @@ dem::TimestepLimits limits_of(const dem::SimulationSetup& s, bool rotation) {
   dem::KinematicState state;
   dem::build_particles(s.particles, props, state);
   const dem::PairTable table(s.materials, s.mixing, s.pair_overrides, s.model);
-  return dem::timestep_limits(props, table, rotation, 20.0);
+  return dem::timestep_limits(props, state, table, dem::Vec3::Zero(), rotation, 20.0);
 }
 
 TEST(TimestepLimits, FollowCundallStrackAndOSullivanBray) {

@@ -5,16 +5,15 @@
 #include <cmath>
 #include <string_view>
 
-#include "dem/contact/contact_geometry.hpp"
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "dem/contact/slots/property_access.hpp"
 #include "dem/contact/slots/responses.hpp"
 
 namespace dem {
 
-/// Damping sub-model `restitution`: dashpot −η (u_c·n) with η = β(ε) √(m* k) so that a linear
-/// contact rebounds with restitution ε exactly (thesis eq 3.10–3.11). m* is the pair's reduced
-/// mass, k the normal sub-model's stiffness at the current overlap.
+/// Damping sub-model `restitution`: dashpot −η (u_c·n) with η = β(ε) √(m* k) (thesis eq
+/// 3.10–3.11), k the normal sub-model's stiffness at the current overlap. For the linear spring
+/// the rebound has restitution ε exactly; for Hertz it uses the tangent stiffness.
 struct RestitutionDamping {
   static constexpr std::string_view kKeyword = "restitution";
   static constexpr std::string_view kDescription =
@@ -38,11 +37,6 @@ struct RestitutionDamping {
   [[nodiscard]] double coefficient(const ContactGeometry& g,
                                    const NormalResponse& normal) const noexcept {
     return factor * std::sqrt(g.reduced_mass * normal.stiffness);
-  }
-  /// Viscous normal force [N], repulsive positive.
-  [[nodiscard]] double force(const ContactGeometry& g,
-                             const NormalResponse& normal) const noexcept {
-    return laws::dashpot_force(coefficient(g, normal), g.normal_speed);
   }
 };
 

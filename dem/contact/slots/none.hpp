@@ -4,7 +4,6 @@
 #include <array>
 #include <string_view>
 
-#include "dem/contact/contact_geometry.hpp"
 #include "dem/contact/slots/responses.hpp"
 #include "dem/materials/material_properties.hpp"
 
@@ -25,9 +24,6 @@ struct NoDamping : NoneModelInfo {
   [[nodiscard]] double coefficient(const ContactGeometry&, const NormalResponse&) const noexcept {
     return 0.0;
   }
-  [[nodiscard]] double force(const ContactGeometry&, const NormalResponse&) const noexcept {
-    return 0.0;
-  }
 };
 
 /// Tangential sub-model `none`: frictionless contact.
@@ -35,18 +31,30 @@ struct NoTangential : NoneModelInfo {
   static constexpr std::string_view kDescription = "frictionless";
   static constexpr std::string_view kLammps = "tangential linear_nohistory 0 0";
   static NoTangential from_pair(const PairProperties&) { return {}; }
+  [[nodiscard]] TangentialResponse evaluate(const ContactInput&, const TangentialInput&,
+                                            ContactHistory&) const noexcept {
+    return {};
+  }
 };
 
-/// Cohesion sub-model `none`: no attraction; pairs interact only while their bodies overlap.
+/// Cohesion sub-model `none`: no attraction; pairs interact only through the normal law.
 struct NoCohesion : NoneModelInfo {
   static constexpr std::string_view kDescription = "no cohesion";
   static NoCohesion from_pair(const PairProperties&) { return {}; }
+  [[nodiscard]] CohesionResponse evaluate(const ContactInput&, const NormalResponse&,
+                                          ContactHistory&) const noexcept {
+    return {};
+  }
+  [[nodiscard]] double range(const PairExtent&) const noexcept { return 0.0; }
 };
 
 /// Rolling sub-model `none`: no rolling resistance.
 struct NoRolling : NoneModelInfo {
   static constexpr std::string_view kDescription = "no rolling resistance";
   static NoRolling from_pair(const PairProperties&) { return {}; }
+  [[nodiscard]] RollingResponse evaluate(const ContactInput&, double, ContactHistory&) const noexcept {
+    return {};
+  }
 };
 
 }  // namespace dem

@@ -4,14 +4,13 @@
 #include <array>
 #include <string_view>
 
-#include "dem/contact/contact_geometry.hpp"
 #include "dem/contact/laws/linear_spring.hpp"
 #include "dem/contact/slots/property_access.hpp"
 #include "dem/contact/slots/responses.hpp"
 
 namespace dem {
 
-/// Normal sub-model `linear`: Hooke repulsion F = k_e δ (thesis eq 3.10, elastic part).
+/// Normal sub-model `linear`: Hooke repulsion F = k_e δ while δ > 0 (thesis eq 3.10, elastic part).
 struct LinearNormal {
   static constexpr std::string_view kKeyword = "linear";
   static constexpr std::string_view kDescription = "linear spring F = k_e δ (eq 3.10)";
@@ -28,13 +27,18 @@ struct LinearNormal {
     return {required_property(pair, &PairProperties::normal_stiffness, "normal_stiffness",
                               "normal = 'linear'")};
   }
-  /// Elastic response at the pair's overlap (δ > 0).
-  [[nodiscard]] NormalResponse evaluate(const ContactGeometry& g) const noexcept {
-    return {laws::linear_spring_force(stiffness, g.overlap), stiffness,
-            laws::linear_spring_energy(stiffness, g.overlap)};
+  /// Elastic response; zero out of contact.
+  [[nodiscard]] NormalResponse evaluate(const ContactInput& in, ContactHistory&) const noexcept {
+    if (in.g.overlap <= 0.0) return {};
+    return {laws::linear_spring_force(stiffness, in.g.overlap), stiffness,
+            laws::linear_spring_energy(stiffness, in.g.overlap), true};
   }
-  /// Stiffness that sets the collision time scale (constant for a linear spring).
-  [[nodiscard]] double characteristic_stiffness() const noexcept { return stiffness; }
+  /// Acts only while the bodies overlap.
+  [[nodiscard]] double range(const PairExtent& e) const noexcept { return e.contact_distance; }
+  /// Constant stiffness.
+  [[nodiscard]] double collision_stiffness(const CollisionScale&) const noexcept {
+    return stiffness;
+  }
 };
 
 }  // namespace dem

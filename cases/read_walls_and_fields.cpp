@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+// Section readers for what surrounds the particles: [[walls]] and [fields].
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cases/loader_sections.hpp"
+
+namespace cases::loader {
+namespace {
+
+constexpr auto kPlaneKeys =
+    std::to_array<std::string_view>({"type", "name", "point", "normal", "material", "velocity"});
+constexpr auto kBoxKeys =
+    std::to_array<std::string_view>({"type", "name", "min", "max", "material", "open_faces"});
+constexpr auto kWallTypes = std::to_array<std::string_view>({"plane", "box"});
+constexpr auto kBoxFaces = std::to_array<std::string_view>({"x-", "x+", "y-", "y+", "z-", "z+"});
+constexpr auto kFieldKeys = std::to_array<std::string_view>({"gravity", "fluid"});
+constexpr auto kFluidKeys = std::to_array<std::string_view>(
+    {"density", "viscosity", "drag", "buoyancy", "virtual_mass", "pressure_gradient", "velocity",
+     "plug_flow"});
+constexpr auto kPlugKeys = std::to_array<std::string_view>({"speed", "ramp_time", "zones"});
+constexpr auto kZoneKeys = std::to_array<std::string_view>({"min", "max", "direction"});
+
+/// A nonzero vector scaled to unit length; throws naming the value when it is zero.
+Vector3 unit_vector(const Value& value) {
+  const Vector3 v = value.vector3();
+  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (!(n > 0.0)) value.fail("must be a nonzero vector");
+  return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
+  t.allow_only(kPlaneKeys);
+  WallSpec w;
+  w.name = t.has("name") ? t.require("name").string() : fmt::format("wall{}", index);
+  w.point = t.require("point").vector3();
+  w.normal = unit_vector(t.require("normal"));
+  w.material = material_index(t.require("material"), scene);
+  if (const auto v = t.find("velocity")) w.velocity = v->vector3();
+  return w;
+}
+
+/// The inner faces of an axis-aligned box, normals pointing inwards, minus the open ones.
+std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t index) {
+  t.allow_only(kBoxKeys);
+  const std::string name = t.has("name") ? t.require("name").string() : fmt::format("box{}", index);
+  const Vector3 lo = t.require("min").vector3();
+  const Vector3 hi = t.require("max").vector3();
+  for (int k = 0; k < 3; ++k) {
+    if (!(hi[k] > lo[k])) t.fail("max", fmt::format("must exceed min in every component, got {} <= {}", hi[k], lo[k]));
+  }
+  const std::size_t material = material_index(t.require("material"), scene);
+  std::vector<std::string> open;
+  if (const auto v = t.find("open_faces")) {
+    for (const Value& f : v->elements()) open.push_back(f.keyword(kBoxFaces, "box face"));
+  }
+  std::vector<WallSpec> walls;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const int side : {-1, 1}) {
+      const std::string face = fmt::format("{}{}", "xyz"[axis], side < 0 ? '-' : '+');
+      if (std::find(open.begin(), open.end(), face) != open.end()) continue;
+      WallSpec w;
+      w.name = name + "." + face;
+      w.point = side < 0 ? lo : hi;
+      w.normal = {0.0, 0.0, 0.0};
+      w.normal[static_cast<std::size_t>(axis)] = side < 0 ? 1.0 : -1.0;
+      w.material = material;
+      walls.push_back(w);
+    }
+  }
+  return walls;
+}
+
+std::vector<FlowZoneSpec> read_zones(const Value& value) {
+  std::vector<FlowZoneSpec> zones;
+  for (const Value& item : value.elements()) {
+    const Table z = item.table();
+    z.allow_only(kZoneKeys);
+    FlowZoneSpec spec{z.require("min").vector3(), z.require("max").vector3(),
+                      unit_vector(z.require("direction"))};
+    for (int k = 0; k < 3; ++k) {
+      if (!(spec.max[k] > spec.min[k])) z.fail("max", "must exceed min in every component");
+    }
+    zones.push_back(spec);
+  }
+  if (zones.empty()) value.fail("must list at least one zone");
+  return zones;
+}
+
+FluidSpec read_fluid(const Table& t) {
+  t.allow_only(kFluidKeys);
+  FluidSpec f;
+  if (const auto v = t.find("density")) f.density = v->number(positive_range());
+  if (const auto v = t.find("viscosity")) f.viscosity = v->number(positive_range());
+  if (const auto v = t.find("drag")) f.drag = v->boolean();
+  if (const auto v = t.find("buoyancy")) f.buoyancy = v->boolean();
+  if (const auto v = t.find("virtual_mass")) f.virtual_mass = v->boolean();
+  if (const auto v = t.find("pressure_gradient")) f.pressure_gradient = v->vector3();
+  if (const auto v = t.find("velocity")) f.velocity = v->vector3();
+  if (const auto v = t.find("plug_flow")) {
+    if (t.has("velocity")) v->fail("give either a uniform fluid velocity or plug_flow, not both");
+    const Table plug = v->table();
+    plug.allow_only(kPlugKeys);
+    f.plug_speed = plug.require("speed").number(positive_range());
+    if (const auto r = plug.find("ramp_time")) f.ramp_time = r->number(dem::ValueRange{0.0, std::numeric_limits<double>::infinity(), false, true});
+    f.zones = read_zones(plug.require("zones"));
+  }
+  return f;
+}
+
+}  // namespace
+
+void read_walls(const Table& root, Scene& scene) {
+  const auto section = root.find("walls");
+  if (!section) return;
+  std::size_t index = 0;
+  for (const Value& entry : section->elements()) {
+    const Table t = entry.table();
+    const std::string type = t.require("type").keyword(kWallTypes, "wall type");
+    if (type == "plane") {
+      scene.walls.push_back(read_plane(t, scene, index));
+    } else {
+      for (auto& w : read_box(t, scene, index)) scene.walls.push_back(std::move(w));
+    }
+    ++index;
+  }
+}
+
+void read_fields(const Table& root, Scene& scene) {
+  const auto section = root.find("fields");
+  if (!section) return;
+  const Table fields = section->table();
+  fields.allow_only(kFieldKeys);
+  if (const auto v = fields.find("gravity")) scene.gravity = v->vector3();
+  if (const auto v = fields.find("fluid")) scene.fluid = read_fluid(v->table());
+}
+
+}  // namespace cases::loader
