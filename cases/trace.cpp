@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "cases/trace.hpp"
 
+#include "cases/scene.hpp"
+
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -36,6 +38,21 @@ std::string particle_column(std::size_t particle, std::string_view quantity) {
 
 std::string pair_column(std::size_t p, std::size_t q, std::string_view quantity) {
   return fmt::format("c{}-{}.{}", p, q, quantity);
+}
+
+Trace trace_layout(const Scene& scene) {
+  Trace trace;
+  trace.add_column("time");
+  for (const std::size_t i : scene.output.trace_particles) {
+    for (const auto q : kParticleQuantities) trace.add_column(particle_column(i, q));
+  }
+  for (const auto& [p, q] : scene.output.trace_pairs) {
+    for (const auto name : kPairQuantities) trace.add_column(pair_column(p, q, name));
+  }
+  for (const auto& [p, w] : scene.output.trace_walls) {
+    for (const auto name : kPairQuantities) trace.add_column(wall_column(p, w, name));
+  }
+  return trace;
 }
 
 std::string wall_column(std::size_t p, std::size_t wall, std::string_view quantity) {

@@ -45,6 +45,13 @@ std::string pair_column(std::size_t p, std::size_t q, std::string_view quantity)
 /// Column name of a particle–wall contact quantity, e.g. wall_column(0, 2, "fn") = "c0-w2.fn".
 std::string wall_column(std::size_t p, std::size_t wall, std::string_view quantity);
 
+struct Scene;
+
+/// An empty trace with the columns every engine records for `scene`, in order: time; the 12
+/// quantities of each output.trace_particles; overlap and fn of each output.trace_pairs; overlap
+/// and fn of each output.trace_walls.
+Trace trace_layout(const Scene& scene);
+
 /// The quantities traced per particle, in column order.
 inline constexpr std::string_view kParticleQuantities[] = {"x",  "y",  "z",  "vx", "vy", "vz",
                                                            "wx", "wy", "wz", "fx", "fy", "fz"};

@@ -14,22 +14,6 @@
 namespace reference {
 namespace {
 
-/// Trace columns for the scene's traced particles and pairs, in the order `record` fills them.
-cases::Trace make_trace(const cases::Scene& scene) {
-  cases::Trace trace;
-  trace.add_column("time");
-  for (const std::size_t i : scene.output.trace_particles) {
-    for (const auto q : cases::kParticleQuantities) trace.add_column(cases::particle_column(i, q));
-  }
-  for (const auto& [p, q] : scene.output.trace_pairs) {
-    for (const auto name : cases::kPairQuantities) trace.add_column(cases::pair_column(p, q, name));
-  }
-  for (const auto& [p, w] : scene.output.trace_walls) {
-    for (const auto name : cases::kPairQuantities) trace.add_column(cases::wall_column(p, w, name));
-  }
-  return trace;
-}
-
 /// Energy trace columns: time, then the ledger.
 cases::Trace make_energy_trace() {
   cases::Trace trace;
@@ -143,7 +127,7 @@ cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&
 
   cases::RunResult result;
   result.status = cases::RunStatus::ok;
-  result.trace = make_trace(scene);
+  result.trace = cases::trace_layout(scene);
   std::vector<double> snapshot_times = scene.output.snapshot_times;
   std::sort(snapshot_times.begin(), snapshot_times.end());
   std::size_t next_snapshot = 0;

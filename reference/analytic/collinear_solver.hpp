@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "reference/analytic/solver.hpp"
+
+namespace reference::analytic {
+
+/// Exact piecewise solution of collinear linear spring–dashpot scenes: one mobile sphere among
+/// fixed spheres on its line of motion, or two mobile spheres head-on (thesis §4.3, fig 4.15).
+class CollinearSolver final : public Solver {
+ public:
+  [[nodiscard]] std::string_view name() const noexcept override { return "collinear linear contacts"; }
+  [[nodiscard]] std::vector<std::string> unsupported_reasons(const cases::Scene& scene) const override;
+  [[nodiscard]] cases::RunResult run(const cases::Scene& scene) const override;
+};
+
+/// Exact states of every particle at the given times (negative times continue the motion
+/// backwards); the scene must be supported by CollinearSolver.
+std::vector<cases::Snapshot> collinear_exact_states(const cases::Scene& scene,
+                                                    const std::vector<double>& times);
+
+/// Step numbers at which the in-house engine takes the requested snapshots: the first step n
+/// in [0, steps] with n Δt ≥ t − Δt/2, in time order.
+std::vector<std::uint64_t> snapshot_steps(std::vector<double> times, double dt, std::uint64_t steps);
+
+}  // namespace reference::analytic
