@@ -45,6 +45,9 @@ void write_case_outputs(const comparison::CaseOutcome& outcome, const std::files
   for (const auto& run : outcome.runs) {
     if (run.status == cases::RunStatus::ok) {
       support::write_file(dir / ("trace_" + run.engine + ".csv"), trace_csv(run.trace));
+      if (!run.energy.empty()) {
+        support::write_file(dir / ("energy_" + run.engine + ".csv"), trace_csv(run.energy));
+      }
       for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
         support::write_file(dir / "snapshots" / fmt::format("{}_{:04d}.vtk", run.engine, k),
                             snapshot_vtk(outcome.scene, run.snapshots[k], run.engine));

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -102,7 +104,17 @@ std::string plots_section(const comparison::CaseOutcome& o, const std::filesyste
   force.title = "Normal force against overlap";
   force.xlabel = "overlap (m)";
   force.ylabel = "normal force (N)";
-  const auto pair = o.scene.compare.pair;
+  Plot energy;
+  energy.title = "Energy ledger (in-house)";
+  energy.xlabel = "time (s)";
+  energy.ylabel = "energy (J)";
+  const auto contact_column = [&](std::string_view q) -> std::optional<std::string> {
+    if (o.scene.compare.pair) return cases::pair_column(o.scene.compare.pair->first, o.scene.compare.pair->second, q);
+    if (o.scene.compare.wall_contact) {
+      return cases::wall_column(o.scene.compare.wall_contact->first, o.scene.compare.wall_contact->second, q);
+    }
+    return std::nullopt;
+  };
   for (const auto& r : o.runs) {
     if (r.status != cases::RunStatus::ok) continue;
     const auto* t = r.trace.column("time");
@@ -111,16 +123,48 @@ std::string plots_section(const comparison::CaseOutcome& o, const std::filesyste
     if (const auto d = comparison::axis_displacement(o.scene, r.trace)) {
       position.series.push_back({r.engine, *t, *d, style});
     }
-    if (pair) {
-      const auto* ov = r.trace.column(cases::pair_column(pair->first, pair->second, "overlap"));
-      const auto* fn = r.trace.column(cases::pair_column(pair->first, pair->second, "fn"));
+    if (const auto ov_name = contact_column("overlap")) {
+      const auto* ov = r.trace.column(*ov_name);
+      const auto* fn = r.trace.column(*contact_column("fn"));
       if (ov != nullptr) overlap.series.push_back({r.engine, *t, *ov, style});
       if (ov != nullptr && fn != nullptr) force.series.push_back({r.engine, *ov, *fn, style});
     }
+    if (!r.energy.empty()) {
+      const auto* te = r.energy.column("time");
+      for (const auto q : cases::kEnergyQuantities) {
+        if (const auto* v = r.energy.column(q)) energy.series.push_back({std::string(q.substr(7)), *te, *v, "lines"});
+      }
+    }
   }
   std::string md;
-  const std::array<std::pair<const Plot*, const char*>, 3> plots{
-      {{&position, "position.png"}, {&overlap, "overlap.png"}, {&force, "force_overlap.png"}}};
+  // Difference of each engine's displacement from the reference's, sample by sample, relative to
+  // the reference's largest overlap (only where both traces share their sample times).
+  Plot difference;
+  difference.title = "Displacement difference from " + o.scene.compare.reference + " / its max overlap";
+  difference.xlabel = "time (s)";
+  difference.ylabel = "relative difference";
+  const cases::RunResult* ref = nullptr;
+  for (const auto& r : o.runs) {
+    if (r.engine == o.scene.compare.reference && r.status == cases::RunStatus::ok) ref = &r;
+  }
+  const auto ref_overlap = ref != nullptr ? contact_column("overlap") : std::nullopt;
+  const auto* ref_ov = ref_overlap ? ref->trace.column(*ref_overlap) : nullptr;
+  const auto ref_d = ref != nullptr ? comparison::axis_displacement(o.scene, ref->trace) : std::nullopt;
+  if (ref_ov != nullptr && ref_d && !ref_ov->empty()) {
+    const double scale = *std::max_element(ref_ov->begin(), ref_ov->end());
+    for (const auto& r : o.runs) {
+      if (&r == ref || r.status != cases::RunStatus::ok || !(scale > 0.0)) continue;
+      const auto d = comparison::axis_displacement(o.scene, r.trace);
+      const auto* t = r.trace.column("time");
+      if (!d || t == nullptr || d->size() != ref_d->size()) continue;
+      reports::Series series{r.engine, *t, {}, "lines"};
+      for (std::size_t k = 0; k < d->size(); ++k) series.y.push_back(((*d)[k] - (*ref_d)[k]) / scale);
+      difference.series.push_back(std::move(series));
+    }
+  }
+  const std::array<std::pair<const Plot*, const char*>, 5> plots{
+      {{&position, "position.png"}, {&overlap, "overlap.png"}, {&force, "force_overlap.png"},
+       {&difference, "difference.png"}, {&energy, "energy.png"}}};
   for (const auto& [plot, file] : plots) {
     if (plot->series.empty()) continue;
     const std::filesystem::path png = plot_dir / file;
