@@ -1,21 +1,83 @@
 // SPDX-License-Identifier: MIT
 #include "app/case_runner.hpp"
 
+#include <chrono>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "cases/case_library.hpp"
+#include "cases/catalogue.hpp"
+#include "store/scene_json.hpp"
+
 namespace app {
+namespace {
+
+/// The committed baseline result of `engine` for `scene`, if one exists and fits the scene.
+std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const std::string& engine,
+                                                const std::filesystem::path& dir) {
+  const auto file = dir / (scene.name + ".json");
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  const store::Baseline b = store::read_baseline(file);
+  const auto it = b.references.find(engine);
+  if (it == b.references.end()) return std::nullopt;
+  cases::RunResult r = it->second;
+  r.source = "baseline";
+  if (b.fingerprint != store::scene_fingerprint(scene)) {
+    r.status = cases::RunStatus::error;
+    r.reason = fmt::format("{} is not installed and the committed baseline {} was made for another "
+                           "version of this case; run `demwb refresh --write-baselines` where it is "
+                           "installed",
+                           engine, file.string());
+    return r;
+  }
+  r.warnings.push_back(fmt::format("{} is not installed here: using its committed baseline {} "
+                                   "(made with {})",
+                                   engine, file.string(), r.version));
+  r.conventions["result source"] = "committed baseline " + file.string();
+  return r;
+}
+
+/// Runs one engine, through the cache and baselines when it is a reference code.
+cases::RunResult run_one(const cases::Scene& scene, const std::string& name, const RunContext& ctx) {
+  const auto engine = reference::make_engine(name);
+  if (!engine) throw std::invalid_argument("unknown engine '" + name + "'");
+  reference::RunOptions o = ctx.options;
+  o.work_dir = ctx.options.work_dir / name;
+  const bool reference_code = cases::is_reference_code(name);
+  if (reference_code && ctx.cache && !ctx.refresh) {
+    const auto start = std::chrono::steady_clock::now();
+    if (const auto version = engine->version()) {
+      if (auto hit = ctx.cache->find(scene, name, *version)) {
+        hit->conventions["original wall time"] = fmt::format("{:.3f} s", hit->wall_time_s);
+        hit->wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return *hit;
+      }
+    }
+  }
+  cases::RunResult result = reference::run_engine(*engine, scene, o);
+  if (reference_code && ctx.cache && result.status == cases::RunStatus::ok) ctx.cache->store(scene, result);
+  if (reference_code && result.status == cases::RunStatus::missing && ctx.baselines) {
+    if (auto b = baseline_result(scene, name, *ctx.baselines)) return *b;
+  }
+  return result;
+}
+
+}  // namespace
 
 comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<std::string>& engines,
-                                 const reference::RunOptions& options) {
+                                 const RunContext& context) {
   std::vector<cases::RunResult> runs;
-  for (const auto& name : engines) {
-    const auto engine = reference::make_engine(name);
-    if (!engine) throw std::invalid_argument("unknown engine '" + name + "'");
-    reference::RunOptions o = options;
-    o.work_dir = options.work_dir / name;
-    runs.push_back(reference::run_engine(*engine, scene, o));
-  }
+  for (const auto& name : engines) runs.push_back(run_one(scene, name, context));
   return comparison::evaluate_runs(scene, std::move(runs));
+}
+
+std::optional<std::filesystem::path> default_baselines() {
+  try {
+    return cases::resolve_suite("baselines");
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace app

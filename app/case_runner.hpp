@@ -2,17 +2,32 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "compare/case_outcome.hpp"
 #include "reference/engine.hpp"
+#include "store/result_cache.hpp"
 
 namespace app {
 
-/// Runs `scene` on each named engine (in order) and evaluates metrics and comparisons.
-/// Unknown engine names must have been rejected by the caller.
+/// How engines are run for one command.
+struct RunContext {
+  reference::RunOptions options;
+  std::optional<store::ResultCache> cache;        ///< reference-code results; none: always run
+  bool refresh = false;                           ///< run reference codes even on a cache hit
+  std::optional<std::filesystem::path> baselines; ///< directory of committed baselines
+};
+
+/// Runs `scene` on each named engine (in order) and evaluates metrics and comparisons. Reference
+/// codes (LAMMPS, YADE) are read from the cache when their result for this scene and version is
+/// there, stored after a successful run, and replaced by the committed baseline (with a warning)
+/// when not installed. Unknown engine names must have been rejected by the caller.
 comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<std::string>& engines,
-                                 const reference::RunOptions& options);
+                                 const RunContext& context);
+
+/// The committed baselines directory next to the canonical suite, if there is one.
+std::optional<std::filesystem::path> default_baselines();
 
 }  // namespace app

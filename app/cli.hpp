@@ -27,8 +27,14 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
 int command_suite(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb study`.
 int command_study(const std::vector<std::string>& args, const Invocation& inv);
+/// `demwb gate`.
+int command_gate(const std::vector<std::string>& args, const Invocation& inv);
+/// `demwb refresh`.
+int command_refresh(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb engines`.
 int command_engines(const std::vector<std::string>& args, const Invocation& inv);
+/// `demwb convert`: thesis appendix E parameter conversion.
+int command_convert(const std::vector<std::string>& args, const Invocation& inv);
 
 /// Splits "a,b" and repeated values into one list of names.
 std::vector<std::string> split_names(const std::vector<std::string>& values);

@@ -81,8 +81,8 @@ int command_run(const std::vector<std::string>& args, const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()("engine,e", po::value<std::vector<std::string>>()->composing(),
                      "engine to run (repeatable or comma-separated; default inhouse)")(
-      "output,o", po::value<std::string>(), "output directory (default out/run/<case>)")(
-      "timeout", po::value<double>()->default_value(600.0), "seconds before an external engine is killed");
+      "output,o", po::value<std::string>(), "output directory (default out/run/<case>)");
+  add_run_options(opts);
   const auto vm = parse_command(args, "usage: demwb run CASE.toml [--engine E ...] [-o DIR]", opts, {"case"});
   if (!vm) return kExitOk;
   const cases::Scene scene = load((*vm)["case"].as<std::string>());
@@ -93,7 +93,7 @@ int command_run(const std::vector<std::string>& args, const Invocation& inv) {
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::path("out/run") / scene.name;
   comparison::CaseOutcome outcome =
-      run_case(scene, engines, reference::RunOptions{out / "work", (*vm)["timeout"].as<double>()});
+      run_case(scene, engines, run_context(*vm, out / "work"));
   if (std::find(engines.begin(), engines.end(), scene.compare.reference) == engines.end()) {
     outcome.comparisons.clear();  // the reference did not run: metrics only
   }
@@ -109,8 +109,8 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
   po::options_description opts("options");
   opts.add_options()("engines,e", po::value<std::vector<std::string>>()->composing(),
                      "engines to run (comma-separated or repeated; default: the case's compare.engines)")(
-      "output,o", po::value<std::string>(), "also write results, traces and report.md here")(
-      "timeout", po::value<double>()->default_value(600.0), "seconds before an external engine is killed");
+      "output,o", po::value<std::string>(), "also write results, traces and report.md here");
+  add_run_options(opts);
   const auto vm = parse_command(args, "usage: demwb compare CASE.toml [--engines E,F] [-o DIR]", opts, {"case"});
   if (!vm) return kExitOk;
   const cases::Scene scene = load((*vm)["case"].as<std::string>());
@@ -124,7 +124,7 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::temp_directory_path() / "demwb-compare";
   const comparison::CaseOutcome outcome =
-      run_case(scene, engines, reference::RunOptions{out / "work", (*vm)["timeout"].as<double>()});
+      run_case(scene, engines, run_context(*vm, out / "work"));
   if (vm->count("output") != 0) {
     reports::write_case_outputs(outcome, out, reports::reproduce_command(inv.argc, inv.argv));
   }

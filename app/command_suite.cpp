@@ -17,6 +17,7 @@
 #include "cases/case_loader.hpp"
 #include "reports/case_outputs.hpp"
 #include "reports/case_report.hpp"
+#include "reports/junit.hpp"
 #include "reports/markdown.hpp"
 #include "reports/results_json.hpp"
 #include "support/text_file.hpp"
@@ -35,13 +36,13 @@ struct SuiteEntry {
 };
 
 SuiteEntry run_entry(const std::filesystem::path& file, const std::filesystem::path& out,
-                     double timeout) {
+                     RunContext ctx) {
   SuiteEntry e{file, std::nullopt, "", 0.0};
   const auto start = std::chrono::steady_clock::now();
   try {
     const cases::Scene scene = cases::load_case(file);
-    e.outcome = run_case(scene, scene.compare.engines,
-                         reference::RunOptions{out / scene.name / "work", timeout});
+    ctx.options.work_dir = out / scene.name / "work";
+    e.outcome = run_case(scene, scene.compare.engines, ctx);
   } catch (const std::exception& ex) {
     e.load_error = ex.what();
   }
@@ -84,8 +85,8 @@ std::string summary_table(const std::vector<SuiteEntry>& entries) {
 int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()("output,o", po::value<std::string>(), "output directory (default out/<suite>)")(
-      "jobs,j", po::value<unsigned>()->default_value(1), "cases run concurrently")(
-      "timeout", po::value<double>()->default_value(600.0), "seconds before an external engine is killed");
+      "jobs,j", po::value<unsigned>()->default_value(1), "cases run concurrently");
+  add_run_options(opts);
   const auto vm = parse_command(args, "usage: demwb suite canonical|DIR [-j N] [-o DIR]", opts, {"suite"});
   if (!vm) return kExitOk;
   const std::string suite_name = (*vm)["suite"].as<std::string>();
@@ -94,7 +95,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::path("out") / dir.filename();
   const unsigned jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
-  const double timeout = (*vm)["timeout"].as<double>();
+  const RunContext context = run_context(*vm, out);
   const auto files = cases::case_files(dir);
   if (files.empty()) throw std::runtime_error("suite " + dir.string() + " holds no *.toml case");
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
@@ -115,7 +116,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   std::vector<std::size_t> slot_of;
   while (done < files.size()) {
     while (running.size() < jobs && next < files.size()) {
-      running.push_back(std::async(std::launch::async, run_entry, files[next], out, timeout));
+      running.push_back(std::async(std::launch::async, run_entry, files[next], out, context));
       slot_of.push_back(next++);
     }
     for (std::size_t k = 0; k < running.size(); ++k) {
@@ -151,6 +152,16 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   }
   all["status"] = std::string(comparison::to_string(worst));
   support::write_file(out / "report.md", md);
+  std::vector<const comparison::CaseOutcome*> outcomes;
+  std::vector<std::pair<std::string, std::string>> broken;
+  for (const auto& e : entries) {
+    if (e.outcome) {
+      outcomes.push_back(&*e.outcome);
+    } else {
+      broken.emplace_back(e.file.filename().string(), e.load_error);
+    }
+  }
+  support::write_file(out / "junit.xml", reports::junit_xml(outcomes, suite_name, broken));
   support::write_file(out / "results.json", all.dump(2) + "\n");
   std::cout << summary_table(entries) << "\nwrote " << (out / "report.md").string() << "\n";
   return comparison::is_green(worst) ? kExitOk : kExitFailed;

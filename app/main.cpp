@@ -18,7 +18,10 @@ commands:
   compare CASE.toml [--engines E,F] [-o DIR]  run and print the discrepancy table
   suite canonical|DIR [-j N] [-o DIR]         every case of a suite, one report
   study integrators [-o DIR]                  the integrator-accuracy study (thesis ch. 4)
+  gate DIR|SUITE [--baseline F] [--allow-missing]  exit 0 only when every comparison is green
+  refresh [SUITE|CASE] [--write-baselines]    re-run reference codes into the cache/baselines
   engines                                     installed engines and their versions
+  convert linear-to-jkr|jkr-to-linear ...     appendix E: linear cohesion <-> JKR
 
 options:
   -h, --help      help (also after a command: demwb run --help)
@@ -47,6 +50,9 @@ int main(int argc, char** argv) {
     if (args[0] == "suite") return app::command_suite(rest, inv);
     if (args[0] == "study") return app::command_study(rest, inv);
     if (args[0] == "engines") return app::command_engines(rest, inv);
+    if (args[0] == "gate") return app::command_gate(rest, inv);
+    if (args[0] == "refresh") return app::command_refresh(rest, inv);
+    if (args[0] == "convert") return app::command_convert(rest, inv);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "demwb %s: error: %s\n", args[0].c_str(), e.what());
     return app::kExitUsage;

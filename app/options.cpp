@@ -7,6 +7,15 @@ namespace app {
 
 namespace po = boost::program_options;
 
+namespace {
+
+/// A positional name without its optional marker '?'.
+std::string optional_name(const std::string& name) {
+  return name.ends_with('?') ? name.substr(0, name.size() - 1) : name;
+}
+
+}  // namespace
+
 std::optional<po::variables_map> parse_command(const std::vector<std::string>& args,
                                                const std::string& usage,
                                                const po::options_description& visible,
@@ -16,7 +25,8 @@ std::optional<po::variables_map> parse_command(const std::vector<std::string>& a
   all.add_options()("help,h", "show this help");
   po::options_description hidden;
   po::positional_options_description pos;
-  for (const auto& name : positional) {
+  for (const auto& given : positional) {
+    const std::string name = optional_name(given);
     hidden.add_options()(name.c_str(), po::value<std::string>());
     pos.add(name.c_str(), 1);
   }
@@ -29,9 +39,34 @@ std::optional<po::variables_map> parse_command(const std::vector<std::string>& a
   }
   po::notify(vm);
   for (const auto& name : positional) {
+    if (name.ends_with('?')) continue;
     if (vm.count(name) == 0) throw po::error("missing argument " + name + "\n" + usage);
   }
   return vm;
+}
+
+void add_run_options(po::options_description& opts) {
+  opts.add_options()("timeout", po::value<double>()->default_value(600.0),
+                     "seconds before an external engine is killed")(
+      "cache", po::value<std::string>(),
+      "reference-result cache directory (default $DEMWB_CACHE_DIR, else ~/.cache/demwb)")(
+      "no-cache", "run reference codes every time and store nothing")(
+      "baselines", po::value<std::string>(),
+      "committed baselines used when a reference code is not installed (default cases/baselines)");
+}
+
+RunContext run_context(const po::variables_map& vm, const std::filesystem::path& work_dir) {
+  RunContext ctx;
+  ctx.options.work_dir = work_dir;
+  ctx.options.timeout_s = vm["timeout"].as<double>();
+  if (vm.count("no-cache") == 0) {
+    ctx.cache.emplace(vm.count("cache") != 0 ? std::filesystem::path(vm["cache"].as<std::string>())
+                                             : store::ResultCache::default_dir());
+  }
+  ctx.baselines = vm.count("baselines") != 0
+                      ? std::optional<std::filesystem::path>(vm["baselines"].as<std::string>())
+                      : default_baselines();
+  return ctx;
 }
 
 }  // namespace app

@@ -7,10 +7,19 @@
 
 #include <boost/program_options.hpp>
 
+#include "app/case_runner.hpp"
+
 namespace app {
 
+/// Adds the options every running command shares: --timeout, --cache, --no-cache, --baselines.
+void add_run_options(boost::program_options::options_description& opts);
+
+/// The run context those options describe; `work_dir` holds the engines' scratch files.
+RunContext run_context(const boost::program_options::variables_map& vm,
+                       const std::filesystem::path& work_dir);
+
 /// Parses `args` against `visible` options plus positional arguments named in `positional`
-/// (in order; the last may repeat when `last_repeats`). Prints help for -h/--help and returns
+/// (in order; a name ending in '?' is optional and stored without the '?'). Prints help for -h/--help and returns
 /// empty in that case. Throws boost::program_options::error on bad usage.
 std::optional<boost::program_options::variables_map> parse_command(
     const std::vector<std::string>& args, const std::string& usage,

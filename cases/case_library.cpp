@@ -15,6 +15,9 @@ std::filesystem::path resolve_suite(const std::string& name_or_dir) {
   std::vector<std::filesystem::path> roots;
   if (const char* env = std::getenv("DEMWB_CASES_DIR")) roots.emplace_back(env);
   roots.emplace_back(support::kSourceCasesDir);
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) roots.push_back(exe.parent_path().parent_path() / "share" / "demwb" / "cases");
   roots.emplace_back(support::kInstalledCasesDir);
   std::string looked;
   for (const auto& root : roots) {

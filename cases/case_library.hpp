@@ -8,7 +8,8 @@
 namespace cases {
 
 /// Directory of a named suite ("canonical") or the path itself when it is a directory. Named
-/// suites are looked up in $DEMWB_CASES_DIR, the source tree, then the installed tree; throws
+/// suites are looked up in $DEMWB_CASES_DIR, the source tree, <program dir>/../share/demwb/cases,
+/// then the configured install prefix; throws
 /// std::runtime_error listing where it looked.
 std::filesystem::path resolve_suite(const std::string& name_or_dir);
 

@@ -20,6 +20,26 @@ constexpr std::array kMetrics{
     MetricInfo{"amplitude_error", "-",
                "εx_amp, thesis eq 4.8: |max x_num − max x_analytic| over the same samples, "
                "divided by the analytic maximum overlap", true, true},
+    MetricInfo{"tangential_restitution", "-",
+               "−u_t,after·t̂/|u_t,before| of the contact-point tangential velocity (branch vectors at "
+               "touch), first contact of the compared contact", true, true},
+    MetricInfo{"rebound_angle", "deg",
+               "angle between the relative velocity after the first contact and the contact normal", true, true},
+    MetricInfo{"spin_after", "rad/s",
+               "subject's angular velocity after the first contact about t̂ × n_in (t̂: slip direction "
+               "before, n_in: into the partner)", true, true},
+    MetricInfo{"deceleration", "m/s²",
+               "minus the least-squares slope of the subject's tangential speed while the compared "
+               "contact slides (slip > 1 % of its initial value)", true, true},
+    MetricInfo{"pulloff_force", "N",
+               "largest tension −F_n of the compared contact over the trace (parabolic refinement)", true, false},
+    MetricInfo{"rupture_separation", "m",
+               "separation −δ at which the compared contact last breaks in tension (fold vertex or midpoint of the bracketing samples)", true, false},
+    MetricInfo{"force_at_rupture", "N",
+               "normal force of the compared contact just before it last breaks (negative: tension)", true, false},
+    MetricInfo{"separation_work", "J",
+               "work ∫F dℓ of the compared contact's force from its deepest overlap to rupture (appendix E)", true, false},
+    MetricInfo{"equilibrium_overlap", "m", "overlap of the compared contact at the last sample", true, false},
 };
 
 constexpr std::array<std::string_view, 4> kEngines{"inhouse", "analytic", "lammps", "yade"};
@@ -45,5 +65,7 @@ std::span<const std::string_view> engine_catalogue() noexcept { return kEngines;
 bool is_known_engine(std::string_view name) noexcept {
   return std::find(kEngines.begin(), kEngines.end(), name) != kEngines.end();
 }
+
+bool is_reference_code(std::string_view name) noexcept { return name == "lammps" || name == "yade"; }
 
 }  // namespace cases

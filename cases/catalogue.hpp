@@ -26,5 +26,7 @@ const MetricInfo* find_metric(std::string_view name) noexcept;
 std::span<const std::string_view> engine_catalogue() noexcept;
 /// True when `name` is in the engine catalogue.
 bool is_known_engine(std::string_view name) noexcept;
+/// True for the external reference codes (LAMMPS, YADE), whose results are cached and baselined.
+bool is_reference_code(std::string_view name) noexcept;
 
 }  // namespace cases

@@ -37,6 +37,7 @@ struct RunResult {
   RunStatus status = RunStatus::error;
   std::string reason;                          ///< why error / missing / n/a
   std::string version;
+  std::string source = "run";                  ///< "run", "cache" or "baseline"
   double wall_time_s = 0.0;
   std::string log_tail;                        ///< last lines of the engine's log on error
   Trace trace;

@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "compare/metrics_cohesion.hpp"
+#include "compare/metrics_motion.hpp"
 #include "compare/trace_analysis.hpp"
 
 namespace comparison {
@@ -276,6 +278,11 @@ double from_trace(const std::string& name, const cases::Scene& scene, const case
   if (name == "max_force") return max_of_pair_column(scene, trace, "fn");
   if (name == "max_position") return max_position(scene, trace);
   if (name == "amplitude_error") return amplitude_error(scene, trace, analytic);
+  if (name == "tangential_restitution") return motion::tangential_restitution(scene, trace).value_or_throw<MetricProblem>();
+  if (name == "rebound_angle") return motion::rebound_angle(scene, trace).value_or_throw<MetricProblem>();
+  if (name == "spin_after") return motion::spin_after(scene, trace).value_or_throw<MetricProblem>();
+  if (name == "deceleration") return motion::deceleration(scene, trace).value_or_throw<MetricProblem>();
+  if (const auto c = cohesion_metric(name, scene, trace)) return c->value ? *c->value : throw MetricProblem(c->problem);
   throw MetricProblem(fmt::format("no implementation of metric '{}'", name));
 }
 

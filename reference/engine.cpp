@@ -9,6 +9,8 @@
 
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
+#include "reference/lammps/lammps_engine.hpp"
+#include "reference/yade/yade_engine.hpp"
 
 namespace reference {
 
@@ -24,6 +26,8 @@ std::string Support::explain() const {
 std::unique_ptr<Engine> make_engine(std::string_view name) {
   if (name == "inhouse") return std::make_unique<InhouseEngine>();
   if (name == "analytic") return std::make_unique<AnalyticEngine>();
+  if (name == "lammps") return std::make_unique<LammpsEngine>();
+  if (name == "yade") return std::make_unique<YadeEngine>();
   return nullptr;
 }
 

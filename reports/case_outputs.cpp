@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "reports/case_report.hpp"
+#include "reports/junit.hpp"
 #include "reports/results_json.hpp"
 #include "reports/snapshot_vtk.hpp"
 #include "reports/trace_csv.hpp"
@@ -42,6 +43,7 @@ void write_case_outputs(const comparison::CaseOutcome& outcome, const std::files
                         const std::string& command) {
   std::filesystem::create_directories(dir);
   support::write_file(dir / "results.json", results_json(outcome).dump(2) + "\n");
+  support::write_file(dir / "junit.xml", junit_xml({&outcome}, outcome.scene.name));
   for (const auto& run : outcome.runs) {
     if (run.status == cases::RunStatus::ok) {
       support::write_file(dir / ("trace_" + run.engine + ".csv"), trace_csv(run.trace));

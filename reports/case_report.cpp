@@ -58,10 +58,14 @@ std::string model_section(const cases::Scene& scene, int level) {
 
 std::string runs_section(const comparison::CaseOutcome& o, int level) {
   std::string md = heading(level, "Engines");
-  MarkdownTable t({"engine", "status", "version", "wall time (s)", "note"});
+  MarkdownTable t({"engine", "status", "version", "result", "wall time (s)", "note"});
   for (const auto& r : o.runs) {
-    t.add_row({r.engine, std::string(cases::to_string(r.status)), r.version,
-               fmt::format("{:.3f}", r.wall_time_s), r.reason});
+    const auto original = r.conventions.find("original wall time");
+    const std::string source = r.source == "cache" ? "cached" : r.source == "baseline" ? "committed baseline" : "ran";
+    t.add_row({r.engine, std::string(cases::to_string(r.status)), r.version, source,
+               fmt::format("{:.3f}{}", r.wall_time_s,
+                           original != r.conventions.end() ? " (ran in " + original->second + ")" : ""),
+               r.reason});
   }
   return md + t.render() + "\n";
 }

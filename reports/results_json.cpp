@@ -20,6 +20,7 @@ Json engine_entry(const cases::RunResult& run, const comparison::MetricSet& metr
   Json e;
   e["status"] = std::string(cases::to_string(run.status));
   e["version"] = run.version;
+  e["source"] = run.source;
   e["wall_time_s"] = number(run.wall_time_s);
   if (!run.reason.empty()) e["reason"] = run.reason;
   Json values = Json::object();

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Installs the Debian packages dem-workbench needs, when run as root; otherwise says exactly
-# which are missing and how to install them. Usage: scripts/setup.sh [--check]
+# which are missing and how to install them. The reference codes (LAMMPS, YADE) are included:
+# the comparisons and the tests labelled `reference` run the real binaries.
+# Usage: scripts/setup.sh [--check] [--core-only]
 set -euo pipefail
 
 packages=(
@@ -14,7 +16,21 @@ packages=(
   libfmt-dev                       # formatting
   libgtest-dev                     # GoogleTest
   gnuplot-nox                      # report plots
+  pandoc                           # checks that report.md renders
 )
+references=(
+  lammps                           # LAMMPS (GRANULAR), Debian 20220106
+  yade                             # YADE 2023.02a (driven as a Python module, no servers)
+)
+check_only=false
+for arg in "$@"; do
+  case "$arg" in
+    --check) check_only=true ;;
+    --core-only) references=() ;;
+    *) echo "setup: unknown option $arg" >&2; exit 2 ;;
+  esac
+done
+packages+=("${references[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
@@ -27,7 +43,7 @@ if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all ${#packages[@]} packages present"
   exit 0
 fi
-if [ "${1:-}" = "--check" ]; then
+if $check_only; then
   echo "setup: missing packages: ${missing[*]}"
   exit 1
 fi
@@ -39,5 +55,5 @@ fi
 echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
-apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+apt-get install -y -qq "${missing[@]}" >/dev/null
 echo "setup: done"

@@ -89,10 +89,10 @@ ProcessResult run_process(const ProcessSpec& spec) {
     ::close(report[0]);
     ::setpgid(0, 0);
     int err = 0;
-    if (!spec.working_directory.empty() && ::chdir(spec.working_directory.c_str()) != 0) {
+    // Output files first, so relative paths mean the caller's directory, not the child's.
+    if (!redirect(spec.stdout_file, STDOUT_FILENO) || !redirect(spec.stderr_file, STDERR_FILENO)) {
       err = errno;
-    } else if (!redirect(spec.stdout_file, STDOUT_FILENO) ||
-               !redirect(spec.stderr_file, STDERR_FILENO)) {
+    } else if (!spec.working_directory.empty() && ::chdir(spec.working_directory.c_str()) != 0) {
       err = errno;
     } else {
       const int devnull = ::open("/dev/null", O_RDONLY);

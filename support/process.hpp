@@ -13,7 +13,7 @@ namespace support {
 struct ProcessSpec {
   std::vector<std::string> argv;                 ///< program (searched in PATH) and arguments
   std::filesystem::path working_directory;       ///< empty: inherit
-  std::filesystem::path stdout_file;             ///< empty: /dev/null
+  std::filesystem::path stdout_file;             ///< empty: /dev/null; relative to the caller
   std::filesystem::path stderr_file;             ///< empty: /dev/null
   std::map<std::string, std::string> environment;  ///< added to (or replacing in) the parent's
   double timeout_s = 0.0;                        ///< > 0: kill the process group after this

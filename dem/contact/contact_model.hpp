@@ -8,23 +8,47 @@
 #include "dem/contact/contact_geometry.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/model_choice.hpp"
+#include "dem/contact/slots/cohesion_coulomb.hpp"
+#include "dem/contact/slots/cohesion_dmt.hpp"
+#include "dem/contact/slots/cohesion_jkr.hpp"
+#include "dem/contact/slots/cohesion_linear.hpp"
+#include "dem/contact/slots/damping_kuwabara_kono.hpp"
+#include "dem/contact/slots/damping_lammps_mass_velocity.hpp"
+#include "dem/contact/slots/damping_lammps_tsuji.hpp"
+#include "dem/contact/slots/damping_lammps_velocity.hpp"
+#include "dem/contact/slots/damping_lammps_viscoelastic.hpp"
 #include "dem/contact/slots/damping_restitution.hpp"
+#include "dem/contact/slots/damping_tsuji.hpp"
+#include "dem/contact/slots/damping_yade_mindlin.hpp"
+#include "dem/contact/slots/damping_yade_viscel.hpp"
 #include "dem/contact/slots/none.hpp"
+#include "dem/contact/slots/normal_hertz.hpp"
+#include "dem/contact/slots/normal_hysteretic.hpp"
 #include "dem/contact/slots/normal_linear.hpp"
+#include "dem/contact/slots/normal_potential.hpp"
 #include "dem/contact/slots/responses.hpp"
+#include "dem/contact/slots/rolling_constant_torque.hpp"
+#include "dem/contact/slots/rolling_spring_dashpot_slider.hpp"
+#include "dem/contact/slots/tangential_mindlin.hpp"
+#include "dem/contact/slots/tangential_spring_coulomb.hpp"
 
 namespace dem {
 
 /// Run-time choice of the normal sub-model (one alternative per registry row).
-using NormalModel = std::variant<LinearNormal>;
+using NormalModel = std::variant<LinearNormal, HertzNormal, HystereticNormal, PotentialNormal>;
 /// Run-time choice of the normal damping sub-model.
-using DampingModel = std::variant<NoDamping, RestitutionDamping>;
+using DampingModel =
+    std::variant<NoDamping, RestitutionDamping, TsujiDamping, KuwabaraKonoDamping,
+                 LammpsVelocityDamping, LammpsMassVelocityDamping, LammpsViscoelasticDamping,
+                 LammpsTsujiDamping, YadeViscElDamping, YadeMindlinDamping>;
 /// Run-time choice of the tangential sub-model.
-using TangentialModel = std::variant<NoTangential>;
+using TangentialModel =
+    std::variant<NoTangential, SpringCoulombTangential, MindlinTangential, Mindlin8GTangential>;
 /// Run-time choice of the cohesion sub-model.
-using CohesionModel = std::variant<NoCohesion>;
+using CohesionModel =
+    std::variant<NoCohesion, LinearCohesion, JkrCohesion, DmtCohesion, CoulombCohesion>;
 /// Run-time choice of the rolling-resistance sub-model.
-using RollingModel = std::variant<NoRolling>;
+using RollingModel = std::variant<NoRolling, ConstantTorqueRolling, SpringDashpotSliderRolling>;
 
 /// The contact law of one material pair: one sub-model per slot, each holding its mixed
 /// parameters, plus the model's policies (STYLE.md "a composition of named slots").
@@ -84,9 +108,11 @@ struct ContactOutcome {
   out.interacting = out.contact || elastic.active || cohesion.active;
   if (!out.interacting) return out;
 
-  const double eta =
-      out.contact ? std::visit([&](const auto& m) { return m.coefficient(g, elastic); }, law.damping)
-                  : 0.0;
+  // Two infinite masses (a fixed sphere driven against another, m* = ∞): a dashpot scaled by m*
+  // is undefined and could change no motion anyway, so such a contact reports no damping.
+  const double eta = out.contact && std::isfinite(g.reduced_mass)
+                         ? std::visit([&](const auto& m) { return m.coefficient(g, elastic); }, law.damping)
+                         : 0.0;
   double damping = -eta * g.normal_speed;
   if (law.policies.clamp_tensile && elastic.force + damping < 0.0) damping = -elastic.force;
   out.normal_force = elastic.force + damping + cohesion.force;

@@ -36,7 +36,8 @@ const std::string& keyword_of(const ModelChoice& choice, Slot slot) {
   return choice.normal;
 }
 
-/// Throws ModelError (key "model.<slot>") when a chosen keyword is not in the registry.
+/// Throws ModelError (key "model.<slot>") when a chosen keyword is not in the registry, or when
+/// two chosen sub-models cannot work together.
 void check_keywords(const ModelChoice& choice) {
   for (const Slot slot : all_slots()) {
     const std::string& keyword = keyword_of(choice, slot);
@@ -45,6 +46,12 @@ void check_keywords(const ModelChoice& choice) {
                        "unknown " + std::string(to_string(slot)) + " model '" + keyword +
                            "' (known: " + sub_model_keywords(slot) + ")");
     }
+  }
+  // JKR and DMT are adhesive corrections of Hertz contact mechanics (eq 3.34, PHYSICS.md §5).
+  if ((choice.cohesion == "jkr" || choice.cohesion == "dmt") && choice.normal != "hertz") {
+    throw ModelError("model.cohesion", "cohesion = '" + choice.cohesion +
+                                           "' extends Hertz contact mechanics and needs normal = "
+                                           "'hertz' (got '" + choice.normal + "')");
   }
 }
 

@@ -11,8 +11,10 @@ namespace dem {
 ContactForceField::ContactForceField(const ParticleProperties& props, const PairTable& table,
                                      ForceFieldSetup setup)
     : props_(props), table_(table), setup_(std::move(setup)), motion_of_(props.size(), -1) {
+  moving_.assign(props.size(), 0);
   for (std::size_t k = 0; k < setup_.motions.size(); ++k) {
     motion_of_[setup_.motions[k].particle] = static_cast<std::int32_t>(k);
+    moving_[setup_.motions[k].particle] = 1;
   }
   const auto n = static_cast<Eigen::Index>(props.size());
   committed_force_ = Vec3Array::Zero(3, n);
@@ -64,7 +66,7 @@ void ContactForceField::evaluate(const KinematicState& state, double elapsed, Ac
   static const ContactHistory kFresh{};
 
   // Sphere–sphere contacts: every pair within reach of its law.
-  for_each_candidate_pair(props_, state.position, [&](std::uint32_t i, std::uint32_t j) {
+  for_each_candidate_pair(props_, moving_, state.position, [&](std::uint32_t i, std::uint32_t j) {
     const PairLaw& law = table_.law(props_.material[i], props_.material[j]);
     const ContactGeometry g = pair_geometry(sphere(state, i), sphere(state, j));
     const std::uint64_t key = pair_key(i, j);

@@ -105,6 +105,7 @@ class ContactForceField final : public ForceEvaluator {
   const PairTable& table_;
   ForceFieldSetup setup_;
   std::vector<std::int32_t> motion_of_;  // particle → index into setup_.motions, or −1
+  std::vector<std::uint8_t> moving_;     // 1 for a fixed sphere under prescribed motion
   ContactHistoryTable history_;          // committed sphere–sphere history
   ContactHistoryTable next_history_;
   ContactHistoryTable wall_history_;     // committed sphere–wall history (key: particle, wall)

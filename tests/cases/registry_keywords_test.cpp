@@ -37,12 +37,11 @@ std::string all_properties() {
   return material;
 }
 
-/// A case choosing `keyword` for `slot` (and the first normal model when `slot` is another).
+/// A case choosing `keyword` for `slot` (and `hertz` as the normal model when `slot` is another:
+/// every other sub-model works with it, and JKR and DMT need it).
 std::string case_with(dem::Slot slot, std::string_view keyword) {
   std::string model = fmt::format("{} = \"{}\"\n", dem::to_string(slot), keyword);
-  if (slot != dem::Slot::normal) {
-    model += fmt::format("normal = \"{}\"\n", dem::sub_models(dem::Slot::normal).front().keyword);
-  }
+  if (slot != dem::Slot::normal) model += "normal = \"hertz\"\n";
   return "[case]\nname = \"registry\"\n\n[model]\n" + model + "\n" + all_properties() +
          "\n[[particles]]\nradius = 0.01\nmaterial = \"a\"\nposition = [0.0, 0.0, 0.0]\n"
          "\n[integration]\nscheme = \"rk4\"\ntimestep = 1.0e-5\nduration = 1.0e-3\n";

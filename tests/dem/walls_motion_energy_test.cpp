@@ -51,7 +51,9 @@ TEST(PlaneWall, WatchedWallContactReportsOverlapAndForce) {
     const auto& o = sim.force_field().observations()[0];
     deepest = std::max(deepest, o.overlap);
     strongest = std::max(strongest, o.normal_force);
-    if (o.interacting) EXPECT_NEAR(o.normal_force, 1e5 * o.overlap, 1e-9);
+    if (o.interacting) {
+      EXPECT_NEAR(o.normal_force, 1e5 * o.overlap, 1e-9);
+    }
   }
   const double expected = 2.0 * std::sqrt(mover_mass() / 1e5);  // u √(m/k)
   EXPECT_NEAR(deepest, expected, 1e-3 * expected);

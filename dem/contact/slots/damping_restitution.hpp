@@ -22,7 +22,9 @@ struct RestitutionDamping {
   static constexpr std::string_view kLammps =
       "`damping velocity` with η computed per type pair (no restitution damping in this build)";
   static constexpr std::string_view kYade =
-      "FrictViscoMat(betan) + Law2_ScGeom_FrictViscoPhys_CundallStrackVisco";
+      "FrictViscoMat(betan = β/2) + Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys(kn, kRatio=0) + "
+      "Law2_ScGeom_FrictViscoPhys_CundallStrackVisco: η = 2 betan √(m* k) exact, unclamped, but the "
+      "dashpot sees α·u_n with α = (r_p + r_q)/(r_p + r_q − δ)";
 
   double restitution;  ///< ε ∈ (0, 1]
   double factor;       ///< β(ε) = η / √(m* k)

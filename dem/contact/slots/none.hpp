@@ -20,6 +20,10 @@ struct NoneModelInfo {
 /// Damping sub-model `none`: purely elastic normal contact.
 struct NoDamping : NoneModelInfo {
   static constexpr std::string_view kDescription = "no normal damping";
+  static constexpr std::string_view kLammps =
+      "`damping velocity` with η = 0 (never left to LAMMPS' default, viscoelastic)";
+  static constexpr std::string_view kYade =
+      "no dashpot: FrictMat + Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator(damping=0)";
   static NoDamping from_pair(const PairProperties&) { return {}; }
   [[nodiscard]] double coefficient(const ContactGeometry&, const NormalResponse&) const noexcept {
     return 0.0;
@@ -30,6 +34,7 @@ struct NoDamping : NoneModelInfo {
 struct NoTangential : NoneModelInfo {
   static constexpr std::string_view kDescription = "frictionless";
   static constexpr std::string_view kLammps = "tangential linear_nohistory 0 0";
+  static constexpr std::string_view kYade = "ks = 0 per material pair (MatchMaker), frictionAngle = 0";
   static NoTangential from_pair(const PairProperties&) { return {}; }
   [[nodiscard]] TangentialResponse evaluate(const ContactInput&, const TangentialInput&,
                                             ContactHistory&) const noexcept {

@@ -18,7 +18,8 @@ struct LinearNormal {
   static constexpr std::string_view kLammps =
       "pair granular `hooke k_e η` with an explicit pair_coeff per type pair";
   static constexpr std::string_view kYade =
-      "FrictMat + Ip2_FrictMat_FrictMat_FrictPhys(kn=k_e) + Law2_ScGeom_FrictPhys_CundallStrack";
+      "FrictMat + Ip2_FrictMat_FrictMat_FrictPhys(kn = k_e per material pair via MatchMaker) + "
+      "Law2_ScGeom_FrictPhys_CundallStrack (exact)";
 
   double stiffness;  ///< k_e [N/m]
 

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "dem/core/vector.hpp"
+
+namespace dem::laws {
+
+/// A stored tangential (or rolling) displacement ς carried into the current tangent plane with
+/// unit normal n: the part along n is removed and the rest rescaled to the old magnitude |ς|
+/// (LAMMPS pair granular history rule, Luding 2008 eq 17). For a normal that turned by θ this
+/// equals the rigid rotation of ς to O(θ²) and preserves |ς| exactly. A displacement parallel
+/// to n has no direction in the plane and becomes zero. Units of ς are kept.
+[[nodiscard]] inline Vec3 carry_into_tangent_plane(const Vec3& displacement,
+                                                   const Vec3& normal) noexcept {
+  const double along = displacement.dot(normal);
+  if (along == 0.0) return displacement;
+  const Vec3 projected = displacement - along * normal;
+  const double projected_norm = projected.norm();
+  if (!(projected_norm > 0.0)) return Vec3::Zero();
+  return projected * (displacement.norm() / projected_norm);
+}
+
+/// Result of a spring–dashpot–slider: force, stored displacement and the dissipated work.
+struct SpringSliderResult {
+  Vec3 force = Vec3::Zero();         ///< −k ς − γ v, or its Coulomb-capped value [N]
+  Vec3 displacement = Vec3::Zero();  ///< stored elastic displacement after truncation [m]
+  bool sliding = false;              ///< the cap was reached (the slider slipped)
+  double dissipated = 0.0;           ///< work dissipated over `elapsed` [J], ≥ 0
+};
+
+/// Linear spring in parallel with a dashpot, in series with a Coulomb slider (thesis eq
+/// 3.22–3.26; Cundall & Strack 1979). The stored displacement is ς = carried + v·elapsed
+/// (`carried` is the committed displacement already in the current tangent plane; nothing is
+/// accumulated in place) and the force on p is F = −k ς − γ v. When |F| > limit the force is
+/// scaled back to `limit` along its own direction and the stored displacement truncated so that
+/// the spring carries the capped force minus the unchanged dashpot part,
+/// ς_new = −(F_capped + γ v)/k (LAMMPS pair granular rule; with γ = 0 this is k|ς_new| = limit).
+/// When γ|v| > limit this leaves the spring pointing along the slip, as in LAMMPS.
+/// Dissipation over `elapsed`: stuck, the dashpot's γ|v|² elapsed; sliding, the work of the
+/// applied force −F·v elapsed minus the change of the spring energy ½k|ς|² (clamped at ≥ 0).
+/// stiffness k [N/m] ≥ 0 (k = 0 stores no displacement), damping γ [kg/s] ≥ 0, limit [N] ≥ 0,
+/// displacements [m], v the relative velocity of the contact [m/s], elapsed [s].
+[[nodiscard]] inline SpringSliderResult spring_slider(double stiffness, double damping,
+                                                      double limit, const Vec3& carried,
+                                                      const Vec3& velocity,
+                                                      double elapsed) noexcept {
+  SpringSliderResult r;
+  const Vec3 start = stiffness > 0.0 ? carried : Vec3::Zero();
+  r.displacement = stiffness > 0.0 ? Vec3(carried + velocity * elapsed) : Vec3::Zero();
+  r.force = -stiffness * r.displacement - damping * velocity;
+  const double magnitude = r.force.norm();
+  const double cap = std::max(limit, 0.0);
+  if (!(magnitude > cap)) {
+    r.dissipated = damping * velocity.squaredNorm() * elapsed;
+    return r;
+  }
+  r.sliding = true;
+  r.force *= cap / magnitude;
+  if (stiffness > 0.0) r.displacement = -(r.force + damping * velocity) / stiffness;
+  const double work = -r.force.dot(velocity) * elapsed;
+  const double stored = 0.5 * stiffness * (r.displacement.squaredNorm() - start.squaredNorm());
+  r.dissipated = std::max(work - stored, 0.0);
+  return r;
+}
+
+/// Energy of a linear spring of stiffness k [N/m] stretched by ς [m]: ½ k |ς|² [J].
+[[nodiscard]] inline double spring_energy(double stiffness, const Vec3& displacement) noexcept {
+  return 0.5 * stiffness * displacement.squaredNorm();
+}
+
+}  // namespace dem::laws

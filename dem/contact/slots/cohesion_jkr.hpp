@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <string_view>
+
+#include "dem/contact/laws/jkr.hpp"
+#include "dem/contact/slots/property_access.hpp"
+#include "dem/contact/slots/responses.hpp"
+
+namespace dem {
+
+/// Overlap below which an attached JKR contact breaks, per policy (PHYSICS.md §5): δ_c of the
+/// displacement-controlled rupture, or δ_f of the load-controlled pull-off (as LAMMPS) [m].
+[[nodiscard]] inline double jkr_break_overlap(const laws::JkrParameters& p,
+                                              JkrRupture policy) noexcept {
+  return policy == JkrRupture::load ? laws::jkr_pulloff_overlap(p) : laws::jkr_rupture_overlap(p);
+}
+
+/// True when a JKR contact that was `attached` at the last commit is attached at overlap δ:
+/// it forms when δ reaches 0 and, once formed, holds down to δ_c (`displacement`, inclusive) or
+/// while δ > δ_f (`load`, as LAMMPS' r < r_p + r_q − δ_f).
+[[nodiscard]] inline bool jkr_attached(bool attached, double overlap, const laws::JkrParameters& p,
+                                       JkrRupture policy) noexcept {
+  if (overlap >= 0.0) return true;
+  if (!attached) return false;
+  const double limit = jkr_break_overlap(p, policy);
+  return policy == JkrRupture::load ? overlap > limit : overlap >= limit;
+}
+
+/// Cohesion sub-model `jkr` (thesis eq 3.34–3.35, PHYSICS.md §5). The JKR force *replaces* the
+/// normal force: this slot returns F_JKR(δ) minus the elastic force the normal slot already
+/// gave (Hertz, so normal = "hertz" is required for a physically consistent damping and energy
+/// split), so the elastic + cohesive sum is exactly F_JKR, and likewise for the energy. The
+/// contact radius a(δ) is solved on the stable branch. Hysteresis per pair
+/// (ContactHistory::attached): no force on approach until δ reaches 0, then the force jumps to
+/// the JKR value −8/9 F_po; the neck holds into δ < 0 until the rupture set by
+/// ContactPolicies::jkr_rupture (δ_c by default, δ_f for `load`). An attached neck is a contact
+/// (damping and friction act on it).
+struct JkrCohesion {
+  static constexpr std::string_view kKeyword = "jkr";
+  static constexpr std::string_view kDescription =
+      "JKR adhesion, F = 4πa²(aE*/(3πR*) − √(γE*/(πa))) with hysteresis (eq 3.34–3.35); needs "
+      "normal = 'hertz'";
+  static constexpr std::array<std::string_view, 2> kProperties{"effective_modulus",
+                                                               "surface_energy"};
+  static constexpr std::string_view kLammps =
+      "pair granular `jkr E η ν γ` with E = 2(1−ν²)E* per pair_coeff and `tangential "
+      "linear_history 0 0 0` at least (linear_nohistory crashes); breaks at δ_f: jkr_rupture = "
+      "'load' reproduces it";
+  static constexpr std::string_view kYade = "no JKR law in YADE";
+
+  double modulus;         ///< E* [Pa]
+  double surface_energy;  ///< γ per surface [J/m²]
+
+  /// Sub-model for one material pair.
+  static JkrCohesion from_pair(const PairProperties& pair) {
+    return {required_property(pair, &PairProperties::effective_modulus, "effective_modulus",
+                              "cohesion = 'jkr' (from youngs_modulus and poisson_ratio)"),
+            required_property(pair, &PairProperties::surface_energy, "surface_energy",
+                              "cohesion = 'jkr'")};
+  }
+  /// The JKR constants of a contact of reduced radius R*.
+  [[nodiscard]] laws::JkrParameters parameters(double reduced_radius) const noexcept {
+    return {modulus, reduced_radius, surface_energy};
+  }
+  /// F_JKR − F_elastic while attached; updates `next.attached`.
+  [[nodiscard]] CohesionResponse evaluate(const ContactInput& in, const NormalResponse& elastic,
+                                          ContactHistory& next) const noexcept {
+    const laws::JkrParameters p = parameters(in.g.reduced_radius);
+    const double overlap = in.g.overlap;
+    next.attached = jkr_attached(in.committed.attached, overlap, p, in.policies.jkr_rupture);
+    if (!next.attached) return {};
+    const double a = laws::jkr_contact_radius(overlap, p);
+    return {laws::jkr_force(a, p) - elastic.force, laws::jkr_energy(a, p) - elastic.energy, true,
+            true, laws::jkr_pulloff_force(p)};
+  }
+  /// Reaches |δ_c| beyond touching (δ_f < δ_c in magnitude, so this covers both policies).
+  [[nodiscard]] double range(const PairExtent& e) const noexcept {
+    return e.contact_distance - laws::jkr_rupture_overlap(parameters(e.reduced_radius));
+  }
+};
+
+}  // namespace dem

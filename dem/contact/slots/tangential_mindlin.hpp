@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "dem/contact/laws/mindlin_stiffness.hpp"
+#include "dem/contact/slots/tangential_spring_coulomb.hpp"
+
+namespace dem {
+
+/// Mixed parameters of a Mindlin tangential sub-model.
+struct MindlinParameters {
+  double shear_modulus;  ///< G* [Pa] (eq 3.25)
+  double friction;       ///< μ [-]
+  double damping_ratio;  ///< η_t / η_n [-]
+
+  /// Parameters for one material pair; `who` names the sub-model in errors.
+  static MindlinParameters from_pair(const PairProperties& pair, std::string_view who) {
+    return {required_property(pair, &PairProperties::effective_shear_modulus,
+                              "effective_shear_modulus", who),
+            required_property(pair, &PairProperties::friction, kFrictionKey, who),
+            required_property(pair, &PairProperties::tangential_damping_ratio,
+                              kTangentialDampingKey, who)};
+  }
+};
+
+/// Tangential sub-model `mindlin`: the spring–Coulomb law with the thesis' Mindlin stiffness
+/// k_f = 16/3 G* √(R* δ) (eq 3.25). The stored slip is a displacement and the force is
+/// −k_f(δ) ς at the current overlap (LAMMPS `mindlin`, not `mindlin_rescale`): the spring
+/// force follows k_f when δ changes at constant slip.
+struct MindlinTangential {
+  static constexpr std::string_view kKeyword = "mindlin";
+  static constexpr std::string_view kDescription =
+      "spring_coulomb with k_f = 16/3 G* √(R* δ) (eq 3.25), displacement history (as LAMMPS "
+      "`mindlin`, no unloading rescale)";
+  static constexpr std::array<std::string_view, 3> kProperties{"effective_shear_modulus", kFrictionKey,
+                                                               kTangentialDampingKey};
+  static constexpr std::string_view kLammps =
+      "`tangential mindlin k_t x_γt μ` with k_t = 16/3 G* passed explicitly (LAMMPS' NULL means 8 G*)";
+  static constexpr std::string_view kYade =
+      "none: YADE's Mindlin uses 8 G* and an incremental force history (use mindlin_8g)";
+
+  MindlinParameters p;
+
+  /// Sub-model for one material pair.
+  static MindlinTangential from_pair(const PairProperties& pair) {
+    return {MindlinParameters::from_pair(pair, "tangential = 'mindlin'")};
+  }
+  /// Tangential force on p; updates next.tangential_slip.
+  [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
+                                            ContactHistory& next) const noexcept {
+    const double k = laws::mindlin_thesis_stiffness(p.shear_modulus, in.g.reduced_radius, in.g.overlap);
+    return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
+  }
+};
+
+/// Tangential sub-model `mindlin_8g`: the spring–Coulomb law with Mindlin's initial stiffness
+/// k_t = 8 G* √(R* δ), the form LAMMPS `mindlin` and YADE Hertz–Mindlin use (matched runs).
+struct Mindlin8GTangential {
+  static constexpr std::string_view kKeyword = "mindlin_8g";
+  static constexpr std::string_view kDescription =
+      "spring_coulomb with k_t = 8 G* √(R* δ) (Mindlin; LAMMPS `mindlin`), displacement history";
+  static constexpr std::array<std::string_view, 3> kProperties{"effective_shear_modulus", kFrictionKey,
+                                                               kTangentialDampingKey};
+  static constexpr std::string_view kLammps =
+      "`tangential mindlin NULL x_γt μ` for pairs; walls need k_t = 8 G* explicitly (NULL is wrong "
+      "for fix wall/gran in this build)";
+  static constexpr std::string_view kYade =
+      "Ip2_FrictMat_FrictMat_MindlinPhys + Law2_ScGeom_MindlinPhys_Mindlin (incremental force "
+      "history: differs while δ changes at constant slip)";
+
+  MindlinParameters p;
+
+  /// Sub-model for one material pair.
+  static Mindlin8GTangential from_pair(const PairProperties& pair) {
+    return {MindlinParameters::from_pair(pair, "tangential = 'mindlin_8g'")};
+  }
+  /// Tangential force on p; updates next.tangential_slip.
+  [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
+                                            ContactHistory& next) const noexcept {
+    const double k = laws::mindlin_stiffness(p.shear_modulus, in.g.reduced_radius, in.g.overlap);
+    return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
+  }
+};
+
+}  // namespace dem

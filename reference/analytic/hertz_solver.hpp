@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "reference/analytic/solver.hpp"
+
+namespace reference::analytic {
+
+/// Head-on Hertz collisions of two bodies (thesis eq 3.12–3.14, PHYSICS.md §3): one mobile
+/// sphere against a fixed sphere or a plane wall at rest, or two mobile spheres. Elastic
+/// contacts use the closed form (HertzElasticContact); damped ones (any damping sub-model, with
+/// or without clamp_tensile) a Dormand–Prince integration to 1e-12 (solve_normal_contact).
+class HertzSolver final : public Solver {
+ public:
+  [[nodiscard]] std::string_view name() const noexcept override { return "Hertz two-body contact"; }
+  [[nodiscard]] std::vector<std::string> unsupported_reasons(const cases::Scene& scene) const override;
+  [[nodiscard]] cases::RunResult run(const cases::Scene& scene) const override;
+};
+
+}  // namespace reference::analytic

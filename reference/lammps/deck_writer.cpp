@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+#include "reference/lammps/deck_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "dem/contact/pair_table.hpp"
+#include "reference/lammps/atom_types.hpp"
+#include "reference/lammps/pair_coeff_mapping.hpp"
+#include "reference/lammps/simulation_box.hpp"
+#include "reference/lammps/snapshots.hpp"
+#include "reference/lammps/trace_columns.hpp"
+
+namespace reference::lammps {
+namespace {
+
+/// A number written so that LAMMPS reads back the same double.
+std::string num(double v) { return fmt::format("{:.17g}", v); }
+
+/// Appends one deck line: a command padded to 16 columns, then its arguments.
+void line(std::string& deck, std::string_view command, std::string_view args) {
+  deck += fmt::format("{:<15} {}\n", command, args);
+}
+
+/// Appends a whole command ("name args") laid out like line().
+void command_line(std::string& deck, std::string_view command) {
+  const auto space = command.find(' ');
+  line(deck, command.substr(0, space),
+       space == std::string_view::npos ? std::string_view{} : command.substr(space + 1));
+}
+
+/// LAMMPS types (1-based) of the fixed or mobile classes, space-separated.
+std::string types_where(const AtomTypes& types, bool fixed) {
+  std::string out;
+  for (std::size_t t = 0; t < types.types.size(); ++t) {
+    if (types.types[t].fixed == fixed) out += fmt::format("{}{}", out.empty() ? "" : " ", t + 1);
+  }
+  return out;
+}
+
+/// `text` with every non-ASCII byte replaced by '?': LAMMPS 2021 warns about UTF-8 input.
+std::string ascii(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) {
+    if (static_cast<unsigned char>(c) > 0x7f) c = '?';
+  }
+  return out;
+}
+
+/// One-line description of an atom type for comments.
+std::string describe(const cases::Scene& scene, const AtomType& t) {
+  return fmt::format("material '{}', r = {} m, {}, m = {} kg",
+                     ascii(scene.materials.at(t.material).name), num(t.radius),
+                     t.fixed ? "fixed" : "mobile", num(t.mass));
+}
+
+/// Units, atom style, boundaries and communication settings.
+void write_header(std::string& deck, const cases::Scene& scene, const DeckSettings& s) {
+  deck += fmt::format("# dem-workbench LAMMPS deck for case '{}' (generated, do not edit)\n",
+                      ascii(scene.name));
+  deck += fmt::format("# {} steps of {} s; written for LAMMPS 29 Sep 2021 (pair_style granular)\n",
+                      s.steps, num(s.timestep));
+  line(deck, "units", "si");
+  line(deck, "atom_style", "sphere");
+  line(deck, "atom_modify", "map array sort 0 0.0  # x[i] in variables; atoms stay in id order");
+  line(deck, "dimension", "3");
+  line(deck, "boundary", "f f f");
+  line(deck, "newton", "off");
+  line(deck, "comm_modify", "vel yes  # granular pairs need ghost velocities");
+}
+
+/// Box, atom types, atoms with diameter, density, velocities; mobile and fixed groups.
+void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
+                 double duration) {
+  const Box box = simulation_box(scene, duration);
+  deck += "# box: the bodies' bounding box widened by 2 v_max T + |g| T^2 + 2 r_max per side\n";
+  line(deck, "region", fmt::format("tr_box block {} {} {} {} {} {} units box", num(box.low[0]),
+                                   num(box.high[0]), num(box.low[1]), num(box.high[1]),
+                                   num(box.low[2]), num(box.high[2])));
+  line(deck, "create_box", fmt::format("{} tr_box", types.types.size()));
+  deck += "# atom types, one per (material, radius, fixed) class:\n";
+  for (std::size_t t = 0; t < types.types.size(); ++t) {
+    deck += fmt::format("#   type {}: {}\n", t + 1, describe(scene, types.types[t]));
+  }
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    line(deck, "create_atoms",
+         fmt::format("{} single {} {} {} units box  # particle {} = atom {}",
+                     types.lammps_type(i), num(p.position[0]), num(p.position[1]),
+                     num(p.position[2]), i, i + 1));
+  }
+  for (std::size_t t = 0; t < types.types.size(); ++t) {
+    const AtomType& type = types.types[t];
+    line(deck, "set", fmt::format("type {} diameter {}  # before density: mass = 4/3 pi r^3 rho",
+                                  t + 1, num(2.0 * type.radius)));
+    line(deck, "set", fmt::format("type {} density {}", t + 1,
+                                  num(scene.materials.at(type.material).density)));
+  }
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    if (p.fixed) continue;
+    line(deck, "set",
+         fmt::format("atom {} vx {} vy {} vz {} omega {} {} {}", i + 1, num(p.velocity[0]),
+                     num(p.velocity[1]), num(p.velocity[2]), num(p.angular_velocity[0]),
+                     num(p.angular_velocity[1]), num(p.angular_velocity[2])));
+  }
+  if (const std::string mobile = types_where(types, false); !mobile.empty()) {
+    line(deck, "group", "tr_mobile type " + mobile);
+  }
+  if (const std::string fixed = types_where(types, true); !fixed.empty()) {
+    line(deck, "group", "tr_fixed type " + fixed);
+  }
+}
+
+/// `pair_style granular`, one `pair_coeff` per type pair, neighbour settings.
+void write_pairs(std::string& deck, const cases::Scene& scene, const AtomTypes& types) {
+  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+  line(deck, "pair_style", "granular");
+  deck += "# explicit pair_coeff for every type pair: LAMMPS' own i-j mixing is never used\n";
+  for (std::size_t a = 0; a < types.types.size(); ++a) {
+    for (std::size_t b = a; b < types.types.size(); ++b) {
+      const GranularCoeff coeff =
+          map_pair_law(table.law(types.types[a].material, types.types[b].material),
+                       types.reduced_mass(a, b));
+      deck += fmt::format("# types {}-{}: {}\n", a + 1, b + 1, ascii(coeff.damping_note));
+      line(deck, "pair_coeff",
+           fmt::format("{} {} {}", a + 1, b + 1, pair_coeff_arguments(coeff)));
+    }
+  }
+  line(deck, "neighbor", fmt::format("{} bin", num(neighbour_skin(scene))));
+  line(deck, "neigh_modify", "delay 0 every 1 check yes");
+}
+
+/// Pair-force store, gravity, integration, freeze (in that order) and the time step.
+void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
+                 const DeckSettings& s) {
+  const bool any_mobile = !types_where(types, false).empty();
+  const bool any_fixed = !types_where(types, true).empty();
+  deck += "# the pair forces alone, stored before gravity is added and frozen atoms are zeroed\n";
+  line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
+  const cases::Vector3& g = scene.gravity;
+  const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  if (any_mobile && g_norm > 0.0) {
+    line(deck, "fix", fmt::format("tr_gravity tr_mobile gravity {} vector {} {} {}", num(g_norm),
+                                  num(g[0]), num(g[1]), num(g[2])));
+  }
+  if (any_mobile) {
+    if (scene.integration.rotation) {
+      line(deck, "fix", "tr_integrate tr_mobile nve/sphere  # velocity Verlet of x and omega");
+    } else {
+      line(deck, "fix",
+           "tr_integrate tr_mobile nve  # velocity Verlet of x; omega held (rotation = false)");
+    }
+  }
+  if (any_fixed) {
+    line(deck, "fix", "tr_freeze tr_fixed freeze  # pairs then use m_eff = the mobile mass");
+  }
+  line(deck, "timestep", num(s.timestep));
+}
+
+/// The trace (`fix print`) and the snapshots (`dump custom` at the snapshot steps).
+void write_outputs(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
+                   const DeckSettings& s) {
+  const TracePrintPlan plan = trace_print_plan(scene, types);
+  for (const auto& command : plan.computes) command_line(deck, command);
+  deck += "# trace columns (each formula in full: a v_name reference would round to 15 digits)\n";
+  command_line(deck, fix_print_command(plan, scene.output.trace_every, s.trace_file));
+
+  std::vector<std::uint64_t> steps =
+      snapshot_steps(scene.output.snapshot_times, s.timestep, s.steps);
+  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
+  if (steps.empty()) return;
+  const bool at_start = steps.front() == 0;
+  if (at_start) steps.erase(steps.begin());
+  // Next snapshot step after the current one; past the last, a step the run never reaches.
+  std::string next;
+  std::uint64_t previous = 0;
+  for (const std::uint64_t n : steps) {
+    next += fmt::format("{}*(step>={})*(step<{})+", n, previous, n);
+    previous = n;
+  }
+  next += fmt::format("{}*(step>={})", s.steps + 1, previous);
+  line(deck, "variable", fmt::format("tr_snapshot_step equal \"{}\"", next));
+  line(deck, "dump", fmt::format("tr_snapshots all custom 1 {} id x y z vx vy vz omegax omegay "
+                                 "omegaz",
+                                 s.snapshot_file));
+  line(deck, "dump_modify",
+       fmt::format("tr_snapshots sort id format float %.17g every v_tr_snapshot_step{}",
+                   at_start ? " first yes" : ""));
+}
+
+}  // namespace
+
+std::string write_deck(const cases::Scene& scene, const DeckSettings& settings) {
+  const AtomTypes types = classify_particles(scene);
+  std::string deck;
+  write_header(deck, scene, settings);
+  write_atoms(deck, scene, types, static_cast<double>(settings.steps) * settings.timestep);
+  write_pairs(deck, scene, types);
+  write_fixes(deck, scene, types, settings);
+  write_outputs(deck, scene, types, settings);
+  if (!settings.extra_commands.empty()) {
+    deck += "# extra commands\n" + settings.extra_commands;
+    if (deck.back() != '\n') deck += '\n';
+  }
+  line(deck, "run", fmt::format("{}", settings.steps));
+  return deck;
+}
+
+}  // namespace reference::lammps

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+#include "reference/lammps/lammps_engine.hpp"
+
+#include <cmath>
+#include <exception>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "dem/contact/pair_table.hpp"
+#include "dem/core/model_error.hpp"
+#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/lammps/deck_writer.hpp"
+#include "reference/lammps/dump_parser.hpp"
+#include "reference/lammps/lammps_runner.hpp"
+#include "reference/lammps/pair_coeff_mapping.hpp"
+#include "reference/lammps/print_parser.hpp"
+#include "reference/lammps/run_conventions.hpp"
+#include "reference/lammps/snapshots.hpp"
+#include "reference/lammps/trace_columns.hpp"
+#include "support/text_file.hpp"
+
+namespace reference {
+namespace {
+
+/// A failed run with its reason and log tail.
+cases::RunResult failure(std::string reason, std::string log_tail) {
+  cases::RunResult r;
+  r.status = cases::RunStatus::error;
+  r.reason = std::move(reason);
+  r.log_tail = std::move(log_tail);
+  return r;
+}
+
+/// Name of the first trace column holding a NaN or infinity, with the time, or empty.
+std::string first_non_finite(const cases::Trace& trace) {
+  const std::vector<double>& time = trace.values(0);
+  for (std::size_t c = 0; c < trace.columns().size(); ++c) {
+    const auto& v = trace.values(c);
+    for (std::size_t r = 0; r < v.size(); ++r) {
+      if (!std::isfinite(v[r])) {
+        return fmt::format("{} = {} at t = {:.6g} s (row {})", trace.columns()[c], v[r], time[r],
+                           r);
+      }
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
+std::optional<std::string> LammpsEngine::version() const {
+  return lammps::lammps_version(options_.program);
+}
+
+Support LammpsEngine::supports(const cases::Scene& scene) const {
+  Support s;
+  if (!scene.walls.empty()) {
+    s.reasons.emplace_back("LAMMPS driver: walls are not mapped yet (sphere pairs only)");
+  }
+  if (scene.fluid) {
+    s.reasons.emplace_back(
+        "LAMMPS driver: fluid forces (drag, buoyancy, plug flow) are not mapped");
+  }
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    if (!scene.particles[i].motion.empty()) {
+      s.reasons.push_back(fmt::format(
+          "LAMMPS driver: the prescribed motion of particle {} is not mapped yet", i));
+    }
+  }
+  try {
+    const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+    if (table.material_count() > 0) {
+      // The model choice is global, so every material pair has the same sub-model types.
+      for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0))) {
+        s.reasons.push_back(std::move(reason));
+      }
+    }
+  } catch (const dem::ModelError& e) {
+    s.reasons.push_back(std::string("LAMMPS driver: the contact model is incomplete: ") + e.what());
+  }
+  return s;
+}
+
+cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& options) const {
+  const CoreSetup setup = core_setup(scene);
+  const double dt = setup.simulation.timestep;
+  const std::uint64_t steps = step_count(scene.integration.duration, dt);
+  lammps::DeckSettings settings;
+  settings.timestep = dt;
+  settings.steps = steps;
+  settings.extra_commands = options_.extra_commands;
+  const std::string deck = lammps::write_deck(scene, settings);
+
+  const std::filesystem::path dir = lammps::make_run_directory(options.work_dir);
+  support::write_file(dir / lammps::kDeckFile, deck);
+  const lammps::LammpsRunOutcome outcome =
+      lammps::run_lammps(options_.program, dir, options.timeout_s);
+  if (!outcome.ok) return failure(outcome.reason, outcome.log_tail);
+
+  cases::RunResult result;
+  const std::filesystem::path trace_path = dir / settings.trace_file;
+  try {
+    if (!std::filesystem::exists(trace_path)) {
+      return failure(fmt::format("LAMMPS exited normally but wrote no trace file {}",
+                                 trace_path.string()),
+                     outcome.log_tail);
+    }
+    const cases::Trace printed =
+        lammps::parse_fix_print(support::read_file(trace_path), trace_path.string());
+    lammps::AssembledTrace assembled = lammps::assemble_trace(scene, printed, steps);
+    result.trace = std::move(assembled.trace);
+    result.warnings = setup.warnings;
+    for (auto& w : assembled.warnings) result.warnings.push_back(std::move(w));
+
+    const std::vector<std::uint64_t> snapshot_steps =
+        lammps::snapshot_steps(scene.output.snapshot_times, dt, steps);
+    if (!snapshot_steps.empty()) {
+      const std::filesystem::path dump_path = dir / settings.snapshot_file;
+      if (!std::filesystem::exists(dump_path)) {
+        return failure(fmt::format("LAMMPS exited normally but wrote no snapshot file {}",
+                                   dump_path.string()),
+                       outcome.log_tail);
+      }
+      result.snapshots = lammps::snapshots_from_dump(
+          lammps::parse_dump(support::read_file(dump_path), dump_path.string()), snapshot_steps,
+          dt, scene.particles.size());
+    }
+  } catch (const std::exception& e) {
+    return failure(e.what(), outcome.log_tail);
+  }
+  if (const std::string bad = first_non_finite(result.trace); !bad.empty()) {
+    return failure("LAMMPS produced a non-finite value: " + bad, outcome.log_tail);
+  }
+  for (const auto& w : outcome.warnings) result.warnings.push_back("LAMMPS log: " + w);
+  if (scene.output.trace_energy) {
+    result.warnings.emplace_back(
+        "output.trace_energy: the LAMMPS driver records no energy ledger (its energy trace is "
+        "empty)");
+  }
+  result.status = cases::RunStatus::ok;
+  result.conventions =
+      lammps::run_conventions(scene, dt, steps, outcome.version.value_or("unknown"), dir);
+  return result;
+}
+
+}  // namespace reference

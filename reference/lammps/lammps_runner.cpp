@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+#include "reference/lammps/lammps_runner.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "reference/lammps/log_scan.hpp"
+#include "support/process.hpp"
+#include "support/text_file.hpp"
+
+namespace reference::lammps {
+namespace {
+
+/// Lines of the log and of stderr kept for reports.
+constexpr std::size_t kLogTailLines = 30;
+constexpr std::size_t kStderrTailLines = 10;
+
+/// Text of a file, or "" when it cannot be read.
+std::string read_or_empty(const std::filesystem::path& path) {
+  try {
+    return support::read_file(path);
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
+/// The last lines of log.lammps and of stderr, each under a title.
+std::string tail_of(const std::filesystem::path& dir) {
+  std::string out;
+  const std::string log = support::file_tail(dir / kLogFile, kLogTailLines);
+  out += log.empty() ? std::string("(log.lammps is empty or missing)\n")
+                     : fmt::format("log.lammps (last {} lines):\n{}", kLogTailLines, log);
+  const std::string err = support::file_tail(dir / kStderrFile, kStderrTailLines);
+  if (!err.empty()) out += fmt::format("stderr (last {} lines):\n{}", kStderrTailLines, err);
+  return out;
+}
+
+}  // namespace
+
+std::filesystem::path make_run_directory(const std::filesystem::path& parent) {
+  // Absolute, because the child process changes into it before opening its output files.
+  const std::filesystem::path base = std::filesystem::absolute(
+      parent.empty() ? std::filesystem::temp_directory_path() : parent);
+  std::error_code ec;
+  std::filesystem::create_directories(base, ec);
+  if (ec) {
+    throw std::runtime_error(
+        fmt::format("cannot create directory {}: {}", base.string(), ec.message()));
+  }
+  std::string pattern = (base / "lammps-run-XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    throw std::runtime_error(fmt::format("cannot create a run directory in {}: {}", base.string(),
+                                         std::strerror(errno)));
+  }
+  return pattern;
+}
+
+std::optional<std::string> lammps_version(const std::string& program) {
+  if (!support::find_program(program)) return std::nullopt;
+  std::filesystem::path dir;
+  try {
+    dir = make_run_directory({});
+  } catch (const std::exception& e) {
+    return fmt::format("LAMMPS (version unknown: {})", e.what());
+  }
+  support::ProcessSpec spec;
+  spec.argv = {program, "-in", "/dev/null", "-log", (dir / kLogFile).string(), "-screen", "none"};
+  spec.environment = {{"OMP_NUM_THREADS", "1"}};
+  spec.timeout_s = 60.0;
+  const support::ProcessResult r = support::run_process(spec);
+  const std::optional<std::string> banner = banner_version(read_or_empty(dir / kLogFile));
+  std::error_code ignored;
+  std::filesystem::remove_all(dir, ignored);
+  if (banner) return banner;
+  if (!r.started) return fmt::format("LAMMPS (version unknown: {})", r.error);
+  return fmt::format("LAMMPS (version unknown: {} wrote no banner, exit status {})", program,
+                     r.exit_code);
+}
+
+LammpsRunOutcome run_lammps(const std::string& program, const std::filesystem::path& dir,
+                            double timeout_s) {
+  support::ProcessSpec spec;
+  spec.argv = {program, "-in", kDeckFile, "-log", kLogFile, "-screen", "none"};
+  spec.working_directory = dir;
+  spec.stdout_file = dir / kStdoutFile;
+  spec.stderr_file = dir / kStderrFile;
+  spec.environment = {{"OMP_NUM_THREADS", "1"}};
+  spec.timeout_s = timeout_s;
+  const support::ProcessResult r = support::run_process(spec);
+
+  LammpsRunOutcome out;
+  const std::string log = read_or_empty(dir / kLogFile);
+  out.log_tail = tail_of(dir);
+  out.warnings = warning_lines(log);
+  out.version = banner_version(log);
+  const std::string error = first_error(log);
+  const std::string detail = error.empty() ? "" : ": " + error;
+  if (!r.started) {
+    out.reason = fmt::format("LAMMPS could not be started: {}", r.error);
+  } else if (r.timed_out) {
+    out.reason = fmt::format("LAMMPS timed out after {:.3g} s and was killed", timeout_s);
+  } else if (r.signal) {
+    out.reason = fmt::format("LAMMPS was killed by signal {} ({}){}", *r.signal,
+                             strsignal(*r.signal), detail);
+  } else if (r.exit_code != 0) {
+    out.reason = fmt::format("LAMMPS exited with status {}{}", r.exit_code,
+                             error.empty() ? " and no ERROR line in its log" : detail);
+  } else {
+    out.ok = true;
+  }
+  return out;
+}
+
+}  // namespace reference::lammps

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+#include "reference/lammps/run_conventions.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "dem/contact/pair_table.hpp"
+#include "dem/contact/registry.hpp"
+#include "dem/integrators/scheme.hpp"
+#include "reference/lammps/atom_types.hpp"
+#include "reference/lammps/pair_coeff_mapping.hpp"
+#include "reference/lammps/simulation_box.hpp"
+#include "reference/lammps/trace_columns.hpp"
+
+namespace reference::lammps {
+namespace {
+
+/// "normal 'linear' → …; damping 'none' → …" from the registry rows of the chosen model.
+std::string model_mapping(const dem::ModelChoice& model) {
+  std::string out;
+  const auto add = [&](dem::Slot slot, const std::string& keyword) {
+    const dem::SubModelInfo* row = dem::find_sub_model(slot, keyword);
+    if (!out.empty()) out += "; ";
+    out += fmt::format("{} '{}' → {}", dem::to_string(slot), keyword,
+                       row != nullptr ? row->lammps : "(unknown sub-model)");
+  };
+  add(dem::Slot::normal, model.normal);
+  add(dem::Slot::damping, model.damping);
+  add(dem::Slot::tangential, model.tangential);
+  add(dem::Slot::cohesion, model.cohesion);
+  add(dem::Slot::rolling, model.rolling);
+  return out;
+}
+
+/// η of every type pair, as the deck comments state it.
+std::string damping_per_type_pair(const cases::Scene& scene, const AtomTypes& types) {
+  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+  std::string out;
+  for (std::size_t a = 0; a < types.types.size(); ++a) {
+    for (std::size_t b = a; b < types.types.size(); ++b) {
+      const GranularCoeff c = map_pair_law(
+          table.law(types.types[a].material, types.types[b].material), types.reduced_mass(a, b));
+      if (!out.empty()) out += "; ";
+      out += fmt::format("types {}-{}: {}", a + 1, b + 1, c.damping_note);
+    }
+  }
+  return "damping velocity, " + out;
+}
+
+}  // namespace
+
+std::map<std::string, std::string> run_conventions(const cases::Scene& scene, double dt,
+                                                   std::uint64_t steps,
+                                                   const std::string& version,
+                                                   const std::filesystem::path& dir) {
+  const AtomTypes types = classify_particles(scene);
+  std::map<std::string, std::string> c;
+  std::string integrator = fmt::format(
+      "velocity Verlet ({}): half kick, drift, forces with the half-step velocities v(t+Δt/2), "
+      "half kick",
+      scene.integration.rotation ? "fix nve/sphere" : "fix nve");
+  if (scene.integration.scheme != dem::SchemeId::velocity_verlet) {
+    integrator += fmt::format(
+        " — the case's scheme '{}' does not exist in LAMMPS (matched numerics: run the core on "
+        "reference::matched_scene(scene, \"lammps\"))",
+        dem::scheme_info(scene.integration.scheme).keyword);
+  }
+  c["integrator"] = integrator;
+  c["timestep"] =
+      fmt::format("{:.6g} s × {} steps (the in-house core's resolved step)", dt, steps);
+  c["rotation"] = scene.integration.rotation
+                      ? "integrated (fix nve/sphere)"
+                      : "held at initial values (fix nve: x and v only)";
+  c["contact onset"] = "pair granular interacts while δ > 0 strictly (rsq < (r_i + r_j)²)";
+  c["trace velocity"] = "velocity at the sample time (fix print at the end of the step)";
+  c["fixed particles"] =
+      "one fix freeze group, not integrated (pair granular then uses m_eff = the mobile mass)";
+  c["mixing"] = "explicit pair_coeff for every type pair (LAMMPS' own i-j mixing never used)";
+  c["atom types"] = fmt::format("{} type(s), one per (material, radius, fixed) class, so m* and "
+                                "η are exact per type pair",
+                                types.types.size());
+  c["damping"] = damping_per_type_pair(scene, types);
+  c["model mapping"] = model_mapping(scene.model);
+  const Box box = simulation_box(scene, static_cast<double>(steps) * dt);
+  c["box"] =
+      fmt::format("boundary f f f, [{:.6g}, {:.6g}] × [{:.6g}, {:.6g}] × [{:.6g}, {:.6g}] m",
+                  box.low[0], box.high[0], box.low[1], box.high[1], box.low[2], box.high[2]);
+  const double g = std::sqrt(scene.gravity[0] * scene.gravity[0] +
+                             scene.gravity[1] * scene.gravity[1] +
+                             scene.gravity[2] * scene.gravity[2]);
+  c["gravity"] = g > 0.0 ? "fix gravity on the mobile atoms (after fix store/force)" : "none";
+  const TracePrintPlan plan = trace_print_plan(scene, types);
+  std::string sources;
+  for (const auto& s : plan.sources) sources += (sources.empty() ? "" : "; ") + s;
+  c["trace columns"] = sources;
+  c["trace precision"] =
+      "every column printed as $(formula:%.17g) with its formula written out: LAMMPS 2021 "
+      "passes v_name references through %.15g";
+  c["LAMMPS version"] = version;
+  c["run directory"] = dir.string();
+  return c;
+}
+
+}  // namespace reference::lammps

@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+#include "reference/lammps/snapshots.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string_view>
+
+#include <fmt/format.h>
+
+namespace reference::lammps {
+namespace {
+
+/// Index of column `name` in `frame`; throws naming the step when absent.
+std::size_t column(const DumpFrame& frame, std::string_view name) {
+  const auto it = std::find(frame.columns.begin(), frame.columns.end(), name);
+  if (it == frame.columns.end()) {
+    throw std::runtime_error(
+        fmt::format("LAMMPS snapshot at step {} has no column '{}'", frame.step, name));
+  }
+  return static_cast<std::size_t>(it - frame.columns.begin());
+}
+
+/// The snapshot a frame holds, atoms ordered by id.
+cases::Snapshot to_snapshot(const DumpFrame& frame, double time, std::size_t particles) {
+  const std::size_t id = column(frame, "id");
+  const std::array<std::size_t, 9> c{column(frame, "x"),      column(frame, "y"),
+                                     column(frame, "z"),      column(frame, "vx"),
+                                     column(frame, "vy"),     column(frame, "vz"),
+                                     column(frame, "omegax"), column(frame, "omegay"),
+                                     column(frame, "omegaz")};
+  cases::Snapshot snap;
+  snap.time = time;
+  snap.position.resize(particles);
+  snap.velocity.resize(particles);
+  snap.angular_velocity.resize(particles);
+  std::vector<bool> seen(particles, false);
+  for (const auto& row : frame.rows) {
+    const double atom = row[id];
+    if (!(atom >= 1.0 && atom <= static_cast<double>(particles)) || std::floor(atom) != atom) {
+      throw std::runtime_error(
+          fmt::format("LAMMPS snapshot at step {} has an unexpected atom id {}", frame.step, atom));
+    }
+    const auto i = static_cast<std::size_t>(atom) - 1;
+    seen[i] = true;
+    snap.position[i] = {row[c[0]], row[c[1]], row[c[2]]};
+    snap.velocity[i] = {row[c[3]], row[c[4]], row[c[5]]};
+    snap.angular_velocity[i] = {row[c[6]], row[c[7]], row[c[8]]};
+  }
+  const auto missing = std::find(seen.begin(), seen.end(), false);
+  if (missing != seen.end()) {
+    throw std::runtime_error(fmt::format("LAMMPS snapshot at step {} lacks atom id {}", frame.step,
+                                         (missing - seen.begin()) + 1));
+  }
+  return snap;
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> snapshot_steps(std::vector<double> times, double dt,
+                                          std::uint64_t steps) {
+  std::sort(times.begin(), times.end());
+  std::vector<std::uint64_t> out;
+  for (const double t : times) {
+    const double threshold = t - 0.5 * dt;
+    // First guess from the division, then the exact predicate the in-house loop evaluates.
+    double guess = std::ceil(threshold / dt);
+    std::uint64_t n = guess > 0.0 ? static_cast<std::uint64_t>(guess) : 0;
+    while (n > 0 && static_cast<double>(n - 1) * dt >= threshold) --n;
+    while (static_cast<double>(n) * dt < threshold && n <= steps) ++n;
+    if (n <= steps) out.push_back(n);
+  }
+  return out;
+}
+
+std::vector<cases::Snapshot> snapshots_from_dump(const std::vector<DumpFrame>& frames,
+                                                 const std::vector<std::uint64_t>& steps,
+                                                 double dt, std::size_t particles) {
+  std::vector<cases::Snapshot> out;
+  for (const std::uint64_t n : steps) {
+    const auto frame = std::find_if(frames.begin(), frames.end(),
+                                    [n](const DumpFrame& f) { return f.step == n; });
+    if (frame == frames.end()) {
+      throw std::runtime_error(fmt::format("LAMMPS wrote no snapshot at step {}", n));
+    }
+    out.push_back(to_snapshot(*frame, static_cast<double>(n) * dt, particles));
+  }
+  return out;
+}
+
+}  // namespace reference::lammps

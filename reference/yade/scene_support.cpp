@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#include "reference/yade/scene_support.hpp"
+
+#include <algorithm>
+
+namespace reference::yade {
+
+std::vector<std::string> unsupported_scene_features(const cases::Scene& scene) {
+  std::vector<std::string> reasons;
+  if (!scene.walls.empty()) reasons.emplace_back("YADE driver: plane walls are not mapped yet");
+  if (scene.fluid) {
+    reasons.emplace_back("YADE driver: fluid forces (drag, buoyancy, pressure gradient) are not mapped");
+  }
+  const auto& ps = scene.particles;
+  if (std::any_of(ps.begin(), ps.end(), [](const auto& p) { return p.charge != 0.0; })) {
+    reasons.emplace_back("YADE driver: electric charges (Coulomb forces) are not mapped");
+  }
+  if (std::any_of(ps.begin(), ps.end(), [](const auto& p) { return !p.motion.empty(); })) {
+    reasons.emplace_back("YADE driver: prescribed motion of fixed particles is not mapped yet");
+  }
+  return reasons;
+}
+
+std::vector<std::string> unproduced_outputs(const cases::Scene& scene) {
+  std::vector<std::string> warnings;
+  if (scene.output.trace_energy) {
+    warnings.emplace_back("output.trace_energy: the YADE driver does not record the energy ledger");
+  }
+  return warnings;
+}
+
+}  // namespace reference::yade

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+#include "reference/yade/yade_engine.hpp"
+
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "reference/yade/model_mapping.hpp"
+#include "reference/yade/output_parser.hpp"
+#include "reference/yade/run_plan.hpp"
+#include "reference/yade/scene_support.hpp"
+#include "reference/yade/script_writer.hpp"
+#include "reference/yade/yade_process.hpp"
+#include "support/text_file.hpp"
+
+namespace reference {
+namespace {
+
+/// Reads and parses the trace, checking that it has the in-house columns and row count.
+cases::Trace read_trace(const std::filesystem::path& dir, const yade::YadeRunPlan& plan,
+                        std::size_t trace_every) {
+  const auto path = dir / yade::kTraceFile;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw yade::YadeOutputError(fmt::format("YADE wrote no trace file ({})", path.string()));
+  }
+  cases::Trace trace = yade::parse_trace_csv(support::read_file(path), yade::kTraceFile);
+  if (trace.columns() != plan.trace_columns) {
+    throw yade::YadeOutputError(fmt::format("{}: the header does not list the expected {} columns",
+                                            yade::kTraceFile, plan.trace_columns.size()));
+  }
+  const std::size_t rows = static_cast<std::size_t>(plan.steps / trace_every) + 1;
+  if (trace.rows() != rows) {
+    throw yade::YadeOutputError(fmt::format("{}: {} rows, expected {} (steps {}, trace_every {})",
+                                            yade::kTraceFile, trace.rows(), rows, plan.steps,
+                                            trace_every));
+  }
+  return trace;
+}
+
+/// Reads the snapshots and checks their number.
+std::vector<cases::Snapshot> read_snapshots(const std::filesystem::path& dir,
+                                            const yade::YadeRunPlan& plan, std::size_t particles) {
+  const auto path = dir / yade::kSnapshotFile;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw yade::YadeOutputError(fmt::format("YADE wrote no snapshot file ({})", path.string()));
+  }
+  auto snapshots = yade::parse_snapshot_csv(support::read_file(path), yade::kSnapshotFile, particles);
+  if (snapshots.size() != plan.snapshot_iterations.size()) {
+    throw yade::YadeOutputError(fmt::format("{}: {} snapshots, expected {}", yade::kSnapshotFile,
+                                            snapshots.size(), plan.snapshot_iterations.size()));
+  }
+  return snapshots;
+}
+
+}  // namespace
+
+YadeEngine::YadeEngine(yade::YadeInstallation install) : install_(std::move(install)) {}
+
+std::optional<std::string> YadeEngine::version() const {
+  return yade::detect_yade_version(install_);
+}
+
+Support YadeEngine::supports(const cases::Scene& scene) const {
+  Support s;
+  s.reasons = yade::unsupported_scene_features(scene);
+  for (auto& r : yade::map_contact_model(scene).reasons) s.reasons.push_back(std::move(r));
+  return s;
+}
+
+cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& options) const {
+  const yade::YadeRunPlan plan = yade::make_run_plan(scene);
+  cases::RunResult result;
+  result.status = cases::RunStatus::error;
+  if (!plan.model.reasons.empty()) {
+    result.status = cases::RunStatus::not_applicable;
+    for (const auto& r : plan.model.reasons) result.reason += (result.reason.empty() ? "" : "; ") + r;
+    return result;
+  }
+  const std::string script = yade::write_yade_script(scene, plan);
+  const yade::YadeProcessOutcome outcome =
+      yade::run_yade_script(install_, script, options.work_dir, options.timeout_s);
+  result.conventions = plan.conventions;
+  result.conventions["work directory"] = outcome.directory.string();
+  result.warnings = plan.warnings;
+  for (auto& w : yade::unproduced_outputs(scene)) result.warnings.push_back(std::move(w));
+  result.log_tail = outcome.log_tail;
+  if (!outcome.failure.empty()) {
+    result.reason = outcome.failure;
+    return result;
+  }
+  try {
+    result.trace = read_trace(outcome.directory, plan, scene.output.trace_every);
+    result.snapshots = read_snapshots(outcome.directory, plan, scene.particles.size());
+  } catch (const yade::YadeOutputError& e) {
+    result.reason = e.what();
+    return result;
+  }
+  result.status = cases::RunStatus::ok;
+  result.log_tail.clear();
+  if (options.work_dir.empty()) {  // no place to keep it: a temporary directory, removed
+    std::error_code ec;
+    std::filesystem::remove_all(outcome.directory, ec);
+    result.conventions["work directory"] = "temporary, removed after the run";
+  }
+  return result;
+}
+
+}  // namespace reference

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "reference/engine.hpp"
+#include "reference/yade/yade_installation.hpp"
+
+namespace reference {
+
+/// YADE 2023.02a (Debian) as a reference engine (yade-notes.md): writes a Python script for the
+/// scene, runs it by importing yade as a module under python3.11 (never the `yade` launcher,
+/// which opens network listeners), and reads back a trace with exactly the in-house engine's
+/// columns and sample times. Phase 1: linear spring with damping none/restitution,
+/// frictionless, fixed spheres, gravity.
+class YadeEngine final : public Engine {
+ public:
+  /// The engine for the YADE found at `install` (the Debian layout by default).
+  explicit YadeEngine(yade::YadeInstallation install = yade::default_yade_installation());
+
+  [[nodiscard]] std::string_view name() const noexcept override { return "yade"; }
+  [[nodiscard]] std::optional<std::string> version() const override;
+  [[nodiscard]] Support supports(const cases::Scene& scene) const override;
+  [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
+                                     const RunOptions& options) const override;
+
+ private:
+  yade::YadeInstallation install_;
+};
+
+}  // namespace reference

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+#include "store/run_result_json.hpp"
+
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace store {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+cases::RunStatus parse_status(const std::string& s) {
+  for (const auto st : {cases::RunStatus::ok, cases::RunStatus::error, cases::RunStatus::missing,
+                        cases::RunStatus::not_applicable}) {
+    if (cases::to_string(st) == s) return st;
+  }
+  throw std::runtime_error("unknown run status '" + s + "'");
+}
+
+Json trace_json(const cases::Trace& t) {
+  Json j = Json::object();
+  for (std::size_t c = 0; c < t.columns().size(); ++c) j[t.columns()[c]] = t.values(c);
+  return j;
+}
+
+cases::Trace trace_from(const Json& j) {
+  cases::Trace t;
+  std::vector<std::vector<double>> columns;
+  for (const auto& [name, values] : j.items()) {
+    t.add_column(name);
+    columns.push_back(values.get<std::vector<double>>());
+  }
+  const std::size_t rows = columns.empty() ? 0 : columns.front().size();
+  for (std::size_t r = 0; r < rows; ++r) {
+    std::vector<double> row;
+    for (const auto& c : columns) {
+      if (c.size() != rows) throw std::runtime_error("trace columns of different lengths");
+      row.push_back(c[r]);
+    }
+    t.append_row(row);
+  }
+  return t;
+}
+
+}  // namespace
+
+nlohmann::ordered_json run_result_json(const cases::RunResult& run) {
+  Json j;
+  j["engine"] = run.engine;
+  j["status"] = std::string(cases::to_string(run.status));
+  j["reason"] = run.reason;
+  j["version"] = run.version;
+  j["source"] = run.source;
+  j["wall_time_s"] = run.wall_time_s;
+  j["log_tail"] = run.log_tail;
+  j["conventions"] = run.conventions;
+  j["warnings"] = run.warnings;
+  j["exact_metrics"] = run.exact_metrics;
+  j["trace"] = trace_json(run.trace);
+  j["energy"] = trace_json(run.energy);
+  Json snaps = Json::array();
+  for (const auto& s : run.snapshots) {
+    snaps.push_back({{"time", s.time},
+                     {"position", s.position},
+                     {"velocity", s.velocity},
+                     {"angular_velocity", s.angular_velocity}});
+  }
+  j["snapshots"] = snaps;
+  return j;
+}
+
+cases::RunResult run_result_from_json(const nlohmann::ordered_json& j) {
+  try {
+    cases::RunResult r;
+    r.engine = j.at("engine").get<std::string>();
+    r.status = parse_status(j.at("status").get<std::string>());
+    r.reason = j.at("reason").get<std::string>();
+    r.version = j.at("version").get<std::string>();
+    r.source = j.value("source", std::string("run"));
+    r.wall_time_s = j.at("wall_time_s").get<double>();
+    r.log_tail = j.at("log_tail").get<std::string>();
+    r.conventions = j.at("conventions").get<std::map<std::string, std::string>>();
+    r.warnings = j.at("warnings").get<std::vector<std::string>>();
+    r.exact_metrics = j.at("exact_metrics").get<std::map<std::string, double>>();
+    r.trace = trace_from(j.at("trace"));
+    r.energy = trace_from(j.at("energy"));
+    for (const auto& s : j.at("snapshots")) {
+      r.snapshots.push_back({s.at("time").get<double>(), s.at("position").get<std::vector<cases::Vector3>>(),
+                             s.at("velocity").get<std::vector<cases::Vector3>>(),
+                             s.at("angular_velocity").get<std::vector<cases::Vector3>>()});
+    }
+    return r;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(std::string("malformed stored run result: ") + e.what());
+  }
+}
+
+}  // namespace store

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+#include "store/scene_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "dem/materials/material_properties.hpp"
+#include "support/sha256.hpp"
+
+namespace store {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json material_json(const dem::MaterialProperties& m) {
+  Json j;
+  j["name"] = m.name;
+  j["density"] = m.density;
+  for (const auto& spec : dem::property_specs()) {
+    if (spec.material_field == nullptr) continue;
+    if (const auto& v = m.*spec.material_field) j[std::string(spec.key)] = *v;
+  }
+  return j;
+}
+
+Json pair_json(const dem::PairProperties& p) {
+  Json j = Json::object();
+  for (const auto& spec : dem::property_specs()) {
+    if (spec.pair_field == nullptr) continue;
+    if (const auto& v = p.*spec.pair_field) j[std::string(spec.key)] = *v;
+  }
+  return j;
+}
+
+Json particle_json(const cases::ParticleSpec& p) {
+  Json j;
+  j["radius"] = p.radius;
+  j["effect_radius"] = p.effect_radius;
+  j["material"] = p.material;
+  j["position"] = p.position;
+  j["velocity"] = p.velocity;
+  j["angular_velocity"] = p.angular_velocity;
+  j["fixed"] = p.fixed;
+  j["charge"] = p.charge;
+  Json motion = Json::array();
+  for (const auto& s : p.motion) motion.push_back({{"duration", s.duration}, {"velocity", s.velocity}});
+  j["motion"] = motion;
+  return j;
+}
+
+Json fluid_json(const cases::FluidSpec& f) {
+  Json j;
+  j["density"] = f.density;
+  j["viscosity"] = f.viscosity;
+  j["drag"] = f.drag;
+  j["buoyancy"] = f.buoyancy;
+  j["virtual_mass"] = f.virtual_mass;
+  j["pressure_gradient"] = f.pressure_gradient;
+  j["velocity"] = f.velocity;
+  Json zones = Json::array();
+  for (const auto& z : f.zones) zones.push_back({{"min", z.min}, {"max", z.max}, {"direction", z.direction}});
+  j["zones"] = zones;
+  j["plug_speed"] = f.plug_speed;
+  j["ramp_time"] = f.ramp_time;
+  return j;
+}
+
+Json pairs_json(const std::vector<cases::ParticlePair>& pairs) {
+  Json j = Json::array();
+  for (const auto& [a, b] : pairs) j.push_back({a, b});
+  return j;
+}
+
+}  // namespace
+
+nlohmann::ordered_json scene_json(const cases::Scene& s) {
+  Json j;
+  Json materials = Json::array();
+  for (const auto& m : s.materials) materials.push_back(material_json(m));
+  j["materials"] = materials;
+  Json mixing = Json::object();
+  for (const auto& [key, rule] : s.mixing) mixing[key] = std::string(dem::to_string(rule));
+  j["mixing"] = mixing;
+  Json overrides = Json::array();
+  for (const auto& o : s.pair_overrides) {
+    overrides.push_back({{"materials", {o.material_a, o.material_b}}, {"values", pair_json(o.values)}});
+  }
+  j["pair_overrides"] = overrides;
+  j["model"] = {{"normal", s.model.normal},
+                {"damping", s.model.damping},
+                {"tangential", s.model.tangential},
+                {"cohesion", s.model.cohesion},
+                {"rolling", s.model.rolling},
+                {"clamp_tensile", s.model.clamp_tensile},
+                {"friction_limit", std::string(dem::to_string(s.model.friction_limit))},
+                {"jkr_rupture", std::string(dem::to_string(s.model.jkr_rupture))},
+                {"wall_lever_arm", std::string(dem::to_string(s.model.wall_lever_arm))}};
+  Json particles = Json::array();
+  for (const auto& p : s.particles) particles.push_back(particle_json(p));
+  j["particles"] = particles;
+  Json walls = Json::array();
+  for (const auto& w : s.walls) {
+    walls.push_back({{"point", w.point}, {"normal", w.normal}, {"velocity", w.velocity}, {"material", w.material}});
+  }
+  j["walls"] = walls;
+  j["gravity"] = s.gravity;
+  j["fluid"] = s.fluid ? fluid_json(*s.fluid) : Json(nullptr);
+  const auto& in = s.integration;
+  j["integration"] = {{"scheme", std::string(dem::scheme_info(in.scheme).keyword)},
+                      {"timestep", in.timestep ? Json(*in.timestep) : Json("auto")},
+                      {"steps_per_collision", in.steps_per_collision},
+                      {"duration", in.duration},
+                      {"rotation", in.rotation},
+                      {"startup", in.startup == dem::StartupPolicy::exact ? "exact" : "rk4"},
+                      {"startup_substeps", in.startup_substeps},
+                      {"implicit_tolerance", in.implicit_tolerance},
+                      {"implicit_max_iterations", in.implicit_max_iterations},
+                      {"leapfrog_start", in.leapfrog_start == dem::LeapfrogStart::half_kick ? "half_kick"
+                                                                                           : "given_is_half_step"}};
+  j["output"] = {{"trace_every", s.output.trace_every},
+                 {"trace_particles", s.output.trace_particles},
+                 {"trace_pairs", pairs_json(s.output.trace_pairs)},
+                 {"trace_walls", pairs_json(s.output.trace_walls)},
+                 {"trace_energy", s.output.trace_energy},
+                 {"snapshot_times", s.output.snapshot_times}};
+  return j;
+}
+
+std::string scene_fingerprint(const cases::Scene& scene) {
+  return support::sha256_hex(scene_json(scene).dump());
+}
+
+}  // namespace store

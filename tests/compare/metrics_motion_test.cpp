@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+// Motion metrics (tangential restitution, rebound angle, spin after, deceleration) on synthetic
+// traces whose values are known by construction; problems instead of NaN.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "compare/metrics.hpp"
+#include "compare/metrics_motion.hpp"
+
+namespace {
+
+constexpr double kRadius = 0.01;
+
+/// A sphere (particle 0) and a floor (wall 0, normal +z), the compared wall contact.
+cases::Scene floor_scene(std::vector<std::string> metrics) {
+  cases::Scene s;
+  s.name = "synthetic_floor";
+  s.particles.resize(1);
+  s.particles[0].radius = kRadius;
+  s.walls.push_back(cases::WallSpec{"floor", {0, 0, 0}, {0, 0, 1}, {0, 0, 0}, 0});
+  s.compare.subject = 0;
+  s.compare.wall_contact = cases::ParticlePair{0, 0};
+  s.compare.metrics = std::move(metrics);
+  return s;
+}
+
+/// Trace columns of particle 0 and the wall contact (0, 0).
+cases::Trace floor_trace_layout() {
+  cases::Trace tr;
+  tr.add_column("time");
+  for (const auto q : cases::kParticleQuantities) tr.add_column(cases::particle_column(0, q));
+  tr.add_column(cases::wall_column(0, 0, "overlap"));
+  tr.add_column(cases::wall_column(0, 0, "fn"));
+  return tr;
+}
+
+/// Free flight in, 10 rows of contact, free flight out with the given velocities and spin.
+cases::Trace impact_trace(const std::array<double, 3>& v_in, const std::array<double, 3>& w_in,
+                          const std::array<double, 3>& v_out, const std::array<double, 3>& w_out) {
+  cases::Trace tr = floor_trace_layout();
+  for (int k = 0; k < 30; ++k) {
+    const bool before = k < 10, after = k >= 20;
+    const auto& v = before ? v_in : v_out;
+    const auto& w = before ? w_in : w_out;
+    const double overlap = before ? -1e-4 * (10 - k) : after ? -1e-4 * (k - 19) : 1e-5;
+    tr.append_row({1e-5 * k, 0, 0, kRadius - overlap, v[0], v[1], v[2], w[0], w[1], w[2], 0, 0, 0,
+                   overlap, overlap > 0 ? 1.0 : 0.0});
+  }
+  return tr;
+}
+
+TEST(TangentialRestitution, IsMinusOneWithoutFrictionAndZeroWhenRollingAfter) {
+  const cases::Scene scene = floor_scene({});
+  const auto smooth = comparison::motion::tangential_restitution(
+      scene, impact_trace({2, 0, -1}, {0, 0, 0}, {2, 0, 1}, {0, 0, 0}));
+  ASSERT_TRUE(smooth.value) << smooth.problem;
+  EXPECT_DOUBLE_EQ(*smooth.value, -1.0);
+  // Rolling after: v_x = r ω_y at the contact point (a_p = −r n).
+  const auto rolling = comparison::motion::tangential_restitution(
+      scene, impact_trace({2, 0, -1}, {0, 0, 0}, {1.5, 0, 1}, {0, 150.0, 0}));
+  ASSERT_TRUE(rolling.value);
+  EXPECT_NEAR(*rolling.value, 0.0, 1e-12);
+}
+
+TEST(TangentialRestitution, UsesTheContactPointVelocityIncludingSpin) {
+  // Incoming backspin adds to the slip: u_before = 2 + r·100 = 3; after u = 1 − r·50 = 0.5.
+  const auto e_t = comparison::motion::tangential_restitution(
+      floor_scene({}), impact_trace({2, 0, -1}, {0, -100.0, 0}, {1, 0, 1}, {0, 50.0, 0}));
+  ASSERT_TRUE(e_t.value) << e_t.problem;
+  EXPECT_NEAR(*e_t.value, -0.5 / 3.0, 1e-12);
+}
+
+TEST(ReboundAngle, IsTheAngleToTheNormalInDegrees) {
+  const auto a = comparison::motion::rebound_angle(
+      floor_scene({}), impact_trace({2, 0, -1}, {0, 0, 0}, {1, 0, 1}, {0, 0, 0}));
+  ASSERT_TRUE(a.value);
+  EXPECT_NEAR(*a.value, 45.0, 1e-12);
+}
+
+TEST(SpinAfter, IsPositiveForTheSpinSlidingFrictionImparts) {
+  // Sliding along +x on a floor: friction spins the sphere about +y = x̂ × (−ẑ).
+  const auto w = comparison::motion::spin_after(
+      floor_scene({}), impact_trace({2, 0, -1}, {0, 0, 0}, {1.5, 0, 1}, {0, 123.0, 4.0}));
+  ASSERT_TRUE(w.value) << w.problem;
+  EXPECT_DOUBLE_EQ(*w.value, 123.0);
+}
+
+TEST(MotionMetrics, NormalImpactGivesAProblemNotNaN) {
+  const cases::Scene scene = floor_scene({"tangential_restitution", "spin_after"});
+  const cases::Trace tr = impact_trace({0, 0, -1}, {0, 0, 0}, {0, 0, 1}, {0, 0, 0});
+  const auto e_t = comparison::motion::tangential_restitution(scene, tr);
+  EXPECT_FALSE(e_t.value);
+  EXPECT_NE(e_t.problem.find("normal impact"), std::string::npos);
+  cases::RunResult run;
+  run.status = cases::RunStatus::ok;
+  run.trace = tr;
+  const comparison::MetricSet m = comparison::compute_metrics(scene, run, nullptr);
+  EXPECT_FALSE(m.at("spin_after").value);
+  EXPECT_FALSE(m.at("spin_after").problem.empty());
+}
+
+TEST(MotionMetrics, AreDispatchedByComputeMetrics) {
+  const cases::Scene scene = floor_scene({"tangential_restitution", "rebound_angle", "spin_after"});
+  cases::RunResult run;
+  run.status = cases::RunStatus::ok;
+  run.trace = impact_trace({2, 0, -1}, {0, 0, 0}, {1, 0, 1}, {0, 50.0, 0});
+  const comparison::MetricSet m = comparison::compute_metrics(scene, run, nullptr);
+  EXPECT_NEAR(*m.at("tangential_restitution").value, -0.25, 1e-12);
+  EXPECT_NEAR(*m.at("rebound_angle").value, 45.0, 1e-12);
+  EXPECT_NEAR(*m.at("spin_after").value, 50.0, 1e-12);
+}
+
+/// Sliding on the floor at its static overlap: v = v0 − a t until the slip stops, then rolling.
+cases::Trace sliding_trace(double v0, double a, double dt, int rows) {
+  cases::Trace tr = floor_trace_layout();
+  const double delta = 1e-6, lever = kRadius - 0.5 * delta;
+  const double spin_rate = 2.5 * a / lever;  // solid sphere: ω̇ = μ m g ℓ / I with a = μ g
+  const double t_roll = v0 / (a + spin_rate * lever);
+  for (int k = 0; k < rows; ++k) {
+    const double t = std::min(k * dt, t_roll);
+    const double v = v0 - a * t, w = spin_rate * t;
+    tr.append_row({k * dt, v0 * t - 0.5 * a * t * t, 0, kRadius - delta, v, 0, 0, 0, w, 0, -a, 0, 0,
+                   delta, 1.0});
+  }
+  return tr;
+}
+
+TEST(Deceleration, IsTheSlopeOfTheTangentialSpeedWhileSliding) {
+  const double a = 0.2 * 9.81;
+  cases::Scene scene = floor_scene({"deceleration"});
+  const auto d = comparison::motion::deceleration(scene, sliding_trace(1.0, a, 1e-4, 3000));
+  ASSERT_TRUE(d.value) << d.problem;
+  EXPECT_NEAR(*d.value, a, 1e-9 * a);  // the rolling phase is excluded
+}
+
+TEST(Deceleration, TooFewSlidingRowsIsAProblem) {
+  const auto d = comparison::motion::deceleration(floor_scene({}), sliding_trace(1.0, 2.0, 0.2, 10));
+  EXPECT_FALSE(d.value);
+  EXPECT_NE(d.problem.find("sliding rows"), std::string::npos);
+}
+
+TEST(MotionMetrics, MissingContactSettingIsAProblem) {
+  cases::Scene scene = floor_scene({});
+  scene.compare.wall_contact.reset();
+  const auto r = comparison::motion::rebound_angle(scene, impact_trace({2, 0, -1}, {}, {1, 0, 1}, {}));
+  EXPECT_FALSE(r.value);
+  EXPECT_NE(r.problem.find("compare.pair"), std::string::npos);
+}
+
+}  // namespace

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+// Sub-model translation to `pair_style granular` coefficients, and its registry wording.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "dem/contact/laws/linear_dashpot.hpp"
+#include "dem/contact/pair_table.hpp"
+#include "dem/contact/registry.hpp"
+#include "reference/lammps/pair_coeff_mapping.hpp"
+
+namespace {
+
+using reference::lammps::map_pair_law;
+using reference::lammps::pair_coeff_arguments;
+
+dem::PairLaw law(const std::string& damping, double restitution = 0.5, bool clamp = false) {
+  dem::ModelChoice choice;
+  choice.damping = damping;
+  choice.clamp_tensile = clamp;
+  dem::PairProperties p;
+  p.normal_stiffness = 1e5;
+  p.restitution = restitution;
+  return dem::make_pair_law(choice, p);
+}
+
+TEST(LammpsPairCoeff, LinearSpringWithoutDampingIsHookeWithZeroEta) {
+  const auto c = map_pair_law(law("none"), 4.2e-3);
+  EXPECT_EQ(pair_coeff_arguments(c),
+            "hooke 100000 0 tangential linear_nohistory 0 0 damping velocity");
+}
+
+TEST(LammpsPairCoeff, RestitutionDampingIsEtaOfEquation311ForTheGivenReducedMass) {
+  const double m = 4.1887902047863905e-3;
+  const auto c = map_pair_law(law("restitution", 0.5), m);
+  EXPECT_EQ(c.damping_coefficient, dem::laws::restitution_damping_coefficient(0.5, m, 1e5));
+  EXPECT_NEAR(c.damping_coefficient, 8.81918355790422, 1e-12);  // lammps-notes.md §4
+  EXPECT_EQ(c.damping_style, "velocity");
+  EXPECT_NE(c.damping_note.find("m* = 0.0041887902047863905 kg"), std::string::npos);
+}
+
+TEST(LammpsPairCoeff, BothTypesFixedGetNoDamping) {
+  const auto c = map_pair_law(law("restitution", 0.5), std::nullopt);
+  EXPECT_EQ(c.damping_coefficient, 0.0);
+}
+
+TEST(LammpsPairCoeff, ClampTensileAddsLimitDamping) {
+  const auto c = map_pair_law(law("restitution", 0.5, true), 1.0);
+  EXPECT_NE(pair_coeff_arguments(c).find(" limit_damping "), std::string::npos);
+}
+
+TEST(LammpsPairCoeff, EveryCurrentSubModelIsMapped) {
+  EXPECT_TRUE(reference::lammps::unmapped_sub_models(law("none")).empty());
+  EXPECT_TRUE(reference::lammps::unmapped_sub_models(law("restitution")).empty());
+}
+
+TEST(LammpsPairCoeff, RegistryRowsNameTheKeywordsTheDriverWrites) {
+  // The registry is the one place that says how a sub-model maps; keep it true to the writer.
+  const auto lammps_text = [](dem::Slot slot, const char* keyword) {
+    const dem::SubModelInfo* row = dem::find_sub_model(slot, keyword);
+    return row == nullptr ? std::string() : std::string(row->lammps);
+  };
+  EXPECT_NE(lammps_text(dem::Slot::normal, "linear").find("hooke"), std::string::npos);
+  EXPECT_NE(lammps_text(dem::Slot::damping, "none").find("damping velocity"), std::string::npos);
+  EXPECT_NE(lammps_text(dem::Slot::damping, "restitution").find("damping velocity"),
+            std::string::npos);
+  EXPECT_NE(lammps_text(dem::Slot::tangential, "none").find("linear_nohistory 0 0"),
+            std::string::npos);
+}
+
+}  // namespace
