@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "app/case_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -70,6 +71,18 @@ comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<st
   std::vector<cases::RunResult> runs;
   for (const auto& name : engines) runs.push_back(run_one(scene, name, context));
   return comparison::evaluate_runs(scene, std::move(runs));
+}
+
+std::vector<std::string> engines_to_run(const cases::Scene& scene, std::vector<std::string> requested) {
+  if (requested.empty()) requested = scene.compare.engines;
+  const auto add = [&](const std::string& e) {
+    if (std::find(requested.begin(), requested.end(), e) == requested.end()) requested.push_back(e);
+  };
+  for (const auto& code : scene.compare.matched) {
+    add(code);
+    add(cases::matched_engine_name(code));
+  }
+  return requested;
 }
 
 std::optional<std::filesystem::path> default_baselines() {

@@ -27,6 +27,10 @@ struct RunContext {
 comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<std::string>& engines,
                                  const RunContext& context);
 
+/// The engines a case runs: `requested` (or the case's compare.engines when empty), plus each
+/// reference code named in compare.matched and its matched core "inhouse@<code>".
+std::vector<std::string> engines_to_run(const cases::Scene& scene, std::vector<std::string> requested);
+
 /// The committed baselines directory next to the canonical suite, if there is one.
 std::optional<std::filesystem::path> default_baselines();
 

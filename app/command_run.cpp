@@ -85,9 +85,10 @@ int command_run(const std::vector<std::string>& args, const Invocation& inv) {
   add_run_options(opts);
   const auto vm = parse_command(args, "usage: demwb run CASE.toml [--engine E ...] [-o DIR]", opts, {"case"});
   if (!vm) return kExitOk;
-  const cases::Scene scene = load((*vm)["case"].as<std::string>());
+  const cases::Scene scene = with_matches(load((*vm)["case"].as<std::string>()), *vm);
   std::vector<std::string> engines{"inhouse"};
   if (vm->count("engine") != 0) engines = split_names((*vm)["engine"].as<std::vector<std::string>>());
+  engines = engines_to_run(scene, engines);
   check_engines(engines);
   const std::filesystem::path out = vm->count("output") != 0
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
@@ -113,9 +114,10 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
   add_run_options(opts);
   const auto vm = parse_command(args, "usage: demwb compare CASE.toml [--engines E,F] [-o DIR]", opts, {"case"});
   if (!vm) return kExitOk;
-  const cases::Scene scene = load((*vm)["case"].as<std::string>());
-  std::vector<std::string> engines = scene.compare.engines;
+  const cases::Scene scene = with_matches(load((*vm)["case"].as<std::string>()), *vm);
+  std::vector<std::string> engines;
   if (vm->count("engines") != 0) engines = split_names((*vm)["engines"].as<std::vector<std::string>>());
+  engines = engines_to_run(scene, engines);
   if (std::find(engines.begin(), engines.end(), scene.compare.reference) == engines.end()) {
     engines.insert(engines.begin(), scene.compare.reference);  // a comparison needs its reference
   }

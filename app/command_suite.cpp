@@ -36,13 +36,13 @@ struct SuiteEntry {
 };
 
 SuiteEntry run_entry(const std::filesystem::path& file, const std::filesystem::path& out,
-                     RunContext ctx) {
+                     RunContext ctx, const po::variables_map& vm) {
   SuiteEntry e{file, std::nullopt, "", 0.0};
   const auto start = std::chrono::steady_clock::now();
   try {
-    const cases::Scene scene = cases::load_case(file);
+    const cases::Scene scene = with_matches(cases::load_case(file), vm);
     ctx.options.work_dir = out / scene.name / "work";
-    e.outcome = run_case(scene, scene.compare.engines, ctx);
+    e.outcome = run_case(scene, engines_to_run(scene, {}), ctx);
   } catch (const std::exception& ex) {
     e.load_error = ex.what();
   }
@@ -116,7 +116,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   std::vector<std::size_t> slot_of;
   while (done < files.size()) {
     while (running.size() < jobs && next < files.size()) {
-      running.push_back(std::async(std::launch::async, run_entry, files[next], out, context));
+      running.push_back(std::async(std::launch::async, run_entry, files[next], out, context, std::cref(*vm)));
       slot_of.push_back(next++);
     }
     for (std::size_t k = 0; k < running.size(); ++k) {

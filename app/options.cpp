@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "app/options.hpp"
 
+#include <algorithm>
 #include <iostream>
+#include <stdexcept>
+
+#include "app/cli.hpp"
+#include "cases/catalogue.hpp"
 
 namespace app {
 
@@ -52,7 +57,22 @@ void add_run_options(po::options_description& opts) {
       "reference-result cache directory (default $DEMWB_CACHE_DIR, else ~/.cache/demwb)")(
       "no-cache", "run reference codes every time and store nothing")(
       "baselines", po::value<std::string>(),
-      "committed baselines used when a reference code is not installed (default cases/baselines)");
+      "committed baselines used when a reference code is not installed (default cases/baselines)")(
+      "match", po::value<std::vector<std::string>>()->composing(),
+      "also run the core with this reference code's numerics (lammps, yade) and compare the two");
+}
+
+cases::Scene with_matches(cases::Scene scene, const po::variables_map& vm) {
+  if (vm.count("match") == 0) return scene;
+  for (const auto& code : split_names(vm["match"].as<std::vector<std::string>>())) {
+    if (!cases::is_reference_code(code)) {
+      throw std::invalid_argument("--match " + code + ": not a reference code (lammps, yade)");
+    }
+    if (std::find(scene.compare.matched.begin(), scene.compare.matched.end(), code) == scene.compare.matched.end()) {
+      scene.compare.matched.push_back(code);
+    }
+  }
+  return scene;
 }
 
 RunContext run_context(const po::variables_map& vm, const std::filesystem::path& work_dir) {

@@ -11,8 +11,12 @@
 
 namespace app {
 
-/// Adds the options every running command shares: --timeout, --cache, --no-cache, --baselines.
+/// Adds the options every running command shares: --timeout, --cache, --no-cache, --baselines,
+/// --match.
 void add_run_options(boost::program_options::options_description& opts);
+
+/// `scene` with the reference codes of --match added to compare.matched (and compare.engines).
+cases::Scene with_matches(cases::Scene scene, const boost::program_options::variables_map& vm);
 
 /// The run context those options describe; `work_dir` holds the engines' scratch files.
 RunContext run_context(const boost::program_options::variables_map& vm,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 
 namespace cases {
 namespace {
@@ -63,7 +64,17 @@ const MetricInfo* find_metric(std::string_view name) noexcept {
 std::span<const std::string_view> engine_catalogue() noexcept { return kEngines; }
 
 bool is_known_engine(std::string_view name) noexcept {
-  return std::find(kEngines.begin(), kEngines.end(), name) != kEngines.end();
+  return std::find(kEngines.begin(), kEngines.end(), name) != kEngines.end() ||
+         !matched_code(name).empty();
+}
+
+std::string matched_engine_name(std::string_view code) { return "inhouse@" + std::string(code); }
+
+std::string_view matched_code(std::string_view engine) noexcept {
+  constexpr std::string_view kPrefix = "inhouse@";
+  if (!engine.starts_with(kPrefix)) return {};
+  const std::string_view code = engine.substr(kPrefix.size());
+  return is_reference_code(code) ? code : std::string_view{};
 }
 
 bool is_reference_code(std::string_view name) noexcept { return name == "lammps" || name == "yade"; }

@@ -29,4 +29,9 @@ bool is_known_engine(std::string_view name) noexcept;
 /// True for the external reference codes (LAMMPS, YADE), whose results are cached and baselined.
 bool is_reference_code(std::string_view name) noexcept;
 
+/// Name of the in-house engine run with the numerics of reference code `code`: "inhouse@<code>".
+std::string matched_engine_name(std::string_view code);
+/// The reference code of a matched engine name ("inhouse@lammps" → "lammps"), or empty.
+std::string_view matched_code(std::string_view engine) noexcept;
+
 }  // namespace cases

@@ -17,7 +17,8 @@ namespace cases::loader {
 namespace {
 
 constexpr auto kCompareKeys = std::to_array<std::string_view>(
-    {"engines", "reference", "subject", "pair", "wall_contact", "metrics", "tolerances"});
+    {"engines", "reference", "subject", "pair", "wall_contact", "metrics", "tolerances", "matched",
+     "matched_tolerances"});
 
 constexpr auto kOutputKeys = std::to_array<std::string_view>(
     {"trace_every", "trace_particles", "trace_pairs", "trace_walls", "trace_energy",
@@ -126,11 +127,27 @@ Tolerance read_tolerance(const Value& value) {
   return tolerance;
 }
 
-/// compare.tolerances: one entry per listed metric at most.
+/// compare.matched: reference codes listed in compare.engines, no repeats.
+std::vector<std::string> read_matched(const Table& table, const std::vector<std::string>& engines) {
+  std::vector<std::string> out;
+  const auto value = table.find("matched");
+  if (!value) return out;
+  constexpr auto kCodes = std::to_array<std::string_view>({"lammps", "yade"});
+  out = read_keyword_list(*value, kCodes, "reference code");
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (!contains(engines, out[k])) {
+      value->elements()[k].fail(fmt::format("'{}' must also be listed in compare.engines to be matched", out[k]));
+    }
+  }
+  return out;
+}
+
+/// compare.tolerances (or matched_tolerances): one entry per listed metric at most.
 std::map<std::string, Tolerance> read_tolerances(const Table& compare,
-                                                 const std::vector<std::string>& metrics) {
+                                                 const std::vector<std::string>& metrics,
+                                                 std::string_view key = "tolerances") {
   std::map<std::string, Tolerance> out;
-  const auto section = compare.find("tolerances");
+  const auto section = compare.find(key);
   if (!section) return out;
   const std::vector<std::string_view> known = metric_names();
   for (const auto& [name, value] : section->table().entries()) {
@@ -249,6 +266,8 @@ void read_compare(const Table& root, Scene& scene) {
   }
   check_metric_needs(table, spec);
   spec.tolerances = read_tolerances(table, spec.metrics);
+  spec.matched = read_matched(table, spec.engines);
+  spec.matched_tolerances = read_tolerances(table, spec.metrics, "matched_tolerances");
 }
 
 void read_output(const Table& root, Scene& scene) {

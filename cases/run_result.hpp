@@ -30,6 +30,16 @@ struct Snapshot {
   std::vector<Vector3> angular_velocity;
 };
 
+/// How an engine's damping input was calibrated so that its two-body rebound gives the case's
+/// restitution (PHYSICS.md §10): the engine's own runs, input against measured restitution.
+struct Calibration {
+  std::string parameter;                           ///< e.g. "LAMMPS tsuji e_in (pair 0–0)"
+  double target = 0.0;                             ///< restitution the case asks for
+  double chosen = 0.0;                             ///< input fed to the engine
+  std::vector<std::pair<double, double>> samples;  ///< (input, restitution measured) runs
+  std::string method;                              ///< how `chosen` was found, and any cache use
+};
+
 /// What an engine returns. Metrics are computed from `trace` by compare/, the same way for
 /// every engine; `exact_metrics` holds closed-form values an analytic engine knows exactly.
 struct RunResult {
@@ -45,6 +55,10 @@ struct RunResult {
   std::vector<Snapshot> snapshots;
   std::map<std::string, double> exact_metrics;
   std::map<std::string, std::string> conventions;  ///< conventions this engine used
+  /// Metrics this engine cannot produce in this scene, with the reason (compared as n/a), e.g.
+  /// a rupture point that the code places elsewhere by design.
+  std::map<std::string, std::string> inexpressible_metrics;
+  std::vector<Calibration> calibrations;
   std::vector<std::string> warnings;
 };
 

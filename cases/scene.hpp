@@ -111,6 +111,10 @@ struct CompareSpec {
   std::optional<ParticlePair> wall_contact;   ///< (particle, wall) contact read instead of `pair`
   std::vector<std::string> metrics;           ///< metric names (see metric_catalogue())
   std::map<std::string, Tolerance> tolerances;  ///< per metric
+  /// Reference codes whose numerics the core also reproduces ("inhouse@<code>" engines,
+  /// compared with the code itself at matched tolerances).
+  std::vector<std::string> matched;
+  std::map<std::string, Tolerance> matched_tolerances;  ///< per metric, for matched rows
 };
 
 /// A fully explicit scene: every engine receives the same one (DESIGN.md "the flow of one

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "cases/catalogue.hpp"
+
 namespace comparison {
 namespace {
 
@@ -65,6 +67,11 @@ void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
   row.value = value_of(metrics, row.engine, row.metric, why);
   if (!row.value) {
     row.note = why;
+    if (const auto e = metrics.find(row.engine); e != metrics.end()) {
+      if (const auto it = e->second.find(row.metric); it != e->second.end() && it->second.not_applicable) {
+        row.status = Status::not_applicable;
+      }
+    }
     return;
   }
   if (row.metric == "amplitude_error") {
@@ -86,6 +93,51 @@ void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
   row.status = judge(*row.value, *row.reference_value, row.tolerance);
 }
 
+/// Rows comparing each matched run "inhouse@<code>" with <code>: every metric but the amplitude
+/// error, and the position-trace deviation.
+void append_matched_rows(const cases::Scene& scene, const std::vector<cases::RunResult>& runs,
+                         const std::map<std::string, MetricSet>& metrics, std::vector<Comparison>& rows) {
+  for (const cases::RunResult& run : runs) {
+    const std::string_view code = cases::matched_code(run.engine);
+    if (code.empty()) continue;
+    const cases::RunResult* target = find_run(runs, std::string(code));
+    if (target == nullptr) continue;
+    const auto add = [&](const std::string& metric, cases::Tolerance tol) -> Comparison& {
+      Comparison& row = rows.emplace_back();
+      row.metric = metric;
+      row.engine = run.engine;
+      row.reference = target->engine;
+      row.tolerance = tol;
+      return row;
+    };
+    const auto failed = [&](Comparison& row) -> bool {
+      for (const cases::RunResult* r : {&run, target}) {
+        if (r->status == cases::RunStatus::ok) continue;
+        row.status = status_of_run(r->status);
+        row.note = fmt::format("{}: {}", r->engine, r->reason);
+        return true;
+      }
+      return false;
+    };
+    for (const std::string& metric : scene.compare.metrics) {
+      if (metric == "amplitude_error") continue;  // measured against the analytic solution
+      Comparison& row = add(metric, matched_tolerance_for(scene, metric));
+      if (!failed(row)) judge_row(row, metrics, *target);
+    }
+    Comparison& row = add("trace_deviation", {0.0, 1e-8});
+    if (failed(row)) continue;
+    std::string problem;
+    row.value = trace_deviation(scene, run, *target, problem);
+    if (!row.value) {
+      row.note = problem;
+      continue;
+    }
+    row.reference_value = 0.0;
+    row.abs_diff = *row.value;
+    row.status = judge(*row.value, 0.0, row.tolerance);
+  }
+}
+
 }  // namespace
 
 cases::Tolerance default_tolerance(std::string_view metric) noexcept {
@@ -93,6 +145,14 @@ cases::Tolerance default_tolerance(std::string_view metric) noexcept {
     if (name == metric) return tol;
   }
   return {1e-3, 0.0};
+}
+
+cases::Tolerance matched_tolerance_for(const cases::Scene& scene, const std::string& metric) {
+  const auto it = scene.compare.matched_tolerances.find(metric);
+  if (it != scene.compare.matched_tolerances.end()) return it->second;
+  const cases::Tolerance native = default_tolerance(metric);
+  // Same kind as the native default (relative or absolute), at 1e-8.
+  return {native.rel > 0.0 ? 1e-8 : 0.0, native.abs > 0.0 ? 1e-8 : 0.0};
 }
 
 cases::Tolerance tolerance_for(const cases::Scene& scene, const std::string& metric) {
@@ -137,6 +197,7 @@ std::vector<Comparison> compare_runs(const cases::Scene& scene,
       rows.push_back(std::move(row));
     }
   }
+  append_matched_rows(scene, runs, metrics, rows);
   return rows;
 }
 

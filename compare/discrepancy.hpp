@@ -34,12 +34,18 @@ cases::Tolerance default_tolerance(std::string_view metric) noexcept;
 /// Tolerance of `metric` in `scene` (the case's own, else the default).
 cases::Tolerance tolerance_for(const cases::Scene& scene, const std::string& metric);
 
+/// Tolerance of `metric` when the core run with a code's numerics is compared with that code
+/// (the case's compare.matched_tolerances, else 1e-8: agreement to round-off is the claim).
+cases::Tolerance matched_tolerance_for(const cases::Scene& scene, const std::string& metric);
+
 /// pass when |value − reference| ≤ abs + rel·|reference|, else fail.
 [[nodiscard]] Status judge(double value, double reference, const cases::Tolerance& tol) noexcept;
 
 /// Every (metric, engine) comparison against the scene's reference engine, in the order of
 /// scene.compare.metrics and `runs`. The reference engine is not compared with itself.
 /// `metrics` maps engine name → its metric values. amplitude_error is compared with 0.
+/// A matched run "inhouse@<code>" is also compared with <code> itself, metric by metric and on
+/// `trace_deviation` (the position traces), at matched tolerances.
 std::vector<Comparison> compare_runs(const cases::Scene& scene,
                                      const std::vector<cases::RunResult>& runs,
                                      const std::map<std::string, MetricSet>& metrics);

@@ -288,6 +288,50 @@ double from_trace(const std::string& name, const cases::Scene& scene, const case
 
 }  // namespace
 
+std::optional<double> trace_deviation(const cases::Scene& scene, const cases::RunResult& run,
+                                      const cases::RunResult& reference, std::string& problem) {
+  const auto* t = run.trace.column("time");
+  const auto* tr = reference.trace.column("time");
+  if (t == nullptr || tr == nullptr || t->size() != tr->size() || t->empty()) {
+    problem = "the two traces do not have the same number of samples";
+    return std::nullopt;
+  }
+  for (std::size_t k = 0; k < t->size(); ++k) {
+    if (std::abs((*t)[k] - (*tr)[k]) > 1e-12 * std::max(std::abs((*tr)[k]), 1e-300)) {
+      problem = fmt::format("the traces are sampled at other times (row {})", k);
+      return std::nullopt;
+    }
+  }
+  double worst = 0.0;
+  bool any = false;
+  for (const std::size_t i : scene.output.trace_particles) {
+    for (const char* q : {"x", "y", "z"}) {
+      const auto* a = run.trace.column(cases::particle_column(i, q));
+      const auto* b = reference.trace.column(cases::particle_column(i, q));
+      if (a == nullptr || b == nullptr) continue;
+      any = true;
+      for (std::size_t k = 0; k < a->size(); ++k) worst = std::max(worst, std::abs((*a)[k] - (*b)[k]));
+    }
+  }
+  if (!any) {
+    problem = "no traced particle positions in both traces";
+    return std::nullopt;
+  }
+  double scale = 0.0;
+  try {
+    const auto& overlap = *overlap_mask(scene, reference.trace).first;
+    for (const double v : overlap) scale = std::max(scale, v);
+  } catch (const MetricProblem& e) {
+    problem = e.what();
+    return std::nullopt;
+  }
+  if (!(scale > 0.0)) {
+    problem = "the reference trace never overlaps: no scale for the deviation";
+    return std::nullopt;
+  }
+  return worst / scale;
+}
+
 std::optional<std::vector<double>> axis_displacement(const cases::Scene& scene,
                                                      const cases::Trace& trace) {
   try {
@@ -304,6 +348,9 @@ MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run
     MetricValue v;
     if (run.status != cases::RunStatus::ok) {
       v.problem = fmt::format("engine status {}", cases::to_string(run.status));
+    } else if (const auto na = run.inexpressible_metrics.find(name); na != run.inexpressible_metrics.end()) {
+      v.problem = na->second;
+      v.not_applicable = true;
     } else if (const auto exact = run.exact_metrics.find(name); exact != run.exact_metrics.end()) {
       v.value = exact->second;
       v.source = "closed form";

@@ -16,6 +16,7 @@ struct MetricValue {
   std::optional<double> value;
   std::string source;   ///< "trace" (computed here) or "closed form" (given by the engine)
   std::string problem;  ///< set when value is empty
+  bool not_applicable = false;  ///< the engine cannot express this metric here (by design)
 };
 
 /// Metric name → value for one engine.
@@ -32,5 +33,12 @@ MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run
 /// max_position and amplitude_error), or empty when the trace cannot give it.
 std::optional<std::vector<double>> axis_displacement(const cases::Scene& scene,
                                                      const cases::Trace& trace);
+
+/// Largest difference between two engines' traced positions, over every traced particle and
+/// row, divided by the compared contact's largest overlap in `reference` (PHYSICS.md / issue
+/// "matched numerics": the position trace relative to the max overlap). Empty with `problem`
+/// set when the traces are not sampled at the same times or have nothing to compare.
+std::optional<double> trace_deviation(const cases::Scene& scene, const cases::RunResult& run,
+                                      const cases::RunResult& reference, std::string& problem);
 
 }  // namespace comparison

@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 
 #include "reference/analytic/analytic_engine.hpp"
+#include "cases/catalogue.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
+#include "reference/inhouse/matched_engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/yade/yade_engine.hpp"
 
@@ -28,6 +30,9 @@ std::unique_ptr<Engine> make_engine(std::string_view name) {
   if (name == "analytic") return std::make_unique<AnalyticEngine>();
   if (name == "lammps") return std::make_unique<LammpsEngine>();
   if (name == "yade") return std::make_unique<YadeEngine>();
+  if (const auto code = cases::matched_code(name); !code.empty()) {
+    return std::make_unique<MatchedInhouseEngine>(std::string(code));
+  }
   return nullptr;
 }
 

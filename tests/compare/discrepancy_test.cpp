@@ -105,3 +105,18 @@ TEST(CompareRuns, CaseTolerancesOverrideTheDefaults) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CompareRuns, AMetricTheEngineCannotExpressIsNotApplicableWithItsReason) {
+  const auto scene = test_support::collision_scene({"max_overlap", "restitution"});
+  auto lammps = test_support::ok_run("lammps", test_support::collision_trace(5e-6));
+  lammps.inexpressible_metrics["restitution"] = "breaks contacts elsewhere by design";
+  const auto o = comparison::evaluate_runs(scene, {test_support::ok_run("analytic", test_support::collision_trace(5e-6)), lammps});
+  ASSERT_EQ(o.comparisons.size(), 2U);
+  EXPECT_EQ(o.comparisons[0].status, comparison::Status::pass);
+  EXPECT_EQ(o.comparisons[1].status, comparison::Status::not_applicable);
+  EXPECT_EQ(o.comparisons[1].note, "lammps: breaks contacts elsewhere by design");
+}
+
+}  // namespace

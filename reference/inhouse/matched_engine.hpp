@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <string>
+
+#include "reference/engine.hpp"
+
+namespace reference {
+
+/// The in-house core run with a reference code's own numerics ("inhouse@lammps",
+/// "inhouse@yade"): integrator, velocity convention, damping formula, friction-limit basis and
+/// tangential-history rule of that code (reference::matched_scene), so that comparing it with
+/// the code isolates the force model down to round-off (DESIGN.md "Matched numerics").
+class MatchedInhouseEngine final : public Engine {
+ public:
+  /// The core matched to reference code `code` ("lammps" or "yade").
+  explicit MatchedInhouseEngine(std::string code);
+  [[nodiscard]] std::string_view name() const noexcept override { return name_; }
+  [[nodiscard]] std::optional<std::string> version() const override;
+  [[nodiscard]] Support supports(const cases::Scene& scene) const override;
+  [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
+                                     const RunOptions& options) const override;
+
+ private:
+  std::string code_;
+  std::string name_;
+};
+
+}  // namespace reference
