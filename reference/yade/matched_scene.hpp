@@ -1,0 +1,13 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "cases/scene.hpp"
+
+namespace reference::yade {
+
+/// The scene the in-house core runs to reproduce YADE 2023.02a's numerics (leapfrog with
+/// half-step velocities as NewtonIntegrator, pinned Δt, and every sub-model replaced by the
+/// variant YADE computes).
+cases::Scene matched_scene(const cases::Scene& scene);
+
+}  // namespace reference::yade
