@@ -190,6 +190,33 @@ std::string conventions_section(const comparison::CaseOutcome& o, int level) {
   return t.rows() == 0 ? "" : heading(level, "Conventions") + t.render() + "\n";
 }
 
+/// The restitution calibrations of every engine: what was tuned, the e_in → e_out samples and
+/// the input chosen (issue "Reference engines" §4).
+std::string calibrations_section(const comparison::CaseOutcome& o, int level) {
+  std::string md;
+  for (const auto& r : o.runs) {
+    for (const auto& c : r.calibrations) {
+      md += fmt::format("**{}** — {}: target restitution {}, chosen input {}. {}\n\n", r.engine, c.parameter,
+                        format_number(c.target), format_number(c.chosen), c.method);
+      MarkdownTable t({"input", "restitution measured", "minus target"});
+      for (const auto& [input, measured] : c.samples) {
+        t.add_row({format_number(input), format_number(measured), format_ratio(measured - c.target)});
+      }
+      md += t.render() + "\n";
+    }
+  }
+  return md.empty() ? "" : heading(level, "Restitution calibration") + md;
+}
+
+/// Metrics an engine cannot express in this case, with the reason.
+std::string inexpressible_section(const comparison::CaseOutcome& o, int level) {
+  MarkdownTable t({"engine", "metric", "why it is not compared"});
+  for (const auto& r : o.runs) {
+    for (const auto& [metric, why] : r.inexpressible_metrics) t.add_row({r.engine, metric, why});
+  }
+  return t.rows() == 0 ? "" : heading(level, "Metrics an engine cannot express") + t.render() + "\n";
+}
+
 std::string warnings_section(const comparison::CaseOutcome& o, int level) {
   std::string md;
   for (const auto& w : o.scene.warnings) md += "- case: " + w + "\n";
@@ -230,6 +257,8 @@ std::string case_section(const comparison::CaseOutcome& o, const std::filesystem
     md += discrepancy_table(o) + "\n";
   }
   md += plots_section(o, plot_dir, report_dir, level + 1);
+  md += inexpressible_section(o, level + 1);
+  md += calibrations_section(o, level + 1);
   md += conventions_section(o, level + 1);
   md += warnings_section(o, level + 1);
   return md;

@@ -40,6 +40,21 @@ Json engine_entry(const cases::RunResult& run, const comparison::MetricSet& metr
     for (const auto& [k, v] : run.conventions) c[k] = v;
     e["conventions"] = c;
   }
+  if (!run.inexpressible_metrics.empty()) {
+    Json n = Json::object();
+    for (const auto& [k, v] : run.inexpressible_metrics) n[k] = v;
+    e["inexpressible_metrics"] = n;
+  }
+  if (!run.calibrations.empty()) {
+    Json cs = Json::array();
+    for (const auto& c : run.calibrations) {
+      Json samples = Json::array();
+      for (const auto& [input, measured] : c.samples) samples.push_back({{"input", input}, {"restitution", number(measured)}});
+      cs.push_back({{"parameter", c.parameter}, {"target", c.target}, {"chosen", number(c.chosen)},
+                    {"method", c.method}, {"samples", samples}});
+    }
+    e["calibrations"] = cs;
+  }
   if (!run.log_tail.empty()) e["log_tail"] = run.log_tail;
   return e;
 }

@@ -57,6 +57,16 @@ nlohmann::ordered_json run_result_json(const cases::RunResult& run) {
   j["conventions"] = run.conventions;
   j["warnings"] = run.warnings;
   j["exact_metrics"] = run.exact_metrics;
+  j["inexpressible_metrics"] = run.inexpressible_metrics;
+  Json calibrations = Json::array();
+  for (const auto& c : run.calibrations) {
+    calibrations.push_back({{"parameter", c.parameter},
+                            {"target", c.target},
+                            {"chosen", c.chosen},
+                            {"samples", c.samples},
+                            {"method", c.method}});
+  }
+  j["calibrations"] = calibrations;
   j["trace"] = trace_json(run.trace);
   j["energy"] = trace_json(run.energy);
   Json snaps = Json::array();
@@ -83,6 +93,16 @@ cases::RunResult run_result_from_json(const nlohmann::ordered_json& j) {
     r.conventions = j.at("conventions").get<std::map<std::string, std::string>>();
     r.warnings = j.at("warnings").get<std::vector<std::string>>();
     r.exact_metrics = j.at("exact_metrics").get<std::map<std::string, double>>();
+    r.inexpressible_metrics =
+        j.value("inexpressible_metrics", std::map<std::string, std::string>{});
+    if (j.contains("calibrations")) {
+      for (const auto& c : j.at("calibrations")) {
+        r.calibrations.push_back({c.at("parameter").get<std::string>(), c.at("target").get<double>(),
+                                  c.at("chosen").get<double>(),
+                                  c.at("samples").get<std::vector<std::pair<double, double>>>(),
+                                  c.at("method").get<std::string>()});
+      }
+    }
     r.trace = trace_from(j.at("trace"));
     r.energy = trace_from(j.at("energy"));
     for (const auto& s : j.at("snapshots")) {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "reports/case_report.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/markdown.hpp"
 #include "reports/results_json.hpp"
@@ -118,6 +119,42 @@ TEST(Gnuplot, RendersAPngAndKeepsItsDataAndScript) {
   EXPECT_EQ(png.substr(1, 3), "PNG");
   EXPECT_TRUE(std::filesystem::exists(dir / "plot.gp"));
   EXPECT_EQ(support::read_file(dir / "plot.dat").find("nan"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+/// An outcome whose LAMMPS run was calibrated and cannot express one metric.
+comparison::CaseOutcome calibrated_outcome() {
+  comparison::CaseOutcome o;
+  o.scene.name = "damped";
+  o.scene.source_sha256 = "0123456789abcdef0123";
+  cases::RunResult r;
+  r.engine = "lammps";
+  r.status = cases::RunStatus::ok;
+  r.inexpressible_metrics["rupture_separation"] = "breaks at the load-controlled pull-off point";
+  r.calibrations.push_back({"tsuji e_in", 0.5, 0.47, {{0.5, 0.52}, {0.47, 0.5}}, "secant on two-body runs"});
+  o.runs.push_back(r);
+  return o;
+}
+
+TEST(ResultsJson, CarriesCalibrationsAndInexpressibleMetrics) {
+  const auto j = reports::results_json(calibrated_outcome());
+  const auto& e = j["engines"]["lammps"];
+  EXPECT_EQ(e["inexpressible_metrics"]["rupture_separation"], "breaks at the load-controlled pull-off point");
+  ASSERT_EQ(e["calibrations"].size(), 1U);
+  EXPECT_EQ(e["calibrations"][0]["chosen"], 0.47);
+  EXPECT_EQ(e["calibrations"][0]["samples"][0]["restitution"], 0.52);
+}
+
+TEST(CaseReport, ShowsTheCalibrationTableAndWhyAMetricIsNotCompared) {
+  const std::string md = reports::case_section(calibrated_outcome(), "/tmp/plots", "/tmp", 2);
+  EXPECT_NE(md.find("Restitution calibration"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 0.47 | 0.5 | 0.00e+00 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| lammps | rupture_separation | breaks at the load-controlled pull-off point |"),
+            std::string::npos)
+      << md;
 }
 
 }  // namespace

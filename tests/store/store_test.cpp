@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// Results that outlive a run: RunResult JSON round trip, the reference-result cache and baselines.
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cases/case_loader.hpp"
+#include "store/result_cache.hpp"
+#include "store/run_result_json.hpp"
+#include "store/scene_json.hpp"
+#include "support/text_file.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh, empty directory for one test.
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("demwb-store-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+/// The canonical single collision, loaded from the source tree.
+cases::Scene single_collision() {
+  return cases::load_case(fs::path(DEMWB_SOURCE_DIR) / "cases" / "canonical" / "single_collision.toml");
+}
+
+/// A result with every field set to something distinguishable.
+cases::RunResult sample_result() {
+  cases::RunResult r;
+  r.engine = "lammps";
+  r.status = cases::RunStatus::ok;
+  r.version = "LAMMPS 29 Sep 2021";
+  r.wall_time_s = 0.25;
+  r.log_tail = "last line";
+  r.conventions["integrator"] = "velocity Verlet";
+  r.warnings.push_back("a warning");
+  r.exact_metrics["restitution"] = 0.5;
+  r.inexpressible_metrics["rupture_separation"] = "breaks at the load-controlled pull-off point";
+  r.calibrations.push_back({"tsuji e_in (pair 0-0)", 0.5, 0.4873, {{0.5, 0.513}, {0.4873, 0.5000000001}}, "secant"});
+  r.trace.add_column("time");
+  r.trace.add_column("p0.x");
+  r.trace.append_row({0.0, 0.1 + 0.2});
+  r.trace.append_row({1e-6, std::nextafter(1.0, 2.0)});
+  r.snapshots.push_back({0.0, {{1.0, 2.0, 3.0}}, {{0.0, 0.0, -1.0}}, {{0.0, 0.0, 0.0}}});
+  return r;
+}
+
+TEST(RunResultJson, RoundTripsEveryFieldAndDoublesExactly) {
+  const cases::RunResult r = sample_result();
+  const cases::RunResult back = store::run_result_from_json(
+      nlohmann::ordered_json::parse(store::run_result_json(r).dump()));
+  EXPECT_EQ(back.engine, r.engine);
+  EXPECT_EQ(back.status, r.status);
+  EXPECT_EQ(back.version, r.version);
+  EXPECT_EQ(back.wall_time_s, r.wall_time_s);
+  EXPECT_EQ(back.log_tail, r.log_tail);
+  EXPECT_EQ(back.conventions, r.conventions);
+  EXPECT_EQ(back.warnings, r.warnings);
+  EXPECT_EQ(back.exact_metrics, r.exact_metrics);
+  EXPECT_EQ(back.inexpressible_metrics, r.inexpressible_metrics);
+  ASSERT_EQ(back.calibrations.size(), 1U);
+  EXPECT_EQ(back.calibrations[0].parameter, r.calibrations[0].parameter);
+  EXPECT_EQ(back.calibrations[0].chosen, r.calibrations[0].chosen);
+  EXPECT_EQ(back.calibrations[0].samples, r.calibrations[0].samples);
+  EXPECT_EQ(back.calibrations[0].method, r.calibrations[0].method);
+  EXPECT_EQ(back.trace.columns(), r.trace.columns());
+  ASSERT_EQ(back.trace.rows(), 2U);
+  EXPECT_EQ(back.trace.values(1)[0], 0.1 + 0.2);
+  EXPECT_EQ(back.trace.values(1)[1], std::nextafter(1.0, 2.0));
+  ASSERT_EQ(back.snapshots.size(), 1U);
+  EXPECT_EQ(back.snapshots[0].position[0][2], 3.0);
+}
+
+TEST(RunResultJson, AMissingFieldIsAnErrorNamingIt) {
+  auto j = store::run_result_json(sample_result());
+  j.erase("version");
+  try {
+    static_cast<void>(store::run_result_from_json(j));
+    FAIL() << "a result without a version was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("version"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneFingerprint, ChangesWithThePhysicsAndNotWithTheFileItCameFrom) {
+  const cases::Scene a = single_collision();
+  cases::Scene b = a;
+  b.source_path = "/somewhere/else.toml";
+  EXPECT_EQ(store::scene_fingerprint(a), store::scene_fingerprint(b));
+  b.particles[0].velocity[0] *= 1.0 + 1e-15;
+  EXPECT_NE(store::scene_fingerprint(a), store::scene_fingerprint(b));
+}
+
+TEST(ResultCache, ReturnsAStoredResultOnlyForTheSameSceneEngineAndVersion) {
+  const store::ResultCache cache(scratch("cache"));
+  const cases::Scene scene = single_collision();
+  const cases::RunResult r = sample_result();
+  EXPECT_FALSE(cache.find(scene, "lammps", r.version));
+  cache.store(scene, r);
+  const auto hit = cache.find(scene, "lammps", r.version);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->source, "cache");
+  EXPECT_EQ(hit->trace.values(1)[0], 0.1 + 0.2);
+  EXPECT_EQ(hit->calibrations.size(), 1U);
+  EXPECT_FALSE(cache.find(scene, "lammps", "LAMMPS 2 Aug 2023"));
+  EXPECT_FALSE(cache.find(scene, "yade", r.version));
+  cases::Scene changed = scene;
+  changed.integration.timestep = 2.0 * *scene.integration.timestep;
+  EXPECT_FALSE(cache.find(changed, "lammps", r.version));
+}
+
+TEST(ResultCache, KeepsOnlySuccessfulRunsAndTreatsACorruptEntryAsAbsent) {
+  const store::ResultCache cache(scratch("corrupt"));
+  const cases::Scene scene = single_collision();
+  cases::RunResult failed = sample_result();
+  failed.status = cases::RunStatus::error;
+  cache.store(scene, failed);
+  EXPECT_FALSE(fs::exists(cache.path_of(scene, "lammps", failed.version)));
+  const cases::RunResult ok = sample_result();
+  cache.store(scene, ok);
+  support::write_file(cache.path_of(scene, "lammps", ok.version), "{ not json");
+  EXPECT_FALSE(cache.find(scene, "lammps", ok.version));
+}
+
+TEST(Baseline, RoundTripsAndNamesTheFileWhenUnreadable) {
+  const fs::path dir = scratch("baseline");
+  store::Baseline b;
+  b.case_name = "single_collision";
+  b.fingerprint = store::scene_fingerprint(single_collision());
+  b.references["lammps"] = sample_result();
+  b.inhouse_metrics["restitution"] = 0.9999537;
+  store::write_baseline(dir / "single_collision.json", b);
+  const store::Baseline back = store::read_baseline(dir / "single_collision.json");
+  EXPECT_EQ(back.case_name, b.case_name);
+  EXPECT_EQ(back.fingerprint, b.fingerprint);
+  EXPECT_EQ(back.inhouse_metrics, b.inhouse_metrics);
+  ASSERT_EQ(back.references.count("lammps"), 1U);
+  EXPECT_EQ(back.references.at("lammps").calibrations.size(), 1U);
+  support::write_file(dir / "broken.json", "[]");
+  try {
+    static_cast<void>(store::read_baseline(dir / "broken.json"));
+    FAIL() << "a malformed baseline was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.json"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
