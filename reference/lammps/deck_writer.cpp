@@ -10,9 +10,11 @@
 #include "dem/contact/pair_table.hpp"
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
+#include "reference/lammps/prescribed_motion.hpp"
 #include "reference/lammps/simulation_box.hpp"
 #include "reference/lammps/snapshots.hpp"
 #include "reference/lammps/trace_columns.hpp"
+#include "reference/lammps/wall_mapping.hpp"
 
 namespace reference::lammps {
 namespace {
@@ -122,9 +124,12 @@ void write_pairs(std::string& deck, const cases::Scene& scene, const AtomTypes& 
   deck += "# explicit pair_coeff for every type pair: LAMMPS' own i-j mixing is never used\n";
   for (std::size_t a = 0; a < types.types.size(); ++a) {
     for (std::size_t b = a; b < types.types.size(); ++b) {
-      const GranularCoeff coeff =
-          map_pair_law(table.law(types.types[a].material, types.types[b].material),
-                       types.reduced_mass(a, b));
+      const GranularCoeff coeff = map_pair_law(
+          table.law(types.types[a].material, types.types[b].material),
+          pair_context(scene, types, a, b));
+      if (!coeff.normal_note.empty()) {
+        deck += fmt::format("# types {}-{}: {}\n", a + 1, b + 1, ascii(coeff.normal_note));
+      }
       deck += fmt::format("# types {}-{}: {}\n", a + 1, b + 1, ascii(coeff.damping_note));
       line(deck, "pair_coeff",
            fmt::format("{} {} {}", a + 1, b + 1, pair_coeff_arguments(coeff)));
@@ -134,19 +139,57 @@ void write_pairs(std::string& deck, const cases::Scene& scene, const AtomTypes& 
   line(deck, "neigh_modify", "delay 0 every 1 check yes");
 }
 
-/// Pair-force store, gravity, integration, freeze (in that order) and the time step.
+/// One `fix wall/gran granular` per (wall, mobile atom type): η depends on the type's mass.
+void write_walls(std::string& deck, const cases::Scene& scene, const AtomTypes& types) {
+  if (scene.walls.empty()) return;
+  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+  deck += "# walls: parameters belong to the particle-wall interaction (E_in = 2(1-nu) E*, "
+          "explicit k_t; lever arm r; delta = 0 counts as contact)\n";
+  for (std::size_t t = 0; t < types.types.size(); ++t) {
+    const AtomType& type = types.types[t];
+    if (type.fixed) continue;
+    line(deck, "group", fmt::format("tr_type_{0} type {0}", t + 1));
+    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+      const cases::WallSpec& wall = scene.walls[w];
+      const std::optional<WallPlane> plane = wall_plane(wall);
+      if (!plane) continue;  // supports() reports it
+      PairContext context;
+      context.reduced_mass = type.mass;
+      context.poisson_ratio = written_poisson(scene, type.material, wall.material);
+      context.wall = true;
+      const GranularCoeff coeff =
+          map_pair_law(table.law(type.material, wall.material), context);
+      deck += fmt::format("# wall {} ('{}') x type {}: {}; {}\n", w, ascii(wall.name), t + 1,
+                          ascii(coeff.normal_note), ascii(coeff.damping_note));
+      line(deck, "fix",
+           fmt::format("{} tr_type_{} wall/gran granular {} {}", wall_fix_id(w, t + 1), t + 1,
+                       pair_coeff_arguments(coeff), wall_plane_arguments(*plane)));
+    }
+  }
+}
+
+/// Pair-force store, walls, contact-force store, gravity, motion, integration, freeze (in that
+/// order) and the time step.
 void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
                  const DeckSettings& s) {
   const bool any_mobile = !types_where(types, false).empty();
   const bool any_fixed = !types_where(types, true).empty();
   deck += "# the pair forces alone, stored before gravity is added and frozen atoms are zeroed\n";
   line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
+  write_walls(deck, scene, types);
+  if (!scene.walls.empty()) {
+    deck += "# pair + wall forces (the wall force is the difference of the two stores)\n";
+    line(deck, "fix", fmt::format("{} all store/force", kContactForceFix));
+  }
   const cases::Vector3& g = scene.gravity;
   const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   if (any_mobile && g_norm > 0.0) {
     line(deck, "fix", fmt::format("tr_gravity tr_mobile gravity {} vector {} {} {}", num(g_norm),
                                   num(g[0]), num(g[1]), num(g[2])));
   }
+  const std::vector<std::string> motion = motion_commands(scene);
+  if (!motion.empty()) deck += "# prescribed motion (fix move variable: x = x(0) + d(time))\n";
+  for (const auto& command : motion) command_line(deck, command);
   if (any_mobile) {
     if (scene.integration.rotation) {
       line(deck, "fix", "tr_integrate tr_mobile nve/sphere  # velocity Verlet of x and omega");
@@ -193,6 +236,26 @@ void write_outputs(std::string& deck, const cases::Scene& scene, const AtomTypes
 }
 
 }  // namespace
+
+double written_poisson(const cases::Scene& scene, std::size_t material_a,
+                       std::size_t material_b) {
+  for (const std::size_t m : {material_a, material_b}) {
+    if (const auto nu = scene.materials.at(m).poisson_ratio) return *nu;
+  }
+  return 0.0;
+}
+
+PairContext pair_context(const cases::Scene& scene, const AtomTypes& types, std::size_t a,
+                         std::size_t b) {
+  PairContext c;
+  c.reduced_mass = types.reduced_mass(a, b);
+  c.poisson_ratio = written_poisson(scene, types.types[a].material, types.types[b].material);
+  return c;
+}
+
+std::string wall_fix_id(std::size_t wall, std::size_t lammps_type) {
+  return fmt::format("tr_wall_{}_{}", wall, lammps_type);
+}
 
 std::string write_deck(const cases::Scene& scene, const DeckSettings& settings) {
   const AtomTypes types = classify_particles(scene);

@@ -5,6 +5,8 @@
 #include <string>
 
 #include "cases/scene.hpp"
+#include "reference/lammps/atom_types.hpp"
+#include "reference/lammps/pair_coeff_mapping.hpp"
 
 namespace reference::lammps {
 
@@ -17,13 +19,25 @@ struct DeckSettings {
   std::string extra_commands;               ///< inserted just before `run` (diagnostics, tests)
 };
 
+/// ν written into Hertz-family coefficients of a contact between two materials: the first one's
+/// ν, else the second's, else 0 (E is converted with it, so the force does not depend on it).
+double written_poisson(const cases::Scene& scene, std::size_t material_a, std::size_t material_b);
+
+/// Translation context of atom types a and b (0-based): m* and ν.
+PairContext pair_context(const cases::Scene& scene, const AtomTypes& types, std::size_t a,
+                         std::size_t b);
+
+/// ID of the `fix wall/gran` of wall `wall` acting on LAMMPS type `lammps_type`.
+std::string wall_fix_id(std::size_t wall, std::size_t lammps_type);
+
 /// The complete LAMMPS input deck for `scene` (pure: same input, same text). SI units,
 /// `atom_style sphere`, `boundary f f f` with simulation_box(), `newton off`,
 /// `comm_modify vel yes`; one atom type per (material, radius, fixed) class; `pair_style
 /// granular` with an explicit `pair_coeff i j` for every type pair (LAMMPS' own mixing is never
 /// used); fixed spheres frozen with one `fix freeze`, mobile ones integrated by `fix nve/sphere`
 /// (`fix nve` when the scene does not integrate rotation); `fix gravity` when g ≠ 0; the trace
-/// by `fix print` (trace_print_plan) and snapshots by `dump custom` at snapshot_steps().
+/// by `fix print` (trace_print_plan); plane walls as `fix wall/gran granular` per mobile type;
+/// prescribed motion by `fix move variable`; snapshots by `dump custom` at snapshot_steps().
 /// Throws std::invalid_argument when the model has a sub-model LAMMPS cannot express.
 std::string write_deck(const cases::Scene& scene, const DeckSettings& settings);
 

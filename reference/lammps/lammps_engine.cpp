@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reference/lammps/lammps_engine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -18,6 +19,7 @@
 #include "reference/lammps/run_conventions.hpp"
 #include "reference/lammps/snapshots.hpp"
 #include "reference/lammps/trace_columns.hpp"
+#include "reference/lammps/wall_mapping.hpp"
 #include "support/text_file.hpp"
 
 namespace reference {
@@ -55,17 +57,22 @@ std::optional<std::string> LammpsEngine::version() const {
 
 Support LammpsEngine::supports(const cases::Scene& scene) const {
   Support s;
-  if (!scene.walls.empty()) {
-    s.reasons.emplace_back("LAMMPS driver: walls are not mapped yet (sphere pairs only)");
+  for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+    for (auto& reason : lammps::unmapped_wall(scene.walls[w], w)) s.reasons.push_back(reason);
   }
   if (scene.fluid) {
     s.reasons.emplace_back(
-        "LAMMPS driver: fluid forces (drag, buoyancy, plug flow) are not mapped");
+        "LAMMPS driver: fluid forces (drag, buoyancy, plug flow) are not mapped (LAMMPS "
+        "GRANULAR has no Brenn drag, buoyancy or plug-flow field)");
   }
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    if (!scene.particles[i].motion.empty()) {
+    if (!scene.particles[i].motion.empty() && !scene.particles[i].fixed) {
       s.reasons.push_back(fmt::format(
-          "LAMMPS driver: the prescribed motion of particle {} is not mapped yet", i));
+          "LAMMPS driver: particle {} has a prescribed motion but is not fixed", i));
+    }
+    if (scene.particles[i].charge != 0.0) {
+      s.reasons.push_back(fmt::format(
+          "LAMMPS driver: particle {} is charged; pair granular has no electrostatics", i));
     }
   }
   try {
@@ -74,6 +81,13 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
       // The model choice is global, so every material pair has the same sub-model types.
       for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0))) {
         s.reasons.push_back(std::move(reason));
+      }
+      if (!scene.walls.empty()) {
+        for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0), true)) {
+          if (std::find(s.reasons.begin(), s.reasons.end(), reason) == s.reasons.end()) {
+            s.reasons.push_back(std::move(reason));
+          }
+        }
       }
     }
   } catch (const dem::ModelError& e) {
@@ -141,6 +155,7 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
   result.status = cases::RunStatus::ok;
   result.conventions =
       lammps::run_conventions(scene, dt, steps, outcome.version.value_or("unknown"), dir);
+  result.inexpressible_metrics = lammps::inexpressible_metrics(scene);
   return result;
 }
 

@@ -5,11 +5,19 @@
 
 namespace reference::lammps {
 
-/// LAMMPS 29 Sep 2021: `fix nve/sphere` (or `fix nve` without rotation) is velocity Verlet.
 cases::Scene matched_scene(const cases::Scene& scene) {
   cases::Scene matched = scene;
+  // fix nve/sphere (fix nve without rotation): velocity Verlet, forces with v(t + Δt/2).
   matched.integration.timestep = core_setup(scene).simulation.timestep;
   matched.integration.scheme = dem::SchemeId::velocity_verlet;
+  // pair granular's Coulomb cap: |F_ne + F_damp|, or |F_ne + 2 F_pulloff| for jkr/dmt.
+  const bool adhesive = scene.model.cohesion == "jkr" || scene.model.cohesion == "dmt";
+  matched.model.friction_limit =
+      adhesive ? dem::FrictionLimit::jkr_shifted : dem::FrictionLimit::elastic_damping;
+  // fix wall/gran: lever arm and contact-point velocity with r, not r − δ/2.
+  matched.model.wall_lever_arm = dem::WallLeverArm::radius;
+  // pair granular jkr: the neck breaks at the load-controlled pull-off overlap δ_f.
+  matched.model.jkr_rupture = dem::JkrRupture::load;
   return matched;
 }
 

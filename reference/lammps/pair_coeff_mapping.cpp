@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reference/lammps/pair_coeff_mapping.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <variant>
 
@@ -8,6 +9,7 @@
 
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "dem/contact/registry.hpp"
+#include "reference/lammps/tsuji_input.hpp"
 
 namespace reference::lammps {
 namespace {
@@ -23,146 +25,283 @@ Overloaded(F...) -> Overloaded<F...>;
 /// Why a slot could not be translated; empty when it was.
 using SlotProblem = std::optional<std::string>;
 
-/// The reason given for a sub-model without a translation.
+/// The reason given for a sub-model without a translation, with why LAMMPS lacks it.
 template <class Model>
-std::string not_mapped(dem::Slot slot) {
-  return fmt::format("LAMMPS driver: {} model '{}' is not mapped yet", dem::to_string(slot),
-                     Model::kKeyword);
+std::string not_mapped(dem::Slot slot, std::string_view why) {
+  return fmt::format("LAMMPS driver: {} model '{}' is not mapped ({})", dem::to_string(slot),
+                     Model::kKeyword, why);
 }
 
-/// Normal slot → `hooke k_e` (the damping coefficient is inserted after the elastic part).
-SlotProblem map_normal(const dem::NormalModel& normal, GranularCoeff& out) {
+/// E to write so that LAMMPS' E* equals `modulus`: pair_coeff reads E* = E/(2(1 − ν²)) for
+/// every pair (lammps-notes §5), this build's fix wall/gran E* = E/(2(1 − ν)) (B3).
+double lammps_youngs_modulus(double modulus, const PairContext& c) {
+  const double nu = c.poisson_ratio;
+  return c.wall ? 2.0 * (1.0 - nu) * modulus : 2.0 * (1.0 - nu * nu) * modulus;
+}
+
+/// True for the cohesion sub-models LAMMPS folds into the normal model (jkr, dmt).
+bool adhesive_normal(const dem::CohesionModel& cohesion) {
+  return std::holds_alternative<dem::JkrCohesion>(cohesion) ||
+         std::holds_alternative<dem::DmtCohesion>(cohesion);
+}
+
+/// Normal slot → `hooke k_e` or `hertz/material E_in η ν` (η inserted by the damping slot).
+SlotProblem map_normal(const dem::PairLaw& law, const PairContext& c, GranularCoeff& out) {
   return std::visit(
       Overloaded{
           [&](const dem::LinearNormal& m) -> SlotProblem {
             out.normal_style = "hooke";
             out.normal_elastic = {m.stiffness};
+            out.normal_note = fmt::format("k_e = {:.17g} N/m", m.stiffness);
+            return std::nullopt;
+          },
+          [&](const dem::HertzNormal& m) -> SlotProblem {
+            out.normal_style = "hertz/material";
+            out.normal_elastic = {lammps_youngs_modulus(m.effective_modulus, c)};
+            out.normal_trailing = {c.poisson_ratio};
+            out.normal_note = fmt::format(
+                "E = {} E* = {:.17g} Pa with E* = {:.17g} Pa, nu = {}",
+                c.wall ? "2(1-nu)" : "2(1-nu^2)", out.normal_elastic[0], m.effective_modulus,
+                c.poisson_ratio);
             return std::nullopt;
           },
           [](const auto& m) -> SlotProblem {
-            return not_mapped<std::decay_t<decltype(m)>>(dem::Slot::normal);
+            return not_mapped<std::decay_t<decltype(m)>>(
+                dem::Slot::normal, "pair granular offers hooke, hertz, hertz/material, dmt, jkr");
           }},
-      normal);
+      law.normal);
 }
 
-/// Constant stiffness of a linear normal sub-model, or empty for a nonlinear one.
-std::optional<double> linear_stiffness(const dem::NormalModel& normal) {
-  return std::visit(Overloaded{[](const dem::LinearNormal& m) -> std::optional<double> {
-                                 return m.stiffness;
-                               },
-                               [](const auto&) -> std::optional<double> { return std::nullopt; }},
-                    normal);
+/// Cohesion slot: jkr / dmt replace the Hertz normal keyword and append γ per surface.
+SlotProblem map_cohesion(const dem::PairLaw& law, const PairContext& c, GranularCoeff& out) {
+  // `modulus` empty: keep the Hertz slot's E (DMT adds only the constant adhesion).
+  const auto adhesive = [&](std::string_view style, std::optional<double> modulus, double gamma,
+                            std::string_view keyword) -> SlotProblem {
+    if (out.normal_style != "hertz/material") {
+      return fmt::format("LAMMPS driver: cohesion '{}' needs normal = 'hertz' (LAMMPS `{}` is a "
+                         "Hertz-based normal model)",
+                         keyword, style);
+    }
+    out.normal_style = std::string(style);
+    if (modulus) out.normal_elastic = {lammps_youngs_modulus(*modulus, c)};
+    out.normal_trailing.push_back(gamma);
+    out.normal_note += fmt::format("; gamma = {:.17g} J/m^2 per surface (LAMMPS' convention too)",
+                                   gamma);
+    return std::nullopt;
+  };
+  return std::visit(
+      Overloaded{
+          [](const dem::NoCohesion&) -> SlotProblem { return std::nullopt; },
+          [&](const dem::JkrCohesion& m) -> SlotProblem {
+            if (c.wall) {
+              return std::string(
+                  "LAMMPS driver: cohesion 'jkr' on a wall is not mapped (fix wall/gran jkr in "
+                  "this build never releases the contact and produces NaN, lammps-notes B5)");
+            }
+            return adhesive("jkr", m.modulus, m.surface_energy, m.kKeyword);
+          },
+          [&](const dem::DmtCohesion& m) -> SlotProblem {
+            return adhesive("dmt", std::nullopt, m.surface_energy, m.kKeyword);
+          },
+          [](const dem::LinearCohesion& m) -> SlotProblem {
+            return not_mapped<std::decay_t<decltype(m)>>(
+                dem::Slot::cohesion,
+                "LAMMPS has no linear cohesion over an interaction radius; pair_style "
+                "hybrid/overlay granular table could emulate it per type pair but this driver "
+                "does not write it");
+          },
+          [](const dem::CoulombCohesion& m) -> SlotProblem {
+            return not_mapped<std::decay_t<decltype(m)>>(
+                dem::Slot::cohesion, "pair_style granular has no electrostatics; a coul/cut "
+                                     "overlay is not written by this driver");
+          }},
+      law.cohesion);
 }
 
-/// Damping slot → `damping velocity` with η in kg/s. LAMMPS 2021 has no restitution-based
-/// damping, so η = β(ε)√(m* k_e) is computed here for this type pair's m* (eq 3.11).
-SlotProblem map_damping(const dem::PairLaw& law, std::optional<double> reduced_mass,
-                        GranularCoeff& out) {
+/// Records `style` with `value` and a note; returns no problem.
+SlotProblem set_damping(GranularCoeff& out, std::string_view style, double value,
+                        std::string note) {
+  out.damping_style = std::string(style);
+  out.damping_coefficient = value;
+  out.damping_note = std::move(note);
+  return std::nullopt;
+}
+
+/// `damping tsuji` with e_in such that α_L(e_in) = factor (the core's dashpot factor per
+/// √(m* F_el/δ)); a problem when no e_in in [0, 1] gives it.
+SlotProblem tsuji_with_factor(GranularCoeff& out, double factor, std::string_view what) {
+  const std::optional<double> e_in = tsuji_input_for_factor(factor);
+  if (!e_in) {
+    return fmt::format("LAMMPS driver: {} needs a Tsuji factor {} outside the range of LAMMPS' "
+                       "polynomial [0, 1.2728]",
+                       what, factor);
+  }
+  return set_damping(
+      out, "tsuji", *e_in,
+      fmt::format("damping tsuji with e_in = {:.17g}: alpha_L(e_in) = {:.17g} = {} (inverse of "
+                  "LAMMPS' Tsuji polynomial, so LAMMPS' dashpot is the core's)",
+                  *e_in, factor, what));
+}
+
+/// Damping slot. LAMMPS 2021 has no restitution-based damping: the core's η (or the Tsuji
+/// input that yields the core's dashpot) is computed here for this pair's m*.
+SlotProblem map_damping(const dem::PairLaw& law, const PairContext& c, GranularCoeff& out) {
+  const bool hooke = out.normal_style == "hooke";
+  const bool jkr = out.normal_style == "jkr";
+  const auto no_jkr = [&](std::string_view keyword) -> SlotProblem {
+    if (!jkr) return std::nullopt;
+    return fmt::format("LAMMPS driver: damping '{}' with cohesion 'jkr' is not mapped exactly "
+                       "(LAMMPS scales it with the JKR contact radius a, the core with "
+                       "sqrt(R* delta))",
+                       keyword);
+  };
   return std::visit(
       Overloaded{
           [&](const dem::NoDamping&) -> SlotProblem {
-            out.damping_style = "velocity";
-            out.damping_coefficient = 0.0;
-            out.damping_note = "eta = 0 (damping 'none')";
-            return std::nullopt;
+            return set_damping(out, "velocity", 0.0, "eta = 0 (damping 'none')");
           },
           [&](const dem::RestitutionDamping& m) -> SlotProblem {
-            const auto stiffness = linear_stiffness(law.normal);
-            if (!stiffness) {
-              return fmt::format(
-                  "LAMMPS driver: damping model '{}' is mapped only with normal model 'linear' "
-                  "(a constant η)",
-                  dem::RestitutionDamping::kKeyword);
+            if (!c.reduced_mass) {
+              return set_damping(out, "velocity", 0.0,
+                                 "eta = 0 (both types fixed: the pair never moves)");
             }
-            out.damping_style = "velocity";
-            if (!reduced_mass) {
-              out.damping_coefficient = 0.0;
-              out.damping_note = "eta = 0 (both types fixed: the pair never moves)";
-              return std::nullopt;
+            if (hooke) {
+              const double k = out.normal_elastic.at(0);
+              const double eta =
+                  dem::laws::restitution_damping_coefficient(m.restitution, *c.reduced_mass, k);
+              return set_damping(
+                  out, "velocity", eta,
+                  fmt::format("eta = -2 ln(e) sqrt(m* k_e/(pi^2 + ln(e)^2)) = {:.17g} kg/s with "
+                              "e = {}, m* = {:.17g} kg, k_e = {} N/m (the core's exact formula)",
+                              eta, m.restitution, *c.reduced_mass, k));
             }
-            out.damping_coefficient = dem::laws::restitution_damping_coefficient(
-                m.restitution, *reduced_mass, *stiffness);
-            out.damping_note =
-                fmt::format("eta = -2 ln(e) sqrt(m* k_e/(pi^2 + ln(e)^2)) = {:.17g} kg/s with "
-                            "e = {}, m* = {:.17g} kg, k_e = {} N/m",
-                            out.damping_coefficient, m.restitution, *reduced_mass, *stiffness);
-            return std::nullopt;
+            if (auto p = no_jkr(m.kKeyword)) return p;
+            // Core: η = f √(m* 2E*a); LAMMPS tsuji: α_L √(m* 4/3 E* a) ⇒ α_L = f √1.5.
+            return tsuji_with_factor(out, m.factor * std::sqrt(1.5),
+                                     fmt::format("sqrt(1.5) * beta(e = {})", m.restitution));
+          },
+          [&](const dem::TsujiDamping& m) -> SlotProblem {
+            if (auto p = no_jkr(m.kKeyword)) return p;
+            return tsuji_with_factor(out, m.factor,
+                                     fmt::format("alpha(e = {}) of the core's tsuji", m.restitution));
+          },
+          [&](const dem::LammpsVelocityDamping& m) -> SlotProblem {
+            return set_damping(out, "velocity", m.damping, "eta given (damping velocity)");
+          },
+          [&](const dem::LammpsMassVelocityDamping& m) -> SlotProblem {
+            return set_damping(out, "mass_velocity", m.rate, "eta/m* given (damping mass_velocity)");
+          },
+          [&](const dem::LammpsViscoelasticDamping& m) -> SlotProblem {
+            if (auto p = no_jkr(m.kKeyword)) return p;
+            return set_damping(out, "viscoelastic", m.rate_per_length,
+                               "eta_0 given (damping viscoelastic, eta = eta_0 a m*)");
+          },
+          [&](const dem::LammpsTsujiDamping& m) -> SlotProblem {
+            if (auto p = no_jkr(m.kKeyword)) return p;
+            return set_damping(out, "tsuji", m.restitution, "nominal e given (damping tsuji as is)");
           },
           [](const auto& m) -> SlotProblem {
-            return not_mapped<std::decay_t<decltype(m)>>(dem::Slot::damping);
+            return not_mapped<std::decay_t<decltype(m)>>(
+                dem::Slot::damping,
+                "LAMMPS 2021 offers velocity, mass_velocity, viscoelastic and tsuji damping only");
           }},
       law.damping);
 }
 
-/// Tangential slot → `tangential linear_nohistory 0 0` for a frictionless contact.
-SlotProblem map_tangential(const dem::TangentialModel& tangential, GranularCoeff& out) {
-  return std::visit(Overloaded{[&](const dem::NoTangential&) -> SlotProblem {
-                                 out.tangential = "linear_nohistory 0 0";
-                                 return std::nullopt;
-                               },
-                               [](const auto& m) -> SlotProblem {
-                                 return not_mapped<std::decay_t<decltype(m)>>(
-                                     dem::Slot::tangential);
-                               }},
-                    tangential);
+/// Tangential slot → linear_nohistory 0 0 (none), linear_history (spring_coulomb) or mindlin
+/// with the stiffness prefactor written explicitly (NULL is wrong for walls, B4).
+SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
+  const bool adhesive = adhesive_normal(law.cohesion);
+  return std::visit(
+      Overloaded{
+          [&](const dem::NoTangential&) -> SlotProblem {
+            // jkr/dmt with linear_nohistory crash with "Neighbor history overflow" (B2).
+            out.tangential = adhesive ? "linear_history 0 0 0" : "linear_nohistory 0 0";
+            return std::nullopt;
+          },
+          [&](const dem::SpringCoulombTangential& m) -> SlotProblem {
+            out.tangential = fmt::format("linear_history {:.17g} {:.17g} {:.17g}", m.stiffness,
+                                         m.damping_ratio, m.friction);
+            return std::nullopt;
+          },
+          [&](const dem::MindlinTangential& m) -> SlotProblem {
+            out.tangential = fmt::format("mindlin {:.17g} {:.17g} {:.17g}",
+                                         16.0 / 3.0 * m.p.shear_modulus, m.p.damping_ratio,
+                                         m.p.friction);
+            return std::nullopt;
+          },
+          [&](const dem::Mindlin8GTangential& m) -> SlotProblem {
+            out.tangential = fmt::format("mindlin {:.17g} {:.17g} {:.17g}",
+                                         8.0 * m.p.shear_modulus, m.p.damping_ratio, m.p.friction);
+            return std::nullopt;
+          }},
+      law.tangential);
 }
 
-/// Cohesion slot: `none` adds nothing.
-SlotProblem map_cohesion(const dem::CohesionModel& cohesion, GranularCoeff&) {
-  return std::visit(Overloaded{[](const dem::NoCohesion&) -> SlotProblem { return std::nullopt; },
-                               [](const auto& m) -> SlotProblem {
-                                 return not_mapped<std::decay_t<decltype(m)>>(
-                                     dem::Slot::cohesion);
-                               }},
-                    cohesion);
+/// Rolling slot: `none` adds nothing, `spring_dashpot_slider` → `rolling sds k_r γ_r μ_r`.
+SlotProblem map_rolling(const dem::RollingModel& rolling, GranularCoeff& out) {
+  return std::visit(
+      Overloaded{[](const dem::NoRolling&) -> SlotProblem { return std::nullopt; },
+                 [&](const dem::SpringDashpotSliderRolling& m) -> SlotProblem {
+                   out.extras.push_back(fmt::format("rolling sds {:.17g} {:.17g} {:.17g}",
+                                                    m.stiffness, m.damping, m.rolling_friction));
+                   return std::nullopt;
+                 },
+                 [](const auto& m) -> SlotProblem {
+                   return not_mapped<std::decay_t<decltype(m)>>(
+                       dem::Slot::rolling,
+                       "LAMMPS 2021 has only the spring-dashpot-slider rolling model sds");
+                 }},
+      rolling);
 }
 
-/// Rolling slot: `none` adds nothing.
-SlotProblem map_rolling(const dem::RollingModel& rolling, GranularCoeff&) {
-  return std::visit(Overloaded{[](const dem::NoRolling&) -> SlotProblem { return std::nullopt; },
-                               [](const auto& m) -> SlotProblem {
-                                 return not_mapped<std::decay_t<decltype(m)>>(dem::Slot::rolling);
-                               }},
-                    rolling);
-}
-
-/// Model policies: `clamp_tensile` → `limit_damping` (LAMMPS sets F_n = 0 where the elastic plus
-/// damping force would attract, as the core's clamp does). The friction-limit and JKR-rupture
-/// policies act only through sub-models this phase does not map.
+/// Model policies: `clamp_tensile` → `limit_damping`. The friction-limit basis, the JKR rupture
+/// point and the wall lever arm are LAMMPS' own (run conventions; matched_scene adopts them).
 void map_policies(const dem::ContactPolicies& policies, GranularCoeff& out) {
   if (policies.clamp_tensile) out.extras.emplace_back("limit_damping");
 }
 
 /// Translates every slot, collecting one reason per slot that cannot be translated.
-std::vector<std::string> translate(const dem::PairLaw& law, std::optional<double> reduced_mass,
+std::vector<std::string> translate(const dem::PairLaw& law, const PairContext& c,
                                    GranularCoeff& out) {
   std::vector<std::string> problems;
-  for (const SlotProblem& p :
-       {map_normal(law.normal, out), map_damping(law, reduced_mass, out),
-        map_tangential(law.tangential, out), map_cohesion(law.cohesion, out),
-        map_rolling(law.rolling, out)}) {
-    if (p) problems.push_back(*p);
-  }
+  const auto note = [&](SlotProblem p) {
+    if (p) problems.push_back(std::move(*p));
+  };
+  note(map_normal(law, c, out));
+  note(map_cohesion(law, c, out));
+  note(map_damping(law, c, out));
+  note(map_tangential(law, out));
+  note(map_rolling(law.rolling, out));
   map_policies(law.policies, out);
   return problems;
 }
 
 }  // namespace
 
-std::vector<std::string> unmapped_sub_models(const dem::PairLaw& law) {
+std::vector<std::string> unmapped_sub_models(const dem::PairLaw& law, bool wall) {
   GranularCoeff ignored;
-  return translate(law, 1.0, ignored);
+  PairContext c;
+  c.reduced_mass = 1.0;
+  c.wall = wall;
+  return translate(law, c, ignored);
 }
 
-GranularCoeff map_pair_law(const dem::PairLaw& law, std::optional<double> reduced_mass) {
+GranularCoeff map_pair_law(const dem::PairLaw& law, const PairContext& context) {
   GranularCoeff out;
-  const std::vector<std::string> problems = translate(law, reduced_mass, out);
+  const std::vector<std::string> problems = translate(law, context, out);
   if (!problems.empty()) {
     std::string message;
     for (const auto& p : problems) message += (message.empty() ? "" : "; ") + p;
     throw std::invalid_argument(message);
   }
   return out;
+}
+
+GranularCoeff map_pair_law(const dem::PairLaw& law, std::optional<double> reduced_mass) {
+  PairContext c;
+  c.reduced_mass = reduced_mass;
+  return map_pair_law(law, c);
 }
 
 std::string pair_coeff_arguments(const GranularCoeff& c) {

@@ -9,6 +9,7 @@
 #include "dem/contact/registry.hpp"
 #include "dem/integrators/scheme.hpp"
 #include "reference/lammps/atom_types.hpp"
+#include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
 #include "reference/lammps/simulation_box.hpp"
 #include "reference/lammps/trace_columns.hpp"
@@ -33,20 +34,25 @@ std::string model_mapping(const dem::ModelChoice& model) {
   return out;
 }
 
-/// η of every type pair, as the deck comments state it.
-std::string damping_per_type_pair(const cases::Scene& scene, const AtomTypes& types) {
+/// The pair_coeff of every type pair with how its damping and normal values were obtained.
+std::string coefficients_per_type_pair(const cases::Scene& scene, const AtomTypes& types) {
   const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
   std::string out;
   for (std::size_t a = 0; a < types.types.size(); ++a) {
     for (std::size_t b = a; b < types.types.size(); ++b) {
-      const GranularCoeff c = map_pair_law(
-          table.law(types.types[a].material, types.types[b].material), types.reduced_mass(a, b));
+      const GranularCoeff c =
+          map_pair_law(table.law(types.types[a].material, types.types[b].material),
+                       pair_context(scene, types, a, b));
       if (!out.empty()) out += "; ";
-      out += fmt::format("types {}-{}: {}", a + 1, b + 1, c.damping_note);
+      out += fmt::format("types {}-{}: `{}` ({}{}{})", a + 1, b + 1, pair_coeff_arguments(c),
+                         c.normal_note, c.normal_note.empty() ? "" : "; ", c.damping_note);
     }
   }
-  return "damping velocity, " + out;
+  return out;
 }
+
+/// True when the model has JKR cohesion.
+bool has_jkr(const cases::Scene& scene) { return scene.model.cohesion == "jkr"; }
 
 }  // namespace
 
@@ -80,7 +86,37 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, do
   c["atom types"] = fmt::format("{} type(s), one per (material, radius, fixed) class, so m* and "
                                 "η are exact per type pair",
                                 types.types.size());
-  c["damping"] = damping_per_type_pair(scene, types);
+  c["damping"] = coefficients_per_type_pair(scene, types);
+  c["friction limit"] =
+      has_jkr(scene) || scene.model.cohesion == "dmt"
+          ? "LAMMPS: mu |F_ne + 2 F_pulloff| (jkr/dmt; the dashpot not included) — the core's "
+            "'jkr_shifted' includes the dashpot"
+          : "LAMMPS: mu |F_elastic + F_damping| (the core's 'elastic_damping'; equals 'total' "
+            "without cohesion)";
+  c["tangential history"] =
+      "displacement, projected onto the tangent plane and rescaled to its old length when "
+      "|xi.n| k_t > 1e-10 F_crit, then xi += v_t dt; when capped xi = -(F_crit t + eta_t v_t)/k_t; "
+      "pair contact velocity uses the full radii, the torque lever r - delta/2";
+  if (!scene.walls.empty()) {
+    c["walls"] =
+        "fix wall/gran granular per (wall, mobile atom type), axis-aligned planes only; E_in = "
+        "2(1-nu)E* (this build's wall E* = E/(2(1-nu))), k_t explicit, m* = the particle mass, "
+        "R* = r; lever arm and contact-point velocity use r (the core's wall_lever_arm 'radius'); "
+        "delta = 0 counts as contact (pairs need delta > 0)";
+  }
+  bool driven = false;
+  for (const auto& p : scene.particles) driven = driven || !p.motion.empty();
+  if (driven) {
+    c["prescribed motion"] =
+        "fix move variable: x = x(0) + sum_k v_k clamp(time - t_k, 0, d_k), v = the stretch's "
+        "velocity; the driven atom is also in the fix freeze group (forces zeroed, m_eff of the "
+        "partner)";
+  }
+  if (has_jkr(scene)) {
+    c["JKR rupture"] =
+        "LAMMPS breaks the neck at the load-controlled pull-off overlap delta_f (r >= r_p + r_q - "
+        "delta_f), i.e. the core's jkr_rupture 'load'; a contact forms only at delta > 0";
+  }
   c["model mapping"] = model_mapping(scene.model);
   const Box box = simulation_box(scene, static_cast<double>(steps) * dt);
   c["box"] =
@@ -100,6 +136,27 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, do
   c["LAMMPS version"] = version;
   c["run directory"] = dir.string();
   return c;
+}
+
+std::map<std::string, std::string> inexpressible_metrics(const cases::Scene& scene) {
+  std::map<std::string, std::string> out;
+  if (!scene.walls.empty() && scene.model.tangential != "none" && scene.integration.rotation &&
+      scene.model.wall_lever_arm == dem::WallLeverArm::contact_point) {
+    const std::string why =
+        "fix wall/gran applies the wall's tangential force at lever arm r (and takes the "
+        "contact-point velocity with r); the case asks for r - delta/2 (wall_lever_arm = "
+        "'contact_point'), which LAMMPS 2021 cannot express (run with wall_lever_arm = 'radius' "
+        "to compare)";
+    for (const char* m : {"spin_after", "tangential_restitution"}) out[m] = why;
+  }
+  if (!has_jkr(scene) || scene.model.jkr_rupture != dem::JkrRupture::displacement) return out;
+  const std::string why =
+      "LAMMPS 2021 breaks a JKR contact at the load-controlled pull-off point delta_f, not at the "
+      "displacement-controlled delta_c the case asks for (jkr_rupture = 'displacement')";
+  for (const char* m : {"rupture_separation", "force_at_rupture", "separation_work"}) {
+    out[m] = why;
+  }
+  return out;
 }
 
 }  // namespace reference::lammps

@@ -19,4 +19,12 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, do
                                                    const std::string& version,
                                                    const std::filesystem::path& dir);
 
+/// Metrics of `scene` that LAMMPS cannot produce as the case defines them, with the reason:
+/// with JKR cohesion and jkr_rupture = "displacement", LAMMPS 2021 breaks the neck at the
+/// load-controlled pull-off overlap δ_f (pair_granular's pulloff_distance), not at δ_c, so the
+/// rupture separation, the force at rupture and the separation work are LAMMPS' own rule's;
+/// with walls, friction, rotation and wall_lever_arm = "contact_point", the spin after impact
+/// and the tangential restitution (fix wall/gran's lever arm is r).
+std::map<std::string, std::string> inexpressible_metrics(const cases::Scene& scene);
+
 }  // namespace reference::lammps

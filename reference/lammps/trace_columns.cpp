@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "reference/lammps/wall_mapping.hpp"
+
 namespace reference::lammps {
 namespace {
 
@@ -37,7 +39,7 @@ struct PairFormulas {
   std::string exact;    ///< 1 when fn is this pair's force alone
 };
 
-PairFormulas pair_formulas(std::size_t ip, std::size_t iq) {
+PairFormulas pair_formulas(std::size_t ip, std::size_t iq, bool only_pair) {
   const std::string dx = fmt::format("(x[{}]-x[{}])", ip, iq);
   const std::string dy = fmt::format("(y[{}]-y[{}])", ip, iq);
   const std::string dz = fmt::format("(z[{}]-z[{}])", ip, iq);
@@ -49,6 +51,11 @@ PairFormulas pair_formulas(std::size_t ip, std::size_t iq) {
   };
   PairFormulas f;
   f.overlap = fmt::format("((c_{0}[{1}][1]+c_{0}[{2}][1])-{3})", kAtomCompute, ip, iq, d);
+  if (only_pair) {
+    f.fn = projected(ip);
+    f.exact = std::string(1, '1');
+    return f;
+  }
   f.fn = fmt::format("({0}>0)*((c_{1}[{2}]==1)*{3}+(c_{1}[{2}]!=1)*(-{4}))", f.overlap,
                      kContactCompute, ip, projected(ip), projected(iq));
   f.exact = fmt::format("({0}<=0)||(c_{1}[{2}]==1)||(c_{1}[{3}]==1)", f.overlap, kContactCompute,
@@ -106,12 +113,27 @@ TracePrintPlan trace_print_plan(const cases::Scene& scene, const AtomTypes& type
   if (!scene.output.trace_pairs.empty()) {
     plan.computes.push_back(fmt::format("compute {} all contact/atom", kContactCompute));
   }
+  const bool only_pair = scene.particles.size() == 2 && scene.walls.empty();
   std::vector<PrintColumn> exact_columns;
   for (const auto& [p, q] : scene.output.trace_pairs) {
-    PairFormulas f = pair_formulas(p + 1, q + 1);
+    PairFormulas f = pair_formulas(p + 1, q + 1, only_pair);
     add(cases::pair_column(p, q, "overlap"), std::move(f.overlap));
     add(cases::pair_column(p, q, "fn"), std::move(f.fn));
     exact_columns.push_back({exact_column(p, q), std::move(f.exact)});
+  }
+  for (const auto& [p, w] : scene.output.trace_walls) {
+    const std::optional<WallPlane> plane = wall_plane(scene.walls.at(w));
+    const std::size_t id = p + 1;
+    if (!plane) {  // never written: supports() rejects such walls
+      add(cases::wall_column(p, w, "overlap"), "0");
+      add(cases::wall_column(p, w, "fn"), "0");
+      continue;
+    }
+    add(cases::wall_column(p, w, "overlap"),
+        fmt::format("(c_{}[{}][1]-{})", kAtomCompute, id, wall_distance_formula(*plane, id)));
+    add(cases::wall_column(p, w, "fn"),
+        fmt::format("{}(f_{}[{}][{}]-f_{}[{}][{}])", plane->lower ? "" : "-", kContactForceFix,
+                    id, plane->axis + 1, kPairForceFix, id, plane->axis + 1));
   }
   for (auto& c : exact_columns) plan.columns.push_back(std::move(c));
 
@@ -124,7 +146,9 @@ TracePrintPlan trace_print_plan(const cases::Scene& scene, const AtomTypes& type
       "overlap: r_p + r_q − |x_p − x_q| from LAMMPS radii and positions",
       "fn: the pair force LAMMPS applied (`fix store/force`, before gravity and freeze) on a "
       "partner whose only contact (`compute contact/atom`) is this pair, projected on n; 0 "
-      "while δ ≤ 0"};
+      "while δ ≤ 0 (two-sphere scenes: never gated, so a JKR neck's tension shows)",
+      "wall overlap: r − distance of the centre from the plane; wall fn: (stored pair + wall "
+      "force − stored pair force)·n, i.e. the walls' force on the sphere along the normal"};
   return plan;
 }
 

@@ -15,6 +15,9 @@ namespace reference::lammps {
 /// ID of the `fix store/force` that keeps each atom's pair (contact) forces before `fix gravity`
 /// adds weight and `fix freeze` zeroes frozen atoms. The deck must define it before both.
 inline constexpr std::string_view kPairForceFix = "tr_pairforce";
+/// ID of the `fix store/force` defined after the walls: pair + wall forces. A wall's force on an
+/// atom is the difference of the two stores.
+inline constexpr std::string_view kContactForceFix = "tr_contactforce";
 /// Name of the step column of the fix-print file (checked, then dropped).
 inline constexpr std::string_view kStepColumn = "step";
 /// Name of a pair's auxiliary column, e.g. "c0-1.fn_exact": 1 on rows where its `fn` is
@@ -47,7 +50,12 @@ struct TracePrintPlan {
 ///   (`compute contact/atom`) is this pair, projected on n = (x_p − x_q)/|x_p − x_q|; 0 while
 ///   δ ≤ 0. `compute pair/local` is not used: it re-evaluates the pair at output time with the
 ///   full-step velocities, not the half-step ones the dashpot saw. When both partners have other
-///   contacts the value is not exact and the auxiliary column exact_column(p, q) says so.
+///   contacts the value is not exact and the auxiliary column exact_column(p, q) says so. In a
+///   scene of exactly two spheres and no walls the force is not gated by δ > 0 (a JKR neck
+///   pulls at δ < 0) and is always exact;
+/// - wall overlap r − (distance of the centre from the plane); wall fn: the stored contact
+///   force minus the stored pair force (the walls' forces) along the wall normal, exact while
+///   the sphere touches only that wall.
 /// Every formula is written out in full inside `$(…:%.17g)`: LAMMPS 2021 passes the value of a
 /// `v_name` reference to another equal-style variable through "%.15g", so a column printed as
 /// `$(v_name:%.17g)` or built from helper variables would lose two digits.
