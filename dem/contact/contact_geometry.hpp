@@ -25,6 +25,7 @@ struct ContactGeometry {
   double contact_distance;  ///< r_p + r_q [m] (r for a wall): centre distance at first touch
   double effect_distance;   ///< r̂_p + r̂_q [m] (r̂ for a wall)
   double charge_product;    ///< q_p q_q [C²] (0 for a wall)
+  bool against_wall = false;  ///< q is a plane wall (wall_geometry), not a sphere
 };
 
 /// The extent of a pair that sets how far its law reaches (for neighbour search).
@@ -101,6 +102,7 @@ struct PlaneWall {
   g.contact_distance = p.radius;
   g.effect_distance = p.effect_radius;
   g.charge_product = 0.0;
+  g.against_wall = true;
   return g;
 }
 

@@ -19,6 +19,7 @@
 #include "dem/contact/slots/damping_lammps_viscoelastic.hpp"
 #include "dem/contact/slots/damping_restitution.hpp"
 #include "dem/contact/slots/damping_tsuji.hpp"
+#include "dem/contact/slots/damping_yade_frictvisco.hpp"
 #include "dem/contact/slots/damping_yade_mindlin.hpp"
 #include "dem/contact/slots/damping_yade_viscel.hpp"
 #include "dem/contact/slots/none.hpp"
@@ -40,7 +41,8 @@ using NormalModel = std::variant<LinearNormal, HertzNormal, HystereticNormal, Po
 using DampingModel =
     std::variant<NoDamping, RestitutionDamping, TsujiDamping, KuwabaraKonoDamping,
                  LammpsVelocityDamping, LammpsMassVelocityDamping, LammpsViscoelasticDamping,
-                 LammpsTsujiDamping, YadeViscElDamping, YadeMindlinDamping>;
+                 LammpsTsujiDamping, YadeViscElDamping, YadeMindlinDamping,
+                 YadeFrictViscoDamping>;
 /// Run-time choice of the tangential sub-model.
 using TangentialModel =
     std::variant<NoTangential, SpringCoulombTangential, MindlinTangential, Mindlin8GTangential>;
@@ -104,7 +106,8 @@ struct ContactOutcome {
       std::visit([&](const auto& m) { return m.evaluate(in, next); }, law.normal);
   const CohesionResponse cohesion =
       std::visit([&](const auto& m) { return m.evaluate(in, elastic, next); }, law.cohesion);
-  out.contact = g.overlap > 0.0 || cohesion.contact;
+  out.contact = g.overlap > 0.0 || (law.policies.contact_at_zero_overlap && g.overlap == 0.0) ||
+                cohesion.contact;
   out.interacting = out.contact || elastic.active || cohesion.active;
   if (!out.interacting) return out;
 

@@ -39,6 +39,9 @@ struct ModelChoice {
   FrictionLimit friction_limit = FrictionLimit::total;
   JkrRupture jkr_rupture = JkrRupture::displacement;
   WallLeverArm wall_lever_arm = WallLeverArm::contact_point;
+  /// Bodies exactly touching (δ = 0) are in contact, so the dashpot and friction act there
+  /// (YADE's Ig2/Law2 keep δ ≥ 0); default false: contact needs δ > 0. Set by matched runs only.
+  bool contact_at_zero_overlap = false;
 };
 
 /// Case-file keyword of a friction-limit policy ("total", …).

@@ -65,7 +65,8 @@ PairLaw make_pair_law(const ModelChoice& choice, const PairProperties& propertie
       make_alternative<TangentialModel>(Slot::tangential, choice.tangential, properties),
       make_alternative<CohesionModel>(Slot::cohesion, choice.cohesion, properties),
       make_alternative<RollingModel>(Slot::rolling, choice.rolling, properties),
-      ContactPolicies{choice.clamp_tensile, choice.friction_limit, choice.jkr_rupture},
+      ContactPolicies{choice.clamp_tensile, choice.friction_limit, choice.jkr_rupture,
+                      choice.contact_at_zero_overlap},
   };
 }
 

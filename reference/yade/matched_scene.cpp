@@ -2,17 +2,35 @@
 #include "reference/yade/matched_scene.hpp"
 
 #include "reference/inhouse/scene_to_core.hpp"
+#include "reference/yade/model_mapping.hpp"
 
 namespace reference::yade {
 
 /// YADE 2023.02a: NewtonIntegrator is leapfrog with half-step velocities, and the velocity a
 /// script gives is taken as v(−Δt/2). The YADE driver leaves the velocities of such a scene
-/// unchanged, so both engines start from the same v(−Δt/2).
+/// unchanged, so both engines start from the same v(−Δt/2). The sub-models and policies are
+/// replaced by the variants the mapped YADE law computes (model_mapping.hpp).
 cases::Scene matched_scene(const cases::Scene& scene) {
   cases::Scene matched = scene;
   matched.integration.timestep = core_setup(scene).simulation.timestep;
   matched.integration.scheme = dem::SchemeId::leapfrog;
   matched.integration.leapfrog_start = dem::LeapfrogStart::given_is_half_step;
+  // FrictViscoPhys: the dashpot sees α·u_n, α = (r_p + r_q)/(r_p + r_q − δ) (2r/(2r − δ), wall).
+  if (matched.model.damping == "restitution" && matched.model.normal == "linear") {
+    matched.model.damping = "yade_frictvisco";
+  }
+  // Coulomb cap: CundallStrack on k_n δ; CundallStrackVisco and Mindlin on the whole normal
+  // force after the dashpot (and Mindlin's clip).
+  const YadeLaw law = map_contact_model(scene).law;
+  matched.model.friction_limit =
+      law == YadeLaw::frict ? dem::FrictionLimit::elastic : dem::FrictionLimit::total;
+  // Mindlin clips the total normal force at ≥ 0 (without adhesion).
+  if (law == YadeLaw::mindlin && matched.model.cohesion == "none") matched.model.clamp_tensile = true;
+  // Ig2 creates a contact at (r_p + r_q)² − d² ≥ 0 and the Law2 keeps it while δ ≥ 0: a pair
+  // that lands exactly on δ = 0 gets the dashpot (and friction) in that step.
+  matched.model.contact_at_zero_overlap = true;
+  // Torque lever arm of a sphere–wall contact: radius − δ/2 (CundallStrack, sphericalBodies).
+  matched.model.wall_lever_arm = dem::WallLeverArm::contact_point;
   return matched;
 }
 

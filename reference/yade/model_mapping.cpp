@@ -34,57 +34,139 @@ std::string_view yade_text_of(const Model&) {
   return std::decay_t<Model>::kYade;
 }
 
-/// What one slot of one pair maps to: a value when expressible, else the reason.
+/// What one slot of one pair maps to: the pair parameters it sets, or the reason it cannot.
 struct SlotMapping {
-  std::optional<double> value;  ///< kn for the normal slot, betan for damping, 0 for the rest
+  bool ok = false;
   std::string reason;
-  std::string convention;       ///< "<keyword>: <registry YADE text>"
+  std::string convention;  ///< "<keyword>: <registry YADE text>"
 };
 
-/// A slot whose sub-model has no YADE mapping (yet); used by the generic visitor branches.
-[[maybe_unused]] SlotMapping unmapped(std::string_view slot, std::string_view keyword) {
-  return {std::nullopt, fmt::format("YADE driver: {} model '{}' is not mapped yet", slot, keyword), ""};
+/// A slot whose sub-model has no YADE mapping, with the reason.
+SlotMapping refused(std::string reason) { return {false, std::move(reason), ""}; }
+
+/// A slot whose sub-model has no YADE mapping in this driver.
+SlotMapping unmapped(std::string_view slot, std::string_view keyword) {
+  return refused(fmt::format("YADE driver: {} model '{}' is not mapped", slot, keyword));
 }
 
 /// A mapped slot with its registry text.
 template <class Model>
-SlotMapping mapped(const Model& m, double value) {
-  return {value, "", fmt::format("{}: {}", keyword_of(m), yade_text_of(m))};
+SlotMapping mapped(const Model& m) {
+  return {true, "", fmt::format("{}: {}", keyword_of(m), yade_text_of(m))};
 }
 
-/// Normal slot → pair stiffness kn (Ip2 `kn` MatchMaker).
-SlotMapping map_normal(const dem::NormalModel& model) {
-  return std::visit(Overloaded{[](const dem::LinearNormal& m) { return mapped(m, m.stiffness); },
-                               [](const auto& m) { return unmapped("normal", keyword_of(m)); }},
-                    model);
+/// The law family the normal and damping slots of a pair ask for, or empty when unmappable.
+std::optional<YadeLaw> law_of(const dem::PairLaw& law) {
+  if (std::holds_alternative<dem::LinearNormal>(law.normal)) {
+    if (std::holds_alternative<dem::NoDamping>(law.damping)) return YadeLaw::frict;
+    if (std::holds_alternative<dem::RestitutionDamping>(law.damping) ||
+        std::holds_alternative<dem::YadeFrictViscoDamping>(law.damping)) {
+      return YadeLaw::frict_visco;
+    }
+    return std::nullopt;
+  }
+  if (std::holds_alternative<dem::HertzNormal>(law.normal)) return YadeLaw::mindlin;
+  return std::nullopt;
 }
 
-/// Damping slot → betan = β/2, since YADE's cn = 2 betan √(m̄ kn) and ours η = β √(m* k).
-SlotMapping map_damping(const dem::DampingModel& model) {
+/// Normal slot → kn (linear) or Mindlin's own E*, R* (hertz).
+SlotMapping map_normal(const dem::NormalModel& model, YadePairParameters& pair) {
   return std::visit(
-      Overloaded{[](const dem::NoDamping& m) { return mapped(m, 0.0); },
-                 [](const dem::RestitutionDamping& m) { return mapped(m, 0.5 * m.factor); },
-                 [](const auto& m) { return unmapped("damping", keyword_of(m)); }},
+      Overloaded{[&](const dem::LinearNormal& m) {
+                   pair.normal_stiffness = m.stiffness;
+                   return mapped(m);
+                 },
+                 [&](const dem::HertzNormal& m) { return mapped(m); },
+                 [](const auto& m) { return unmapped("normal", keyword_of(m)); }},
       model);
 }
 
-/// Tangential slot → shear stiffness 0 and friction angle 0 (frictionless).
-SlotMapping map_tangential(const dem::TangentialModel& model) {
-  return std::visit(Overloaded{[](const dem::NoTangential& m) { return mapped(m, 0.0); },
-                               [](const auto& m) { return unmapped("tangential", keyword_of(m)); }},
-                    model);
+/// Damping slot → betan. FrictViscoPhys: cn = 2 betan √(m̄ kn) and ours η = β √(m* k), so
+/// betan = β/2. Mindlin: cn = 2 β_n √(m̄ k_n) with the tangent k_n, as yade_mindlin.
+SlotMapping map_damping(const dem::DampingModel& model, YadeLaw law, YadePairParameters& pair) {
+  const bool linear = law != YadeLaw::mindlin;
+  return std::visit(
+      Overloaded{
+          [&](const dem::NoDamping& m) { return mapped(m); },
+          [&](const dem::RestitutionDamping& m) {
+            if (!linear) {
+              return refused(
+                  "YADE driver: damping 'restitution' with the Hertz normal model is not mapped "
+                  "(Mindlin clips F_n ≥ 0 and fits β_n for the clipped law; use 'yade_mindlin')");
+            }
+            pair.damping_ratio = 0.5 * m.factor;
+            return mapped(m);
+          },
+          [&](const dem::YadeFrictViscoDamping& m) {
+            if (!linear) return refused("YADE driver: damping 'yade_frictvisco' needs the linear normal model");
+            pair.damping_ratio = 0.5 * m.factor;
+            return mapped(m);
+          },
+          [&](const dem::YadeMindlinDamping& m) {
+            if (linear) return refused("YADE driver: damping 'yade_mindlin' needs the Hertz normal model");
+            pair.damping_ratio = m.damping_ratio;
+            return mapped(m);
+          },
+          [](const auto& m) { return unmapped("damping", keyword_of(m)); }},
+      model);
 }
 
-/// Cohesion slot: only `none` (no YADE law gives the workbench's cohesion natively).
-SlotMapping map_cohesion(const dem::CohesionModel& model) {
-  return std::visit(Overloaded{[](const dem::NoCohesion& m) { return mapped(m, 0.0); },
-                               [](const auto& m) { return unmapped("cohesion", keyword_of(m)); }},
-                    model);
+/// Tangential slot → ks and friction angle atan μ (CundallStrack laws); Mindlin's own k_s.
+SlotMapping map_tangential(const dem::TangentialModel& model, YadeLaw law, YadePairParameters& pair) {
+  return std::visit(
+      Overloaded{
+          [&](const dem::NoTangential& m) { return mapped(m); },
+          [&](const dem::SpringCoulombTangential& m) {
+            if (law == YadeLaw::mindlin) {
+              return refused("YADE driver: tangential 'spring_coulomb' with the Hertz normal model "
+                             "is not mapped (Mindlin's shear stiffness is 8G*√(R*δ); use 'mindlin_8g')");
+            }
+            if (m.damping_ratio != 0.0) {
+              return refused(
+                  "YADE driver: tangential 'spring_coulomb' with tangential_damping_ratio ≠ 0 is "
+                  "not mapped (YADE's CundallStrack laws have no tangential dashpot)");
+            }
+            pair.shear_stiffness = m.stiffness;
+            pair.friction_angle = std::atan(m.friction);
+            return mapped(m);
+          },
+          [&](const dem::Mindlin8GTangential& m) {
+            if (law != YadeLaw::mindlin) {
+              return refused("YADE driver: tangential 'mindlin_8g' needs the Hertz normal model");
+            }
+            if (m.p.damping_ratio != 0.0) {
+              return refused("YADE driver: tangential 'mindlin_8g' with tangential_damping_ratio ≠ 0 "
+                             "is not mapped (Mindlin's betas = betan while sticking)");
+            }
+            pair.friction_angle = std::atan(m.p.friction);
+            return mapped(m);
+          },
+          [](const auto& m) { return unmapped("tangential", keyword_of(m)); }},
+      model);
+}
+
+/// Cohesion slot: `none`, or DMT through Mindlin's adhesion (gamma); JKR has no YADE law.
+SlotMapping map_cohesion(const dem::CohesionModel& model, YadeLaw law, double& surface_energy) {
+  return std::visit(
+      Overloaded{[](const dem::NoCohesion& m) { return mapped(m); },
+                 [&](const dem::DmtCohesion& m) {
+                   if (law != YadeLaw::mindlin) return refused("YADE driver: cohesion 'dmt' needs the Hertz normal model");
+                   if (surface_energy != 0.0 && surface_energy != m.surface_energy) {
+                     return refused(
+                         "YADE driver: cohesion 'dmt' with different surface energies per pair is "
+                         "not mapped (Ip2_FrictMat_FrictMat_MindlinPhys.gamma is one value for all pairs)");
+                   }
+                   surface_energy = m.surface_energy;
+                   return mapped(m);
+                 },
+                 [](const dem::JkrCohesion&) { return refused("YADE 2023.02a has no JKR law"); },
+                 [](const auto& m) { return unmapped("cohesion", keyword_of(m)); }},
+      model);
 }
 
 /// Rolling slot: only `none`.
 SlotMapping map_rolling(const dem::RollingModel& model) {
-  return std::visit(Overloaded{[](const dem::NoRolling& m) { return mapped(m, 0.0); },
+  return std::visit(Overloaded{[](const dem::NoRolling& m) { return mapped(m); },
                                [](const auto& m) { return unmapped("rolling", keyword_of(m)); }},
                     model);
 }
@@ -99,13 +181,76 @@ void add_reason(std::vector<std::string>& reasons, const std::string& reason) {
 
 /// Warning about YADE's dashpot velocity, which is not exactly eq 3.10's.
 std::string dashpot_warning() {
-  return "damping 'restitution' via Law2_ScGeom_FrictViscoPhys_CundallStrackVisco: YADE's dashpot "
+  return "damping via Law2_ScGeom_FrictViscoPhys_CundallStrackVisco: YADE's dashpot "
          "uses the relative translational velocity scaled by α = (r_p + r_q)/(r_p + r_q − δ) "
-         "(ScGeom::getIncidentVel with avoidGranularRatcheting, not switchable), so its viscous "
-         "force is α·η·u_n instead of eq 3.10's η·u_n — larger by the relative amount "
-         "δ/(r_p + r_q − δ); it also acts at δ = 0 exactly, where the core has no contact. "
-         "The spring and η itself (m* = the mobile mass against a fixed partner) are exact; "
-         "the force is not clamped at zero, as in eq 3.10";
+         "(2r/(2r − δ) against a wall; ScGeom::getIncidentVel with avoidGranularRatcheting, not "
+         "switchable), so its viscous force is α·η·u_n instead of eq 3.10's η·u_n — larger by the "
+         "relative amount δ/(r_p + r_q − δ); it also acts at δ = 0 exactly, where the core has no "
+         "contact. The spring and η itself (m* = the mobile mass against a fixed partner) are "
+         "exact; the force is not clamped at zero, as in eq 3.10 (matched runs use the core's "
+         "damping 'yade_frictvisco', which has α)";
+}
+
+/// Warning about YADE's tangential kinematics, which differ from eq 3.9's.
+std::string tangential_warning() {
+  return "tangential: YADE integrates the shear force incrementally, F_s −= k_s·Δu_s, with "
+         "Δu_s = [α (u_p − u_q) − (r_p ω_p + r_q ω_q) × n]_t Δt (α as the dashpot's; full radii, "
+         "not r − δ/2; Ig2 noRatch/avoidGranularRatcheting = True), rotates the stored force by "
+         "n_old × n_new and the mean spin about n without re-projecting it, and scales it back "
+         "to μ·|F_n| when it exceeds the cap (Cundall–Strack truncation). The torque lever arm is "
+         "r − δ/2 (as the core's contact_point policy). In gross sliding only the direction of "
+         "Δu_s matters, so the force equals the core's";
+}
+
+/// E* from the scene materials as YADE's Mindlin Ip2 forms it; empty when E or ν is missing.
+std::optional<double> mindlin_modulus(const cases::Scene& scene, std::size_t a, std::size_t b) {
+  const auto& ma = scene.materials[a];
+  const auto& mb = scene.materials[b];
+  if (!ma.youngs_modulus || !ma.poisson_ratio || !mb.youngs_modulus || !mb.poisson_ratio) {
+    return std::nullopt;
+  }
+  return yade_effective_modulus(*ma.youngs_modulus, *ma.poisson_ratio, *mb.youngs_modulus,
+                                *mb.poisson_ratio);
+}
+
+/// Checks that YADE's Mindlin, which mixes E* itself, gets the pair's E* of the core.
+void check_mindlin_modulus(const cases::Scene& scene, const dem::PairLaw& law, std::size_t a,
+                           std::size_t b, std::vector<std::string>& reasons) {
+  const auto* hertz = std::get_if<dem::HertzNormal>(&law.normal);
+  if (hertz == nullptr) return;
+  const auto yade = mindlin_modulus(scene, a, b);
+  if (!yade) {
+    add_reason(reasons, fmt::format("YADE driver: Hertz–Mindlin needs youngs_modulus and "
+                                    "poisson_ratio of materials '{}' and '{}'",
+                                    scene.materials[a].name, scene.materials[b].name));
+    return;
+  }
+  if (std::abs(*yade - hertz->effective_modulus) > 1e-14 * hertz->effective_modulus) {
+    add_reason(reasons, fmt::format(
+        "YADE driver: Hertz–Mindlin forms E* from the materials ({:.17g} Pa for '{}'–'{}'), but "
+        "the pair table gives {:.17g} Pa (a pair override cannot be passed to "
+        "Ip2_FrictMat_FrictMat_MindlinPhys)",
+        *yade, scene.materials[a].name, scene.materials[b].name, hertz->effective_modulus));
+  }
+}
+
+/// Walls: YADE's utils.wall is an axis-aligned, immobile plane; Mindlin gives it R* = r/2.
+void check_walls(const cases::Scene& scene, YadeLaw law, std::vector<std::string>& reasons) {
+  for (const auto& w : scene.walls) {
+    if (wall_axis(w.normal).axis < 0) {
+      add_reason(reasons, fmt::format("YADE driver: wall '{}' is not normal to a coordinate axis "
+                                      "(utils.wall is axis-aligned)", w.name));
+    }
+    if (w.velocity[0] != 0.0 || w.velocity[1] != 0.0 || w.velocity[2] != 0.0) {
+      add_reason(reasons, fmt::format("YADE driver: moving wall '{}' is not mapped", w.name));
+    }
+    if (law == YadeLaw::mindlin) {
+      add_reason(reasons,
+                 "YADE driver: Hertz–Mindlin against a plane wall is not mapped (YADE 2023.02a's "
+                 "Ig2_Wall_Sphere_ScGeom gives the wall the sphere's radius, so Mindlin uses "
+                 "R* = r/2 instead of r)");
+    }
+  }
 }
 
 }  // namespace
@@ -113,6 +258,21 @@ std::string dashpot_warning() {
 double yade_mixed_damping_ratio(double a, double b) noexcept {
   if (a != 0.0 && b != 0.0) return (a + b) / 2.0;
   return b == 0.0 ? a : b;
+}
+
+double yade_effective_modulus(double young_a, double poisson_a, double young_b,
+                              double poisson_b) noexcept {
+  return young_a * young_b /
+         ((1.0 - poisson_a * poisson_a) * young_b + (1.0 - poisson_b * poisson_b) * young_a);
+}
+
+WallAxis wall_axis(const cases::Vector3& n) noexcept {
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3;
+    const int j = (k + 2) % 3;
+    if (n[k] != 0.0 && n[i] == 0.0 && n[j] == 0.0) return {k, n[k] > 0.0 ? 1 : -1};
+  }
+  return {};
 }
 
 YadeModelMapping map_contact_model(const cases::Scene& scene) {
@@ -126,39 +286,70 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
   }
   const std::size_t n = table->material_count();
   out.material_damping_ratio.assign(n, 0.0);
+  out.material_young.assign(n, 1.0);
+  out.material_poisson.assign(n, 0.25);
+  std::optional<YadeLaw> family;
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a; b < n; ++b) {
       const dem::PairLaw& law = table->law(a, b);
-      const SlotMapping normal = map_normal(law.normal);
-      const SlotMapping damping = map_damping(law.damping);
-      const SlotMapping slots[] = {normal, damping, map_tangential(law.tangential),
-                                   map_cohesion(law.cohesion), map_rolling(law.rolling)};
+      const auto pair_family = law_of(law);
+      YadePairParameters pair{a, b};
+      SlotMapping slots[5];
+      slots[0] = map_normal(law.normal, pair);
+      const YadeLaw f = pair_family.value_or(YadeLaw::frict);
+      slots[1] = pair_family ? map_damping(law.damping, f, pair)
+                             : (slots[0].ok ? unmapped("damping", std::visit([](const auto& m) { return keyword_of(m); }, law.damping))
+                                            : SlotMapping{true, "", ""});
+      slots[2] = map_tangential(law.tangential, f, pair);
+      slots[3] = map_cohesion(law.cohesion, f, out.surface_energy);
+      slots[4] = map_rolling(law.rolling);
       const char* names[] = {"normal", "damping", "tangential", "cohesion", "rolling"};
       bool ok = true;
-      for (std::size_t s = 0; s < std::size(slots); ++s) {
-        if (!slots[s].value) {
+      for (std::size_t s = 0; s < 5; ++s) {
+        if (!slots[s].ok) {
           add_reason(out.reasons, slots[s].reason);
           ok = false;
-        } else {
+        } else if (!slots[s].convention.empty()) {
           out.conventions[fmt::format("contact {}", names[s])] = slots[s].convention;
         }
       }
-      if (!ok) continue;
-      out.pairs.push_back({a, b, *normal.value, *damping.value});
-      if (a == b) out.material_damping_ratio[a] = *damping.value;
+      if (!ok || !pair_family) continue;
+      if (family && *family != *pair_family) {
+        add_reason(out.reasons, "YADE driver: material pairs need different YADE law families");
+        continue;
+      }
+      family = pair_family;
+      check_mindlin_modulus(scene, law, a, b, out.reasons);
+      out.pairs.push_back(pair);
+      if (a == b) out.material_damping_ratio[a] = pair.damping_ratio;
     }
   }
   if (!out.reasons.empty()) return out;
-
-  for (const auto& p : out.pairs) out.viscous = out.viscous || p.damping_ratio != 0.0;
+  out.law = family.value_or(YadeLaw::frict);
+  out.viscous = out.law == YadeLaw::frict_visco;
+  check_walls(scene, out.law, out.reasons);
+  if (out.law == YadeLaw::mindlin) {
+    for (std::size_t k = 0; k < n; ++k) {
+      out.material_young[k] = scene.materials[k].youngs_modulus.value_or(1.0);
+      out.material_poisson[k] = scene.materials[k].poisson_ratio.value_or(0.25);
+    }
+  }
   if (out.viscous && scene.model.clamp_tensile) {
     out.reasons.push_back(
         "YADE driver: damping 'restitution' with clamp_tensile = true is not mapped yet "
         "(ViscElMat clamps, but takes the dashpot per material, not per particle pair's m*)");
   }
+  if (out.law == YadeLaw::mindlin && out.pairs.size() > 0 && !scene.model.clamp_tensile) {
+    bool damped = false;
+    for (const auto& p : out.pairs) damped = damped || p.damping_ratio != 0.0;
+    if (damped) {
+      out.warnings.push_back("damping 'yade_mindlin': YADE's Mindlin clips F_n ≥ 0 (the case "
+                             "does not set clamp_tensile)");
+    }
+  }
   // FrictViscoMat carries betan per material; the pair value is YADE's mix of the two.
   for (const auto& p : out.pairs) {
-    if (p.material_a == p.material_b) continue;
+    if (!out.viscous || p.material_a == p.material_b) continue;
     const double yade = yade_mixed_damping_ratio(out.material_damping_ratio[p.material_a],
                                                  out.material_damping_ratio[p.material_b]);
     if (std::abs(yade - p.damping_ratio) > 1e-15 * std::abs(p.damping_ratio)) {
@@ -170,6 +361,29 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
     }
   }
   if (out.viscous) out.warnings.push_back(dashpot_warning());
+  bool friction = false;
+  for (const auto& p : out.pairs) friction = friction || p.shear_stiffness != 0.0 || p.friction_angle != 0.0;
+  if (friction) {
+    out.warnings.push_back(tangential_warning());
+    const char* yade_basis = out.law == YadeLaw::frict ? "elastic" : "total";
+    out.conventions["friction limit"] = fmt::format(
+        "YADE caps |F_s| at tan(frictAngle)·|F_n| with the {} normal force ({}); the case asks "
+        "'{}'",
+        yade_basis,
+        out.law == YadeLaw::frict ? "CundallStrack: k_n δ"
+                                  : "normalForce after the dashpot (and the clip, Mindlin)",
+        dem::to_string(scene.model.friction_limit));
+    const bool same = scene.model.friction_limit == dem::FrictionLimit::total ||
+                      (out.law != YadeLaw::frict &&
+                       scene.model.friction_limit == dem::FrictionLimit::elastic_damping &&
+                       out.surface_energy == 0.0) ||
+                      (out.law == YadeLaw::frict);
+    if (!same) {
+      out.warnings.push_back(fmt::format(
+          "friction limit: YADE caps with the {} normal force, the case's policy is '{}'",
+          yade_basis, dem::to_string(scene.model.friction_limit)));
+    }
+  }
   return out;
 }
 

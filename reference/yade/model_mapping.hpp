@@ -10,32 +10,57 @@
 
 namespace reference::yade {
 
+/// The YADE 2023.02a contact-law family a scene is expressed with (yade-notes §3–§5).
+enum class YadeLaw {
+  frict,        ///< FrictMat + Ip2_…_FrictPhys(kn, ks, frictAngle) + Law2_ScGeom_FrictPhys_CundallStrack
+  frict_visco,  ///< FrictViscoMat(betan) + Ip2_…_FrictViscoPhys(kn, kRatio, frictAngle) + Law2_…_CundallStrackVisco
+  mindlin,      ///< FrictMat(young, poisson) + Ip2_FrictMat_FrictMat_MindlinPhys + Law2_ScGeom_MindlinPhys_Mindlin
+};
+
 /// One material pair's contact parameters, taken from the workbench's pair table and written
-/// into the script explicitly (YADE's own mixing is never used).
+/// into the script explicitly (YADE's own mixing is never used where YADE offers a MatchMaker).
 struct YadePairParameters {
   std::size_t material_a = 0;
   std::size_t material_b = 0;
-  double normal_stiffness = 0.0;  ///< kn [N/m] of the pair (MatchMaker value)
-  double damping_ratio = 0.0;     ///< betan = η / (2 √(m* kn)) the pair needs; 0 without dashpot
+  double normal_stiffness = 0.0;  ///< kn [N/m] (frict, frict_visco); 0 for Mindlin
+  double damping_ratio = 0.0;     ///< betan: frict_visco η/(2√(m* kn)); Mindlin β_n; 0 without dashpot
+  double shear_stiffness = 0.0;   ///< ks [N/m] (frict; frict_visco passes kRatio = ks/kn); 0 for Mindlin
+  double friction_angle = 0.0;    ///< atan μ [rad] (frictAngle MatchMaker)
 };
 
-/// How the scene's contact model is expressed in YADE 2023.02a (phase 1: linear spring with an
-/// optional restitution dashpot, frictionless, no cohesion, no rolling resistance).
+/// How the scene's contact model and walls are expressed in YADE 2023.02a.
 struct YadeModelMapping {
-  bool viscous = false;                     ///< FrictViscoMat family (dashpot) instead of FrictMat
+  YadeLaw law = YadeLaw::frict;
+  bool viscous = false;                        ///< law == frict_visco
   std::vector<double> material_damping_ratio;  ///< FrictViscoMat.betan per scene material
-  std::vector<YadePairParameters> pairs;    ///< every material pair a ≤ b
-  std::vector<std::string> reasons;         ///< why the model cannot be expressed (empty: it can)
-  std::vector<std::string> warnings;        ///< where YADE's law differs from the workbench's
+  std::vector<double> material_young;          ///< FrictMat.young per material (Mindlin; else 1)
+  std::vector<double> material_poisson;        ///< FrictMat.poisson per material (Mindlin; else 0.25)
+  double surface_energy = 0.0;                 ///< Mindlin DMT gamma (one value for every pair); 0: none
+  std::vector<YadePairParameters> pairs;       ///< every material pair a ≤ b
+  std::vector<std::string> reasons;            ///< why the model cannot be expressed (empty: it can)
+  std::vector<std::string> warnings;           ///< where YADE's law differs from the workbench's
   std::map<std::string, std::string> conventions;  ///< "contact <slot>" → registry mapping text
 };
 
-/// Maps the scene's contact model, one small function per slot. Never throws: a model the core
-/// cannot build gives a reason.
+/// Maps the scene's contact model (one small function per slot) and its plane walls. Never
+/// throws: a model the core cannot build gives a reason.
 YadeModelMapping map_contact_model(const cases::Scene& scene);
 
 /// Pair damping ratio YADE forms from two FrictViscoMat.betan values (Ip2_FrictViscoMat_…:
 /// the mean when both are non-zero, else the non-zero one).
 [[nodiscard]] double yade_mixed_damping_ratio(double betan_a, double betan_b) noexcept;
+
+/// YADE Hertz–Mindlin's E* from two materials, E_a E_b / ((1 − ν_a²) E_b + (1 − ν_b²) E_a)
+/// (eq 3.13 in YADE's operation order). Pure.
+[[nodiscard]] double yade_effective_modulus(double young_a, double poisson_a, double young_b,
+                                            double poisson_b) noexcept;
+
+/// Axis (0, 1, 2) and sense (+1/−1) of utils.wall for a plane wall normal, or axis −1 when the
+/// normal is not a coordinate axis (YADE's Wall is axis-aligned).
+struct WallAxis {
+  int axis = -1;
+  int sense = 0;
+};
+[[nodiscard]] WallAxis wall_axis(const cases::Vector3& normal) noexcept;
 
 }  // namespace reference::yade

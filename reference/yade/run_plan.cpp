@@ -12,8 +12,8 @@
 namespace reference::yade {
 namespace {
 
-/// True when particle i overlaps another particle at t = 0 (δ > 0: the core's contact rule, and
-/// YADE's for a new contact). All pairs, O(N²): fine for the scenes phase 1 supports.
+/// True when particle i overlaps another particle or a wall at t = 0 (δ > 0: the core's contact
+/// rule, and YADE's for a new contact). All pairs, O(N²): fine for the small scenes YADE runs.
 bool starts_in_contact(const cases::Scene& scene, std::size_t i) {
   const auto& p = scene.particles[i];
   for (std::size_t j = 0; j < scene.particles.size(); ++j) {
@@ -23,6 +23,11 @@ bool starts_in_contact(const cases::Scene& scene, std::size_t i) {
     const double dy = p.position[1] - q.position[1];
     const double dz = p.position[2] - q.position[2];
     if (p.radius + q.radius - std::sqrt(dx * dx + dy * dy + dz * dz) > 0.0) return true;
+  }
+  for (const auto& w : scene.walls) {
+    double distance = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) distance += (p.position[k] - w.point[k]) * w.normal[k];
+    if (p.radius - distance > 0.0) return true;
   }
   return false;
 }
@@ -36,14 +41,7 @@ bool declares_half_step_velocities(const cases::Scene& scene) {
 }  // namespace
 
 std::vector<std::string> trace_columns(const cases::Scene& scene) {
-  std::vector<std::string> columns{"time"};
-  for (const std::size_t i : scene.output.trace_particles) {
-    for (const auto q : cases::kParticleQuantities) columns.push_back(cases::particle_column(i, q));
-  }
-  for (const auto& [p, q] : scene.output.trace_pairs) {
-    for (const auto name : cases::kPairQuantities) columns.push_back(cases::pair_column(p, q, name));
-  }
-  return columns;
+  return cases::trace_layout(scene).columns();
 }
 
 std::vector<std::uint64_t> snapshot_iterations(std::vector<double> times, double dt,

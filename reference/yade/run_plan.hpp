@@ -28,8 +28,9 @@ struct YadeRunPlan {
 /// Builds the plan. Throws dem::ModelError when the core cannot resolve the time step.
 YadeRunPlan make_run_plan(const cases::Scene& scene);
 
-/// The trace columns of the scene, in the in-house engine's order: time; per traced particle
-/// x y z vx vy vz wx wy wz fx fy fz; per traced pair overlap, fn.
+/// The trace columns of the scene, in the in-house engine's order (cases::trace_layout): time;
+/// per traced particle x y z vx vy vz wx wy wz fx fy fz; per traced pair and per traced
+/// particle–wall contact overlap, fn.
 std::vector<std::string> trace_columns(const cases::Scene& scene);
 
 /// Iterations at which the in-house engine takes the snapshots at `times` with step dt over

@@ -7,7 +7,6 @@ namespace reference::yade {
 
 std::vector<std::string> unsupported_scene_features(const cases::Scene& scene) {
   std::vector<std::string> reasons;
-  if (!scene.walls.empty()) reasons.emplace_back("YADE driver: plane walls are not mapped yet");
   if (scene.fluid) {
     reasons.emplace_back("YADE driver: fluid forces (drag, buoyancy, pressure gradient) are not mapped");
   }

@@ -44,43 +44,94 @@ void write_header(std::string& s, const cases::Scene& scene, const YadeRunPlan& 
                  py_vector3(scene.gravity), scene.integration.rotation ? "True" : "False");
 }
 
+/// Python literal of a MatchMaker giving one value per material pair (algo 'val' with NaN for
+/// a pair that is missing, so that it could never pass unnoticed).
+template <class F>
+std::string pair_match_maker(const YadeRunPlan& plan, F value) {
+  std::string rows;
+  for (const auto& p : plan.model.pairs) {
+    rows += fmt::format("({}, {}, {}), ", p.material_a, p.material_b, py_float(value(p)));
+  }
+  return fmt::format("MatchMaker(matches=({}), algo='val', val=float('nan'))", rows);
+}
+
 void write_materials(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   auto out = std::back_inserter(s);
-  const bool viscous = plan.model.viscous;
-  s += "# Materials: O.materials id = scene material index. young and poisson are placeholders:\n"
-       "# every stiffness comes from the per-pair MatchMakers below.\n"
-       "MATERIALS = [  # (label, density, betan)\n";
+  const YadeModelMapping& m = plan.model;
+  s += m.law == YadeLaw::mindlin
+           ? "# Materials: O.materials id = scene material index. young and poisson are the case's:\n"
+             "# Mindlin forms E* = E_a E_b/((1-nu_a^2) E_b + (1-nu_b^2) E_a) and G* from them.\n"
+           : "# Materials: O.materials id = scene material index. young and poisson are placeholders:\n"
+             "# every stiffness comes from the per-pair MatchMakers below.\n";
+  s += "MATERIALS = [  # (label, density, young, poisson, betan)\n";
   for (std::size_t k = 0; k < scene.materials.size(); ++k) {
-    const double betan = k < plan.model.material_damping_ratio.size() ? plan.model.material_damping_ratio[k] : 0.0;
-    fmt::format_to(out, "    ({}, {}, {}),\n", py_string(scene.materials[k].name),
-                   py_float(scene.materials[k].density), py_float(betan));
+    const auto at = [k](const std::vector<double>& v, double fallback) {
+      return k < v.size() ? v[k] : fallback;
+    };
+    fmt::format_to(out, "    ({}, {}, {}, {}, {}),\n", py_string(scene.materials[k].name),
+                   py_float(scene.materials[k].density), py_float(at(m.material_young, 1.0)),
+                   py_float(at(m.material_poisson, 0.25)), py_float(at(m.material_damping_ratio, 0.0)));
   }
   s += "]\n"
-       "for k, (label, density, betan) in enumerate(MATERIALS):\n";
-  s += viscous ? "    mat = FrictViscoMat(young=1.0, poisson=0.25, density=density, frictionAngle=0.0,\n"
-                 "                        betan=betan, label=label)\n"
-               : "    mat = FrictMat(young=1.0, poisson=0.25, density=density, frictionAngle=0.0, label=label)\n";
+       "for k, (label, density, young, poisson, betan) in enumerate(MATERIALS):\n";
+  s += m.viscous ? "    mat = FrictViscoMat(young=young, poisson=poisson, density=density, frictionAngle=0.0,\n"
+                   "                        betan=betan, label=label)\n"
+                 : "    mat = FrictMat(young=young, poisson=poisson, density=density, frictionAngle=0.0, label=label)\n";
   s += "    assert O.materials.append(mat) == k\n\n";
 
   s += "# Contact parameters of every material pair from the workbench's pair table: exact values,\n"
-       "# YADE's own mixing is not used (a pair missing here would get NaN).\n"
-       "PAIR_KN = (  # (material a, material b, kn [N/m])\n";
-  for (const auto& p : plan.model.pairs) {
-    fmt::format_to(out, "    ({}, {}, {}),\n", p.material_a, p.material_b, py_float(p.normal_stiffness));
+       "# YADE's own mixing is not used (a pair missing here would get NaN).\n";
+  fmt::format_to(out, "FRICTION_ANGLE = {}  # atan(mu) per pair\n",
+                 pair_match_maker(plan, [](const auto& p) { return p.friction_angle; }));
+  if (m.law == YadeLaw::mindlin) {
+    bool damped = false;
+    for (const auto& p : m.pairs) damped = damped || p.damping_ratio != 0.0;
+    std::string args = "frictAngle=FRICTION_ANGLE";
+    if (damped) {
+      fmt::format_to(out, "BETAN = {}  # normal damping ratio per pair\n",
+                     pair_match_maker(plan, [](const auto& p) { return p.damping_ratio; }));
+      fmt::format_to(out, "BETAS = {}  # no shear dashpot\n",
+                     pair_match_maker(plan, [](const auto&) { return 0.0; }));
+      args += ", betan=BETAN, betas=BETAS";
+    }
+    if (m.surface_energy != 0.0) args += ", gamma=" + py_float(m.surface_energy);
+    s += "# Hertz-Mindlin: k_no = 4/3 E* sqrt(R*), k_s = 8 G* sqrt(R* delta); c_n = 2 betan sqrt(m k_n)\n";
+    fmt::format_to(out, "IP2 = Ip2_FrictMat_FrictMat_MindlinPhys({})\n", args);
+    fmt::format_to(out, "LAW2 = Law2_ScGeom_MindlinPhys_Mindlin({})\n\n",
+                   m.surface_energy != 0.0 ? "includeAdhesion=True" : "");
+    return;
   }
-  s += ")\n"
-       "KN = MatchMaker(matches=PAIR_KN, algo='val', val=float('nan'))\n"
-       "ZERO = MatchMaker(matches=tuple((a, b, 0.0) for a, b, _ in PAIR_KN), algo='val', val=float('nan'))\n";
-  if (viscous) {
-    s += "# frictionless: kRatio = ks/kn = 0; cn = 2 betan sqrt(m kn), m = the mobile body's mass\n"
-         "# against a fixed partner\n"
-         "IP2 = Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys(kn=KN, kRatio=ZERO)\n"
+  fmt::format_to(out, "KN = {}  # normal stiffness per pair [N/m]\n",
+                 pair_match_maker(plan, [](const auto& p) { return p.normal_stiffness; }));
+  if (m.viscous) {
+    fmt::format_to(out, "KRATIO = {}  # ks/kn per pair\n", pair_match_maker(plan, [](const auto& p) {
+                     return p.shear_stiffness / p.normal_stiffness;
+                   }));
+    s += "# cn = 2 betan sqrt(m kn), m = the mobile body's mass against a fixed partner or a wall\n"
+         "IP2 = Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys(kn=KN, kRatio=KRATIO, frictAngle=FRICTION_ANGLE)\n"
          "LAW2 = Law2_ScGeom_FrictViscoPhys_CundallStrackVisco()\n\n";
   } else {
-    s += "# frictionless: ks = 0 and friction angle 0\n"
-         "IP2 = Ip2_FrictMat_FrictMat_FrictPhys(kn=KN, ks=ZERO)\n"
+    fmt::format_to(out, "KS = {}  # shear stiffness per pair [N/m]\n",
+                   pair_match_maker(plan, [](const auto& p) { return p.shear_stiffness; }));
+    s += "IP2 = Ip2_FrictMat_FrictMat_FrictPhys(kn=KN, ks=KS, frictAngle=FRICTION_ANGLE)\n"
          "LAW2 = Law2_ScGeom_FrictPhys_CundallStrack()\n\n";
   }
+}
+
+/// Plane walls as utils.wall bodies after the particles (body id = particle count + wall index).
+void write_walls(std::string& s, const cases::Scene& scene) {
+  auto out = std::back_inserter(s);
+  s += "# Plane walls, body id = len(PARTICLES) + wall index: (position along the axis, axis, sense,\n"
+       "# material). sense = +1/-1: only the side the case's normal points to interacts.\n"
+       "WALLS = [\n";
+  for (const auto& w : scene.walls) {
+    const WallAxis a = wall_axis(w.normal);
+    fmt::format_to(out, "    ({}, {}, {}, {}),\n", py_float(w.point[static_cast<std::size_t>(a.axis)]),
+                   a.axis, a.sense, w.material);
+  }
+  s += "]\n"
+       "for k, (position, axis, sense, material) in enumerate(WALLS):\n"
+       "    assert O.bodies.append(utils.wall(position, axis=axis, sense=sense, material=material)) == len(PARTICLES) + k\n\n";
 }
 
 void write_particles(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
@@ -117,6 +168,10 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
   fmt::format_to(out, "TRACED_PAIRS = [{}]\n", joined(scene.output.trace_pairs, [](const auto& pq) {
                    return fmt::format("({}, {})", pq.first, pq.second);
                  }));
+  fmt::format_to(out, "TRACED_WALLS = [{}]  # (particle, wall body id)\n",
+                 joined(scene.output.trace_walls, [&](const auto& pw) {
+                   return fmt::format("({}, {})", pw.first, scene.particles.size() + pw.second);
+                 }));
   std::string header;
   for (const auto& c : plan.trace_columns) header += (header.empty() ? "" : ",") + c;
   fmt::format_to(out, "TRACE_HEADER = {}\n\n", py_string(header));
@@ -135,6 +190,14 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "        return [overlap, I.phys.normalForce.dot(I.geom.normal) if overlap >= 0 else 0.0]\n"
        "    bp, bq = O.bodies[p], O.bodies[q]\n"
        "    return [bp.shape.radius + bq.shape.radius - (bp.state.pos - bq.state.pos).norm(), 0.0]\n\n"
+       "def _wall_values(p, w):\n"
+       "    \"\"\"Overlap and normal force (repulsive positive) YADE has for particle p and wall body w.\"\"\"\n"
+       "    I = O.interactions[w, p] if O.interactions.has(w, p) else None\n"
+       "    if I is not None and I.isReal:\n"
+       "        overlap = I.geom.penetrationDepth\n"
+       "        return [overlap, I.phys.normalForce.dot(I.geom.normal) if overlap >= 0 else 0.0]\n"
+       "    position, axis, sense, _ = WALLS[w - len(PARTICLES)]\n"
+       "    return [O.bodies[p].shape.radius - sense * (O.bodies[p].state.pos[axis] - position), 0.0]\n\n"
        "def record_trace():\n"
        "    \"\"\"One trace row: x(n), v(n-1/2), F(x(n)) of iteration n (runs before NewtonIntegrator).\"\"\"\n"
        "    row = [O.iter * O.dt]  # the sample time n*DT (O.time is a running sum)\n"
@@ -147,10 +210,12 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "                s.angVel[0], s.angVel[1], s.angVel[2], f[0], f[1], f[2]]\n"
        "    for p, q in TRACED_PAIRS:\n"
        "        row += _pair_values(p, q)\n"
+       "    for p, w in TRACED_WALLS:\n"
+       "        row += _wall_values(p, w)\n"
        "    _trace.write(','.join('%.17g' % v for v in row) + '\\n')\n\n"
        "def record_snapshot():\n"
-       "    for i, b in enumerate(O.bodies):\n"
-       "        s = b.state\n"
+       "    for i in range(len(PARTICLES)):  # walls are not particles\n"
+       "        s = O.bodies[i].state\n"
        "        values = [O.iter * O.dt, i, s.pos[0], s.pos[1], s.pos[2], s.vel[0], s.vel[1], s.vel[2],\n"
        "                  s.angVel[0], s.angVel[1], s.angVel[2]]\n"
        "        _snapshots.write(','.join('%.17g' % v for v in values) + '\\n')\n\n";
@@ -159,8 +224,9 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
 void write_engines_and_run(std::string& s) {
   s += "O.engines = [\n"
        "    ForceResetter(),\n"
-       "    InsertionSortCollider([Bo1_Sphere_Aabb()]),\n"
-       "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [IP2], [LAW2]),\n"
+       "    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),\n"
+       "    # Ig2 defaults: avoidGranularRatcheting / noRatch = True (alpha-scaled incident velocity)\n"
+       "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [IP2], [LAW2]),\n"
        "    # between the contact laws and the integrator: sees x(n), v(n-1/2) and F(x(n)) of\n"
        "    # iteration n = the in-house trace row at t = n*DT; initRun: also at iteration 0\n"
        "    PyRunner(command='record_trace()', iterPeriod=TRACE_EVERY, initRun=True),\n"
@@ -186,6 +252,7 @@ std::string write_yade_script(const cases::Scene& scene, const YadeRunPlan& plan
   write_header(s, scene, plan);
   write_materials(s, scene, plan);
   write_particles(s, scene, plan);
+  write_walls(s, scene);
   write_recorders(s, scene, plan);
   write_engines_and_run(s);
   return s;

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The YADE script writer and run plan, without YADE: the script's text says what YADE will do.
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "cases/case_loader.hpp"
 #include "dem/particles/particles.hpp"
 #include "reference/yade/python_literals.hpp"
 #include "reference/yade/run_plan.hpp"
@@ -83,11 +85,11 @@ TEST(YadeScriptWriter, SetsGlobalDampingToZeroAndRecordsBeforeTheIntegrator) {
 TEST(YadeScriptWriter, WritesEveryMaterialPairStiffnessFromThePairTable) {
   const cases::Scene scene = two_material_scene();
   const std::string s = write_yade_script(scene, make_run_plan(scene));
-  EXPECT_TRUE(contains(s, "    (0, 0, 100000.0),\n"));
-  EXPECT_TRUE(contains(s, "    (0, 1, 150000.0),\n"));  // harmonic mix 2·1e5·3e5/(4e5)
-  EXPECT_TRUE(contains(s, "    (1, 1, 300000.0),\n"));
-  EXPECT_TRUE(contains(s, "KN = MatchMaker(matches=PAIR_KN, algo='val', val=float('nan'))"));
-  EXPECT_TRUE(contains(s, "Ip2_FrictMat_FrictMat_FrictPhys(kn=KN, ks=ZERO)"));
+  // harmonic mix 2·1e5·3e5/(4e5) for the mixed pair
+  EXPECT_TRUE(contains(s, "KN = MatchMaker(matches=((0, 0, 100000.0), (0, 1, 150000.0), (1, 1, "
+                          "300000.0), ), algo='val', val=float('nan'))"));
+  EXPECT_TRUE(contains(s, "KS = MatchMaker(matches=((0, 0, 0.0), (0, 1, 0.0), (1, 1, 0.0), ), "));
+  EXPECT_TRUE(contains(s, "Ip2_FrictMat_FrictMat_FrictPhys(kn=KN, ks=KS, frictAngle=FRICTION_ANGLE)"));
   EXPECT_TRUE(contains(s, "Law2_ScGeom_FrictPhys_CundallStrack()"));
   EXPECT_FALSE(contains(s, "FrictViscoMat"));
 }
@@ -142,10 +144,37 @@ TEST(YadeScriptWriter, RestitutionUsesFrictViscoWithHalfTheCoreDampingFactor) {
   const double ln = std::log(0.5);
   const double betan = -ln / std::sqrt(std::numbers::pi * std::numbers::pi + ln * ln);
   EXPECT_NEAR(plan.model.material_damping_ratio[0], betan, 1e-16);
-  EXPECT_TRUE(contains(s, "FrictViscoMat(young=1.0, poisson=0.25, density=density, frictionAngle=0.0,"));
-  EXPECT_TRUE(contains(s, "Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys(kn=KN, kRatio=ZERO)"));
+  EXPECT_TRUE(contains(s, "FrictViscoMat(young=young, poisson=poisson, density=density, frictionAngle=0.0,"));
+  EXPECT_TRUE(contains(s, "Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys(kn=KN, kRatio=KRATIO, frictAngle=FRICTION_ANGLE)"));
   EXPECT_TRUE(contains(s, "Law2_ScGeom_FrictViscoPhys_CundallStrackVisco()"));
-  EXPECT_TRUE(contains(s, "('soft', 1000.0, " + reference::yade::py_float(plan.model.material_damping_ratio[0]) + "),"));
+  EXPECT_TRUE(contains(s, "('soft', 1000.0, 1.0, 0.25, " + reference::yade::py_float(plan.model.material_damping_ratio[0]) + "),"));
+}
+
+TEST(YadeScriptWriter, PlaneWallBecomesAnAxisAlignedYadeWallWithItsOwnMaterial) {
+  const cases::Scene scene = cases::load_case(std::filesystem::path(DEMWB_SOURCE_DIR) /
+                                              "cases/canonical/oblique_wall_impact.toml");
+  const auto plan = make_run_plan(scene);
+  ASSERT_TRUE(plan.model.reasons.empty());
+  const std::string s = write_yade_script(scene, plan);
+  EXPECT_TRUE(contains(s, "    (0.0, 2, 1, 0),\n"));  // z = 0, axis z, sense +1, material 0
+  EXPECT_TRUE(contains(s, "utils.wall(position, axis=axis, sense=sense, material=material)"));
+  EXPECT_TRUE(contains(s, "TRACED_WALLS = [(0, 1)]"));
+  EXPECT_TRUE(contains(s, "Ig2_Wall_Sphere_ScGeom()"));
+  EXPECT_TRUE(contains(s, "KRATIO = MatchMaker(matches=((0, 0, 10.0), ), "));
+  EXPECT_TRUE(contains(s, "FRICTION_ANGLE = MatchMaker(matches=((0, 0, " +
+                          reference::yade::py_float(std::atan(0.2)) + "), ), "));
+  EXPECT_EQ(plan.trace_columns.back(), "c0-w0.fn");
+}
+
+TEST(YadeScriptWriter, HertzUsesMindlinWithTheCaseModuli) {
+  const cases::Scene scene = cases::load_case(std::filesystem::path(DEMWB_SOURCE_DIR) /
+                                              "cases/canonical/hertz_collision.toml");
+  const auto plan = make_run_plan(scene);
+  ASSERT_TRUE(plan.model.reasons.empty());
+  const std::string s = write_yade_script(scene, plan);
+  EXPECT_TRUE(contains(s, "('agglomerate', 8000.0, 84000000.0, 0.3, 0.0),"));
+  EXPECT_TRUE(contains(s, "IP2 = Ip2_FrictMat_FrictMat_MindlinPhys(frictAngle=FRICTION_ANGLE)"));
+  EXPECT_TRUE(contains(s, "LAW2 = Law2_ScGeom_MindlinPhys_Mindlin()"));
 }
 
 TEST(YadePythonLiterals, RoundTripExactly) {

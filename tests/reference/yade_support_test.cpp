@@ -32,16 +32,53 @@ TEST(YadeSupport, CanonicalLinearCasesAreSupported) {
 
 TEST(YadeSupport, EachUnmappedFeatureHasItsOwnReason) {
   cases::Scene scene = cases::load_case(kCanonical / "single_collision.toml");
-  scene.walls.push_back({});
+  cases::WallSpec tilted;
+  tilted.name = "tilted";
+  tilted.normal = {0.0, 0.6, 0.8};
+  scene.walls.push_back(tilted);
   scene.fluid = cases::FluidSpec{};
   scene.particles[0].charge = 1e-9;
   scene.particles[1].motion.push_back({});
   const auto s = offline_engine().supports(scene);
   EXPECT_EQ(s.reasons.size(), 4u) << s.explain();
-  EXPECT_TRUE(mentions(s, "YADE driver: plane walls are not mapped yet"));
+  EXPECT_TRUE(mentions(s, "wall 'tilted' is not normal to a coordinate axis"));
   EXPECT_TRUE(mentions(s, "fluid forces"));
   EXPECT_TRUE(mentions(s, "electric charges"));
   EXPECT_TRUE(mentions(s, "prescribed motion"));
+}
+
+TEST(YadeSupport, Phase2CanonicalCasesAreSupportedAndJkrIsNot) {
+  for (const char* file : {"hertz_collision.toml", "oblique_wall_impact.toml"}) {
+    const auto s = offline_engine().supports(cases::load_case(kCanonical / file));
+    EXPECT_TRUE(s.supported()) << file << ": " << s.explain();
+  }
+  const auto jkr = offline_engine().supports(cases::load_case(kCanonical / "jkr_pulloff.toml"));
+  EXPECT_FALSE(jkr.supported());
+  EXPECT_TRUE(mentions(jkr, "YADE 2023.02a has no JKR law")) << jkr.explain();
+}
+
+TEST(YadeSupport, HertzAgainstAWallIsRefusedForMindlinsWallRadius) {
+  cases::Scene scene = cases::load_case(kCanonical / "hertz_collision.toml");
+  cases::WallSpec floor;
+  floor.name = "floor";
+  floor.normal = {0.0, 0.0, 1.0};
+  scene.walls.push_back(floor);
+  const auto s = offline_engine().supports(scene);
+  EXPECT_TRUE(mentions(s, "R* = r/2 instead of r")) << s.explain();
+}
+
+TEST(YadeSupport, WallAxisAndSenseFollowTheNormal) {
+  using reference::yade::wall_axis;
+  EXPECT_EQ(wall_axis({0.0, 0.0, 1.0}).axis, 2);
+  EXPECT_EQ(wall_axis({0.0, 0.0, 1.0}).sense, 1);
+  EXPECT_EQ(wall_axis({-1.0, 0.0, 0.0}).axis, 0);
+  EXPECT_EQ(wall_axis({-1.0, 0.0, 0.0}).sense, -1);
+  EXPECT_EQ(wall_axis({0.0, 0.6, 0.8}).axis, -1);
+}
+
+TEST(YadeSupport, MindlinModulusIsTheHarmonicSumOfEq313) {
+  const double e = reference::yade::yade_effective_modulus(8.4e7, 0.3, 8.4e7, 0.3);
+  EXPECT_NEAR(e, 8.4e7 / (2.0 * (1.0 - 0.09)), 1e-7);
 }
 
 TEST(YadeSupport, RestitutionIsMappedWithTheAlphaWarning) {

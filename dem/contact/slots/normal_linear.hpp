@@ -28,9 +28,11 @@ struct LinearNormal {
     return {required_property(pair, &PairProperties::normal_stiffness, "normal_stiffness",
                               "normal = 'linear'")};
   }
-  /// Elastic response; zero out of contact.
+  /// Elastic response; zero out of contact. Exactly touching (δ = 0): no force, but the
+  /// stiffness k_e, for a dashpot that acts there (ContactPolicies::contact_at_zero_overlap).
   [[nodiscard]] NormalResponse evaluate(const ContactInput& in, ContactHistory&) const noexcept {
-    if (in.g.overlap <= 0.0) return {};
+    if (in.g.overlap == 0.0) return {0.0, stiffness, 0.0, false};
+    if (in.g.overlap < 0.0) return {};
     return {laws::linear_spring_force(stiffness, in.g.overlap), stiffness,
             laws::linear_spring_energy(stiffness, in.g.overlap), true};
   }

@@ -25,6 +25,7 @@ struct ContactPolicies {
   bool clamp_tensile = false;
   FrictionLimit friction_limit = FrictionLimit::total;
   JkrRupture jkr_rupture = JkrRupture::displacement;
+  bool contact_at_zero_overlap = false;  ///< δ = 0 counts as contact (ModelChoice)
 };
 
 /// Everything a sub-model may read about one contact at one evaluation.

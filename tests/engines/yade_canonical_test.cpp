@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// YADE driver phase 2 on the canonical cases: Hertz–Mindlin (hertz_collision), a FrictVisco
+// sphere–wall impact with Coulomb friction (oblique_wall_impact), the α-scaled restitution
+// dashpot (single_collision with ε = 0.5) and JKR (n/a). Native runs against the analytic engine
+// within the case tolerances; matched runs against the core (inhouse@yade) within 1e-8.
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "compare/case_outcome.hpp"
+#include "compare/metrics.hpp"
+#include "reference/analytic/analytic_engine.hpp"
+#include "reference/inhouse/inhouse_engine.hpp"
+#include "reference/matching.hpp"
+#include "yade_test_support.hpp"
+
+namespace {
+
+using namespace demwb_yade_test;
+
+/// Native YADE against the analytic engine: every metric of the case passes its tolerance.
+void expect_native_within_tolerances(const cases::Scene& scene, const std::string& name) {
+  const auto analytic = reference::run_engine(reference::AnalyticEngine{}, scene, {});
+  const auto yade = reference::run_engine(reference::YadeEngine{}, scene, {scratch(name), 300.0});
+  ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
+  const auto outcome = comparison::evaluate_runs(scene, {analytic, yade});
+  ASSERT_FALSE(outcome.comparisons.empty());
+  for (const auto& c : outcome.comparisons) {
+    std::printf("  %-24s yade %.9g  analytic %.9g  abs %.3g  rel %.3g  %s\n", c.metric.c_str(),
+                c.value.value_or(NAN), c.reference_value.value_or(NAN), c.abs_diff.value_or(NAN),
+                c.rel_diff.value_or(NAN), c.note.c_str());
+    EXPECT_EQ(c.status, comparison::Status::pass) << c.metric << ": " << c.note;
+  }
+}
+
+/// Matched numerics: the core with YADE's numerics (inhouse@yade) and YADE on the same scene
+/// agree within 1e-8 on every metric (relative; absolute on restitutions) and on the position
+/// trace relative to the largest overlap.
+void expect_matched_within_1e8(const cases::Scene& original, const std::string& name) {
+  const cases::Scene scene = reference::matched_scene(original, "yade");
+  const auto inhouse = reference::run_engine(reference::InhouseEngine{}, scene, {});
+  const auto yade = reference::run_engine(reference::YadeEngine{}, scene, {scratch(name), 300.0});
+  ASSERT_EQ(inhouse.status, cases::RunStatus::ok) << inhouse.reason;
+  ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
+  const auto a = comparison::compute_metrics(scene, inhouse, nullptr);
+  const auto b = comparison::compute_metrics(scene, yade, nullptr);
+  int compared = 0;
+  for (const auto& [metric, value] : a) {
+    if (!value.value || !b.at(metric).value) continue;
+    const double x = *value.value;
+    const double y = *b.at(metric).value;
+    const bool absolute = metric.find("restitution") != std::string::npos || metric == "rebound_angle";
+    const double diff = absolute ? std::abs(x - y) : std::abs(x - y) / std::max(std::abs(x), 1e-300);
+    std::printf("  %-24s inhouse@yade %.15g  yade %.15g  %s diff %.3g\n", metric.c_str(), x, y,
+                absolute ? "abs" : "rel", diff);
+    EXPECT_LE(diff, 1e-8) << metric;
+    ++compared;
+  }
+  EXPECT_GT(compared, 2);
+  std::string problem;
+  const auto deviation = comparison::trace_deviation(scene, yade, inhouse, problem);
+  ASSERT_TRUE(deviation) << problem;
+  std::printf("  trace_deviation %.3g\n", *deviation);
+  EXPECT_LE(*deviation, 1e-8);
+}
+
+TEST(YadeHertz, NativeMindlinMeetsTheCaseTolerances) {
+  DEMWB_REQUIRE_YADE();
+  expect_native_within_tolerances(canonical("hertz_collision.toml"), "hertz-native");
+}
+
+TEST(YadeHertz, MatchedMindlinAgreesWithin1em8) {
+  DEMWB_REQUIRE_YADE();
+  expect_matched_within_1e8(canonical("hertz_collision.toml"), "hertz-matched");
+}
+
+TEST(YadeObliqueWall, MatchedFrictViscoWallAgreesWithin1em8) {
+  DEMWB_REQUIRE_YADE();
+  expect_matched_within_1e8(canonical("oblique_wall_impact.toml"), "oblique-matched");
+}
+
+TEST(YadeDampedCollision, MatchedAlphaDashpotAgreesWithin1em8) {
+  DEMWB_REQUIRE_YADE();
+  cases::Scene scene = canonical("single_collision.toml");
+  scene.model.damping = "restitution";
+  scene.materials[0].restitution = 0.5;
+  expect_matched_within_1e8(scene, "damped-matched-1e8");
+}
+
+TEST(YadeJkr, PullOffIsNotApplicableWithTheReason) {
+  DEMWB_REQUIRE_YADE();
+  const cases::Scene scene = canonical("jkr_pulloff.toml");
+  const auto s = reference::YadeEngine{}.supports(scene);
+  EXPECT_FALSE(s.supported());
+  EXPECT_NE(s.explain().find("YADE 2023.02a has no JKR law"), std::string::npos) << s.explain();
+  const auto r = reference::run_engine(reference::YadeEngine{}, scene, {scratch("jkr"), 60.0});
+  EXPECT_EQ(r.status, cases::RunStatus::not_applicable);
+  EXPECT_NE(r.reason.find("YADE 2023.02a has no JKR law"), std::string::npos) << r.reason;
+}
+
+}  // namespace
