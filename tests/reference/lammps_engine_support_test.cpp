@@ -23,17 +23,19 @@ TEST(LammpsEngineSupport, ExpressesTheLinearSpringDashpotWithFixedSpheresAndGrav
 
 TEST(LammpsEngineSupport, GivesOneReasonPerUnsupportedFeature) {
   cases::Scene scene = demwb_lammps_unit::mixed_scene();
-  scene.walls.push_back(cases::WallSpec{"floor", {0, 0, -1}, {0, 0, 1}, {0, 0, 0}, 0});
+  scene.walls.push_back(
+      cases::WallSpec{"ramp", {0, 0, -1}, {0, 0.6, 0.8}, {0, 0, 0}, 0});  // tilted
   scene.fluid = cases::FluidSpec{};
+  scene.particles[3].fixed = false;
   scene.particles[3].motion.push_back(cases::MotionSegmentSpec{1.0, {1.0, 0.0, 0.0}});
   const auto s = LammpsEngine{}.supports(scene);
   EXPECT_EQ(s.reasons.size(), 3u) << s.explain();
-  EXPECT_TRUE(mentions(s, "LAMMPS driver: walls are not mapped yet"));
+  EXPECT_TRUE(mentions(s, "fix wall/gran has only xplane/yplane/zplane walls"));
   EXPECT_TRUE(mentions(s, "fluid forces"));
-  EXPECT_TRUE(mentions(s, "prescribed motion of particle 3"));
+  EXPECT_TRUE(mentions(s, "particle 3 has a prescribed motion but is not fixed"));
 }
 
-TEST(LammpsEngineSupport, NamesEverySubModelThatIsNotMappedYet) {
+TEST(LammpsEngineSupport, NamesEverySubModelThatIsNotMapped) {
   cases::Scene scene = demwb_lammps_unit::mixed_scene();
   for (auto& m : scene.materials) {
     m.youngs_modulus = 1e7;
@@ -44,12 +46,14 @@ TEST(LammpsEngineSupport, NamesEverySubModelThatIsNotMappedYet) {
   }
   scene.model.normal = "hertz";
   scene.model.tangential = "spring_coulomb";
+  EXPECT_TRUE(LammpsEngine{}.supports(scene).supported());  // phase 2 maps all three
+  scene.model.rolling = "constant_torque";
+  for (auto& m : scene.materials) {
+    m.rolling_friction = 0.1;
+  }
   const auto s = LammpsEngine{}.supports(scene);
-  EXPECT_EQ(s.reasons.size(), 3u) << s.explain();
-  EXPECT_TRUE(mentions(s, "LAMMPS driver: normal model 'hertz' is not mapped yet"));
-  EXPECT_TRUE(mentions(s, "LAMMPS driver: damping model 'restitution' is mapped only with normal "
-                          "model 'linear'"));
-  EXPECT_TRUE(mentions(s, "LAMMPS driver: tangential model 'spring_coulomb' is not mapped yet"));
+  EXPECT_EQ(s.reasons.size(), 1u) << s.explain();
+  EXPECT_TRUE(mentions(s, "rolling model 'constant_torque' is not mapped"));
 }
 
 TEST(LammpsEngineSupport, IsMissingWhenTheBinaryIsNotInstalled) {
