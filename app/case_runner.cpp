@@ -69,7 +69,10 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
 comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<std::string>& engines,
                                  const RunContext& context) {
   std::vector<cases::RunResult> runs;
-  for (const auto& name : engines) runs.push_back(run_one(scene, name, context));
+  for (const auto& name : engines) {
+    runs.push_back(run_one(scene, name, context));
+    if (context.on_engine_done) context.on_engine_done(scene, runs.back());
+  }
   return comparison::evaluate_runs(scene, std::move(runs));
 }
 

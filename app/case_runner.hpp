@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,10 @@ struct RunContext {
   std::optional<store::ResultCache> cache;        ///< reference-code results; none: always run
   bool refresh = false;                           ///< run reference codes even on a cache hit
   std::optional<std::filesystem::path> baselines; ///< directory of committed baselines
+  bool wall_times = true;                         ///< false: results.json without wall_time_s
+  /// Called after each engine of a case finished (progress lines); may be called from several
+  /// threads at once when cases run concurrently.
+  std::function<void(const cases::Scene&, const cases::RunResult&)> on_engine_done;
 };
 
 /// Runs `scene` on each named engine (in order) and evaluates metrics and comparisons. Reference

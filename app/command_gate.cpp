@@ -127,6 +127,7 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
                                         std::to_string((*vm)["jobs"].as<unsigned>()), "--timeout",
                                         fmt::format("{}", (*vm)["timeout"].as<double>())};
     if (vm->count("no-cache") != 0) suite_args.push_back("--no-cache");
+    if (vm->count("reproducible") != 0) suite_args.push_back("--reproducible");
     if (vm->count("cache") != 0) suite_args.insert(suite_args.end(), {"--cache", (*vm)["cache"].as<std::string>()});
     if (vm->count("match") != 0) {
       for (const auto& m : (*vm)["match"].as<std::vector<std::string>>()) suite_args.insert(suite_args.end(), {"--match", m});

@@ -47,7 +47,10 @@ int command_refresh(const std::vector<std::string>& args, const Invocation&) {
     if (write) engines.push_back("inhouse");
     if (engines.empty()) continue;
     ctx.options.work_dir = std::filesystem::path((*vm)["output"].as<std::string>()) / scene.name;
-    const comparison::CaseOutcome o = run_case(scene, engines, RunContext{ctx.options, ctx.cache, true, std::nullopt});
+    RunContext fresh = ctx;
+    fresh.refresh = true;           // re-run the reference codes, then store their results
+    fresh.baselines = std::nullopt;  // never answer a refresh from the baselines
+    const comparison::CaseOutcome o = run_case(scene, engines, fresh);
     store::Baseline baseline{scene.name, store::scene_fingerprint(scene), {}, {}};
     for (const auto& r : o.runs) {
       const bool ok = r.status == cases::RunStatus::ok;

@@ -93,12 +93,12 @@ int command_run(const std::vector<std::string>& args, const Invocation& inv) {
   const std::filesystem::path out = vm->count("output") != 0
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::path("out/run") / scene.name;
-  comparison::CaseOutcome outcome =
-      run_case(scene, engines, run_context(*vm, out / "work"));
+  const RunContext context = run_context(*vm, out / "work");
+  comparison::CaseOutcome outcome = run_case(scene, engines, context);
   if (std::find(engines.begin(), engines.end(), scene.compare.reference) == engines.end()) {
     outcome.comparisons.clear();  // the reference did not run: metrics only
   }
-  reports::write_case_outputs(outcome, out, reports::reproduce_command(inv.argc, inv.argv));
+  reports::write_case_outputs(outcome, out, reports::reproduce_command(inv.argc, inv.argv), context.wall_times);
   std::cout << engine_summary(outcome);
   if (!outcome.comparisons.empty()) std::cout << "\n" << reports::discrepancy_table(outcome);
   print_engine_notes(outcome);
@@ -125,10 +125,10 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
   const std::filesystem::path out = vm->count("output") != 0
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::temp_directory_path() / "demwb-compare";
-  const comparison::CaseOutcome outcome =
-      run_case(scene, engines, run_context(*vm, out / "work"));
+  const RunContext context = run_context(*vm, out / "work");
+  const comparison::CaseOutcome outcome = run_case(scene, engines, context);
   if (vm->count("output") != 0) {
-    reports::write_case_outputs(outcome, out, reports::reproduce_command(inv.argc, inv.argv));
+    reports::write_case_outputs(outcome, out, reports::reproduce_command(inv.argc, inv.argv), context.wall_times);
   }
   std::cout << fmt::format("case {} — reference {}\n\n", scene.name, scene.compare.reference);
   std::cout << engine_summary(outcome) << "\n" << reports::discrepancy_table(outcome);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <future>
 #include <iostream>
+#include <mutex>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -95,18 +96,38 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::path("out") / dir.filename();
   const unsigned jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
-  const RunContext context = run_context(*vm, out);
+  RunContext context = run_context(*vm, out);
   const auto files = cases::case_files(dir);
   if (files.empty()) throw std::runtime_error("suite " + dir.string() + " holds no *.toml case");
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
 
+  std::mutex print_mutex;
+  std::size_t cases_done = 0;
+  const auto suite_clock = std::chrono::steady_clock::now();
+  // One line per engine run: overwritten in place on a terminal, plain lines in CI logs.
+  context.on_engine_done = [&](const cases::Scene& scene, const cases::RunResult& run) {
+    const std::lock_guard lock(print_mutex);
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_clock).count();
+    const std::string what = fmt::format("{} / {}: {} in {:.2f} s ({})", scene.name, run.engine,
+                                         cases::to_string(run.status), run.wall_time_s,
+                                         run.source == "run" ? "ran" : run.source);
+    if (terminal) {
+      const std::string eta = cases_done == 0 ? "—" : fmt::format("{:.0f} s", elapsed / static_cast<double>(cases_done) *
+                                                                        static_cast<double>(files.size() - cases_done));
+      std::fprintf(stderr, "\r\033[K[%zu/%zu cases] %s, elapsed %.1f s, ETA %s", cases_done, files.size(),
+                   what.c_str(), elapsed, eta.c_str());
+    } else {
+      std::fprintf(stderr, "  %s\n", what.c_str());
+    }
+  };
   std::vector<SuiteEntry> entries(files.size());
   std::vector<std::future<SuiteEntry>> running;
   std::size_t next = 0;
   std::size_t done = 0;
   const auto suite_start = std::chrono::steady_clock::now();
   const auto report = [&](const SuiteEntry& e) {
-    ++done;
+    const std::lock_guard lock(print_mutex);
+    cases_done = ++done;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - suite_start).count();
     const double eta = elapsed / static_cast<double>(done) * static_cast<double>(files.size() - done);
     std::fprintf(stderr, "%s[%zu/%zu] %s: %s (%.2f s)%s", terminal ? "\r\033[K" : "", done, files.size(),
@@ -145,10 +166,10 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
       continue;
     }
     const std::filesystem::path case_dir = out / e.outcome->scene.name;
-    reports::write_case_outputs(*e.outcome, case_dir, command);
+    reports::write_case_outputs(*e.outcome, case_dir, command, context.wall_times);
     md += "<a id=\"" + e.outcome->scene.name + "\"></a>\n\n";
     md += reports::case_section(*e.outcome, case_dir / "plots", out, 2);
-    all["cases"].push_back(reports::results_json(*e.outcome));
+    all["cases"].push_back(reports::results_json(*e.outcome, context.wall_times));
   }
   all["status"] = std::string(comparison::to_string(worst));
   support::write_file(out / "report.md", md);

@@ -58,6 +58,8 @@ void add_run_options(po::options_description& opts) {
       "no-cache", "run reference codes every time and store nothing")(
       "baselines", po::value<std::string>(),
       "committed baselines used when a reference code is not installed (default cases/baselines)")(
+      "reproducible",
+      "leave wall times out of results.json (they stay in report.md) so that two runs compare byte for byte")(
       "match", po::value<std::vector<std::string>>()->composing(),
       "also run the core with this reference code's numerics (lammps, yade) and compare the two");
 }
@@ -83,6 +85,7 @@ RunContext run_context(const po::variables_map& vm, const std::filesystem::path&
     ctx.cache.emplace(vm.count("cache") != 0 ? std::filesystem::path(vm["cache"].as<std::string>())
                                              : store::ResultCache::default_dir());
   }
+  ctx.wall_times = vm.count("reproducible") == 0;
   ctx.baselines = vm.count("baselines") != 0
                       ? std::optional<std::filesystem::path>(vm["baselines"].as<std::string>())
                       : default_baselines();

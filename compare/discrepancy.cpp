@@ -12,15 +12,25 @@
 namespace comparison {
 namespace {
 
-/// Default tolerances: relative for durations, lengths and forces; absolute for the
-/// dimensionless restitution and amplitude error.
-constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 6> kDefaults{{
+/// Default tolerances per metric kind (docs/metrics.md): relative for durations, lengths, forces,
+/// decelerations, spins and works; absolute for the dimensionless restitutions and amplitude
+/// error, and for the rebound angle (degrees, whose zero is not special).
+constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 15> kDefaults{{
     {"contact_duration", {1e-3, 0.0}},
     {"restitution", {0.0, 1e-3}},
     {"max_overlap", {1e-3, 0.0}},
     {"max_force", {1e-3, 0.0}},
     {"max_position", {1e-3, 0.0}},
     {"amplitude_error", {0.0, 1e-3}},
+    {"tangential_restitution", {0.0, 1e-3}},
+    {"rebound_angle", {0.0, 0.05}},
+    {"spin_after", {1e-3, 0.0}},
+    {"deceleration", {1e-3, 0.0}},
+    {"pulloff_force", {1e-3, 0.0}},
+    {"rupture_separation", {5e-3, 0.0}},
+    {"force_at_rupture", {1e-3, 0.0}},
+    {"separation_work", {1e-3, 0.0}},
+    {"equilibrium_overlap", {1e-3, 0.0}},
 }};
 
 const cases::RunResult* find_run(const std::vector<cases::RunResult>& runs,

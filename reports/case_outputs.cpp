@@ -40,9 +40,9 @@ std::string reproduce_command(int argc, const char* const* argv) {
 }
 
 void write_case_outputs(const comparison::CaseOutcome& outcome, const std::filesystem::path& dir,
-                        const std::string& command) {
+                        const std::string& command, bool wall_times) {
   std::filesystem::create_directories(dir);
-  support::write_file(dir / "results.json", results_json(outcome).dump(2) + "\n");
+  support::write_file(dir / "results.json", results_json(outcome, wall_times).dump(2) + "\n");
   support::write_file(dir / "junit.xml", junit_xml({&outcome}, outcome.scene.name));
   for (const auto& run : outcome.runs) {
     if (run.status == cases::RunStatus::ok) {

@@ -16,12 +16,12 @@ Json number(std::optional<double> v) {
   return *v;
 }
 
-Json engine_entry(const cases::RunResult& run, const comparison::MetricSet& metrics) {
+Json engine_entry(const cases::RunResult& run, const comparison::MetricSet& metrics, bool wall_times) {
   Json e;
   e["status"] = std::string(cases::to_string(run.status));
   e["version"] = run.version;
   e["source"] = run.source;
-  e["wall_time_s"] = number(run.wall_time_s);
+  if (wall_times) e["wall_time_s"] = number(run.wall_time_s);
   if (!run.reason.empty()) e["reason"] = run.reason;
   Json values = Json::object();
   Json sources = Json::object();
@@ -79,7 +79,7 @@ Json comparison_entry(const comparison::Comparison& c) {
 
 }  // namespace
 
-nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome) {
+nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome, bool wall_times) {
   Json doc;
   doc["case"] = outcome.scene.name;
   doc["case_sha256"] = outcome.scene.source_sha256;
@@ -87,7 +87,7 @@ nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome) {
   Json engines = Json::object();
   for (const auto& run : outcome.runs) {
     const auto m = outcome.metrics.find(run.engine);
-    engines[run.engine] = engine_entry(run, m == outcome.metrics.end() ? comparison::MetricSet{} : m->second);
+    engines[run.engine] = engine_entry(run, m == outcome.metrics.end() ? comparison::MetricSet{} : m->second, wall_times);
   }
   doc["engines"] = engines;
   Json rows = Json::array();

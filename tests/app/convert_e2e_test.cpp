@@ -9,35 +9,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "support/process.hpp"
+#include "demwb_process.hpp"
 #include "support/text_file.hpp"
 
 namespace {
 
+using demwb_e2e::demwb;
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-/// Runs demwb with `args`, capturing its output in a scratch directory.
-Outcome demwb(const std::vector<std::string>& args) {
-  static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("demwb_convert_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string n = std::to_string(counter++);
-  support::ProcessSpec spec;
-  spec.argv = {DEMWB_BINARY};
-  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-  spec.stdout_file = dir / ("out" + n);
-  spec.stderr_file = dir / ("err" + n);
-  spec.timeout_s = 60;
-  const auto r = support::run_process(spec);
-  EXPECT_TRUE(r.started) << r.error;
-  return {r.exit_code, support::read_file(spec.stdout_file), support::read_file(spec.stderr_file)};
-}
 
 /// The benchmark pair of thesis table 5.1: r = 5 mm, effect radius 7.5 mm, δ_max = r/20.
 const std::vector<std::string> kPair{"--max-overlap", "2.5e-4", "--radius", "5e-3",

@@ -7,46 +7,16 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "demwb_process.hpp"
 #include "support/process.hpp"
 #include "support/text_file.hpp"
 
 namespace {
 
+using demwb_e2e::canonical;
+using demwb_e2e::demwb;
+using demwb_e2e::scratch;
 namespace fs = std::filesystem;
-
-struct Outcome {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-/// Runs demwb with `args` in a scratch directory.
-Outcome demwb(const std::vector<std::string>& args) {
-  static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("demwb_e2e_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string n = std::to_string(counter++);
-  support::ProcessSpec spec;
-  spec.argv = {DEMWB_BINARY};
-  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-  spec.stdout_file = dir / ("out" + n);
-  spec.stderr_file = dir / ("err" + n);
-  spec.timeout_s = 120;
-  const auto r = support::run_process(spec);
-  EXPECT_TRUE(r.started) << r.error;
-  EXPECT_FALSE(r.timed_out);
-  return {r.exit_code, support::read_file(spec.stdout_file), support::read_file(spec.stderr_file)};
-}
-
-std::string canonical(const char* name) {
-  return std::string(DEMWB_SOURCE_DIR) + "/cases/canonical/" + name + ".toml";
-}
-
-fs::path scratch(const char* name) {
-  const fs::path p = fs::temp_directory_path() / ("demwb_e2e_out_" + std::to_string(::getpid())) / name;
-  fs::remove_all(p);
-  return p;
-}
 
 TEST(DemwbRun, SingleCollisionMatchesTheClosedFormAndEveryComparisonPasses) {
   const fs::path out = scratch("run");
@@ -136,10 +106,46 @@ TEST(DemwbSuite, CanonicalSuiteWritesOneReportCoveringEveryCase) {
   EXPECT_EQ(j["status"], "pass");
   EXPECT_GE(j["cases"].size(), 2U);
   const std::string report = support::read_file(out / "report.md");
-  for (const char* name : {"single_collision", "sandwich"}) {
-    EXPECT_NE(report.find(std::string("`") + name + "`"), std::string::npos) << name;
+  for (const auto& c : j["cases"]) {
+    const std::string name = c["case"];
+    EXPECT_NE(report.find("`" + name + "`"), std::string::npos) << name;
     EXPECT_TRUE(fs::exists(out / name / "results.json")) << name;
   }
+  // Every figure the report links exists.
+  std::size_t figures = 0;
+  for (std::size_t at = report.find("]("); at != std::string::npos; at = report.find("](", at + 2)) {
+    const auto end = report.find(')', at);
+    const std::string target = report.substr(at + 2, end - at - 2);
+    if (target.size() < 4 || target.substr(target.size() - 4) != ".png") continue;
+    ++figures;
+    EXPECT_TRUE(fs::exists(out / target)) << target;
+  }
+  EXPECT_GE(figures, j["cases"].size());
+  EXPECT_TRUE(fs::exists(out / "junit.xml"));
+}
+
+TEST(DemwbSuite, TheReportRendersCleanlyWithPandoc) {
+  support::ProcessSpec probe;
+  probe.argv = {"pandoc", "--version"};
+  probe.timeout_s = 30;
+  if (const auto p = support::run_process(probe); !p.started || p.exit_code != 0) {
+    GTEST_SKIP() << "pandoc is not installed (scripts/setup.sh installs it)";
+  }
+  const fs::path out = scratch("suite_pandoc");
+  ASSERT_EQ(demwb({"suite", "canonical", "-o", out.string(), "-j", "2"}).exit_code, 0);
+  support::ProcessSpec spec;
+  spec.argv = {"pandoc", "--fail-if-warnings", "-f", "gfm", "-t", "html", "--standalone", "--metadata",
+               "title=report", (out / "report.md").string(), "-o", (out / "report.html").string()};
+  spec.stderr_file = out / "pandoc.err";
+  spec.timeout_s = 120;
+  const auto r = support::run_process(spec);
+  ASSERT_TRUE(r.started) << r.error;
+  EXPECT_EQ(r.exit_code, 0) << support::read_file(out / "pandoc.err");
+  EXPECT_EQ(support::read_file(out / "pandoc.err"), "");
+  const std::string html = support::read_file(out / "report.html");
+  EXPECT_NE(html.find("<table"), std::string::npos);
+  EXPECT_NE(html.find("<img src=\"single_collision/plots/"), std::string::npos);
+  EXPECT_EQ(html.find("|---|"), std::string::npos) << "a table was left as text";
 }
 
 TEST(DemwbEngines, ListsTheBuiltInEngines) {

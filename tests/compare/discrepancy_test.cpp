@@ -2,7 +2,9 @@
 // Statuses of comparisons: pass/fail by tolerance; error, missing and n/a never pass.
 #include <gtest/gtest.h>
 
+#include "cases/catalogue.hpp"
 #include "compare/case_outcome.hpp"
+#include "compare/discrepancy.hpp"
 #include "scene_fixtures.hpp"
 
 namespace {
@@ -117,6 +119,26 @@ TEST(CompareRuns, AMetricTheEngineCannotExpressIsNotApplicableWithItsReason) {
   EXPECT_EQ(o.comparisons[0].status, comparison::Status::pass);
   EXPECT_EQ(o.comparisons[1].status, comparison::Status::not_applicable);
   EXPECT_EQ(o.comparisons[1].note, "lammps: breaks contacts elsewhere by design");
+}
+
+}  // namespace
+
+namespace {
+
+TEST(DefaultTolerances, EveryCataloguedMetricHasOneOfItsKindAndMatchedRowsUseOneE8) {
+  for (const auto& m : cases::metric_catalogue()) {
+    const cases::Tolerance t = comparison::default_tolerance(m.name);
+    EXPECT_TRUE((t.rel > 0.0) != (t.abs > 0.0)) << m.name << " should have exactly one default kind";
+  }
+  EXPECT_EQ(comparison::default_tolerance("rebound_angle").abs, 0.05);
+  EXPECT_EQ(comparison::default_tolerance("tangential_restitution").abs, 1e-3);
+  EXPECT_EQ(comparison::default_tolerance("rupture_separation").rel, 5e-3);
+  cases::Scene scene;
+  EXPECT_EQ(comparison::matched_tolerance_for(scene, "restitution").abs, 1e-8);
+  EXPECT_EQ(comparison::matched_tolerance_for(scene, "restitution").rel, 0.0);
+  EXPECT_EQ(comparison::matched_tolerance_for(scene, "contact_duration").rel, 1e-8);
+  scene.compare.matched_tolerances["contact_duration"] = {1e-10, 0.0};
+  EXPECT_EQ(comparison::matched_tolerance_for(scene, "contact_duration").rel, 1e-10);
 }
 
 }  // namespace

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+// Every malformed case of tests/data/bad_cases/ through the real program: `demwb run` and
+// `demwb compare` exit 2 with a message naming the file and the key, never crash, hang or print
+// a table (with or without NaN).
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "demwb_process.hpp"
+
+namespace {
+
+using demwb_e2e::demwb;
+using demwb_e2e::scratch;
+namespace fs = std::filesystem;
+
+/// Every malformed case file, sorted by name.
+std::vector<fs::path> bad_case_files() {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fs::path(DEMWB_TEST_DATA_DIR) / "bad_cases")) {
+    if (entry.path().extension() == ".toml") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+/// The key the file's first line ("# expect: KEY | FRAGMENT") promises the error names.
+std::string expected_key(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  const std::string prefix = "# expect: ";
+  const auto bar = line.find(" | ");
+  if (line.rfind(prefix, 0) != 0 || bar == std::string::npos) return {};
+  return line.substr(prefix.size(), bar - prefix.size());
+}
+
+/// Parameterised over the malformed case files.
+class BadCaseFile : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(BadCaseFile, RunAndCompareExitTwoNamingFileAndKey) {
+  const fs::path file = GetParam();
+  const std::string key = expected_key(file);
+  ASSERT_FALSE(key.empty()) << file;
+  const fs::path out = scratch("bad_" + file.stem().string());
+  for (const char* command : {"run", "compare"}) {
+    const auto r = demwb({command, file.string(), "-o", out.string(), "--no-cache"}, {}, 60);
+    EXPECT_EQ(r.exit_code, 2) << command << " " << file << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(file.string() + ":"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(": " + key + ": "), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("| "), std::string::npos) << "a table was printed for a bad case:\n" << r.out;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(out / "results.json")) << command << " wrote results for a bad case";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Demwb, BadCaseFile, ::testing::ValuesIn(bad_case_files()),
+                         [](const ::testing::TestParamInfo<fs::path>& param) { return param.param.stem().string(); });
+
+TEST(DemwbBadInput, TheCorpusHoldsAtLeastFortyCases) { EXPECT_GE(bad_case_files().size(), 40U); }
+
+TEST(DemwbBadInput, AMissingOrUnreadableCaseFileIsAnErrorNamingIt) {
+  const auto r = demwb({"run", "/nonexistent/case.toml"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/nonexistent/case.toml"), std::string::npos) << r.err;
+}
+
+TEST(DemwbBadInput, ACoarseTimestepIsAWarningNamingTheKeyNotAnError) {
+  std::string text = demwb_e2e::canonical("single_collision");
+  std::ifstream in(text);
+  std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string from = "timestep = 5.0e-6";
+  const auto at = body.find(from);
+  ASSERT_NE(at, std::string::npos) << "single_collision.toml no longer sets " << from;
+  body.replace(at, from.size(), "timestep = 2.0e-4");
+  const fs::path file = scratch("coarse") / "coarse.toml";
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << body;
+  const auto r = demwb({"run", file.string(), "--engine", "inhouse", "-o", scratch("coarse_out").string()});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE((r.out + r.err).find("integration.timestep"), std::string::npos) << r.out << r.err;
+}
+
+}  // namespace

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+// End-to-end tests of `demwb gate`: a failing comparison, a drifted in-house metric, and engines
+// that crashed or are missing must all give a failing exit and name what failed.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "demwb_process.hpp"
+#include "support/text_file.hpp"
+
+namespace {
+
+using demwb_e2e::canonical;
+using demwb_e2e::demwb;
+using demwb_e2e::scratch;
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+/// A suite folder holding the canonical single collision with one tolerance replaced.
+fs::path strict_suite(const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = support::read_file(canonical("single_collision"));
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  const fs::path dir = scratch(name);
+  support::write_file(dir / "single_collision.toml", text);
+  return dir;
+}
+
+/// A results.json of one case whose rows have the given statuses (engine "lammps" unless named).
+Json results_with_rows(const std::vector<std::pair<std::string, std::string>>& engine_status) {
+  Json doc;
+  doc["case"] = "hand_made";
+  doc["engines"] = Json::object();
+  doc["comparisons"] = Json::array();
+  for (const auto& [engine, status] : engine_status) {
+    doc["comparisons"].push_back({{"metric", "contact_duration"},
+                                  {"engine", engine},
+                                  {"reference", "analytic"},
+                                  {"value", nullptr},
+                                  {"reference_value", 6.4e-4},
+                                  {"tolerance", {{"rel", 1e-3}}},
+                                  {"status", status},
+                                  {"note", engine + " did not produce a result"}});
+  }
+  return doc;
+}
+
+TEST(DemwbGate, AnImpossibleToleranceFailsTheGateAndNamesTheRow) {
+  const fs::path suite = strict_suite("gate_strict", "contact_duration = { rel = 1.0e-3 }",
+                                      "contact_duration = { rel = 1.0e-12 }");
+  const auto r = demwb({"gate", suite.string(), "-o", scratch("gate_strict_out").string(), "--no-cache"});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("FAIL single_collision: contact_duration inhouse vs analytic: fail"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("— FAIL"), std::string::npos) << r.out;
+}
+
+TEST(DemwbGate, TheUnchangedCaseOnTheSameEnginesPasses) {
+  // Same suite shape and engines as the test above, with the case's own tolerances: the
+  // failure above is the tolerance's doing, not the set-up's.
+  const fs::path suite = strict_suite("gate_same", "contact_duration = { rel = 1.0e-3 }",
+                                      "contact_duration = { rel = 1.0e-3 }");
+  const auto r = demwb({"gate", suite.string(), "-o", scratch("gate_same_out").string(), "--no-cache"});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("— PASS"), std::string::npos) << r.out;
+}
+
+TEST(DemwbGate, AnInhouseMetricThatDriftedFromAnEditedBaselineFails) {
+  const fs::path run = scratch("gate_drift_run");
+  ASSERT_EQ(demwb({"run", canonical("single_collision"), "--engine", "inhouse", "--engine", "analytic", "-o",
+                   run.string()})
+                .exit_code,
+            0);
+  const Json results = Json::parse(support::read_file(run / "results.json"));
+  const double now = results["engines"]["inhouse"]["metrics"]["contact_duration"];
+  Json baseline;
+  baseline["case"] = "single_collision";
+  baseline["fingerprint"] = "made by the test";
+  baseline["references"] = Json::object();
+  baseline["inhouse_metrics"] = {{"contact_duration", now * 1.01}};  // 1 % off, tolerance 0.1 %
+  const fs::path file = scratch("gate_drift_baseline") / "single_collision.json";
+  support::write_file(file, baseline.dump(1));
+  const auto r = demwb({"gate", run.string(), "--baseline", file.string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("in-house contact_duration drifted from the baseline"), std::string::npos) << r.out;
+
+  baseline["inhouse_metrics"] = {{"contact_duration", now}};
+  support::write_file(file, baseline.dump(1));
+  const auto same = demwb({"gate", run.string(), "--baseline", file.string()});
+  EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+}
+
+TEST(DemwbGate, ErrorAndMissingNeverPass) {
+  const fs::path dir = scratch("gate_statuses");
+  support::write_file(dir / "results.json", results_with_rows({{"lammps", "error"}, {"yade", "missing"}}).dump(2));
+  const auto r = demwb({"gate", dir.string(), "--baseline", (dir / "none.json").string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_NE(r.out.find("FAIL hand_made: contact_duration lammps vs analytic: error"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FAIL hand_made: contact_duration yade vs analytic: missing"), std::string::npos) << r.out;
+
+  // --allow-missing lets the missing engine through, never the crashed one.
+  const auto allowed = demwb({"gate", dir.string(), "--allow-missing", "--baseline", (dir / "none.json").string()});
+  EXPECT_EQ(allowed.exit_code, 1) << allowed.out;
+  EXPECT_NE(allowed.out.find("lammps vs analytic: error"), std::string::npos) << allowed.out;
+  EXPECT_EQ(allowed.out.find("yade vs analytic: missing"), std::string::npos) << allowed.out;
+
+  support::write_file(dir / "results.json", results_with_rows({{"yade", "missing"}}).dump(2));
+  EXPECT_EQ(demwb({"gate", dir.string(), "--baseline", (dir / "none.json").string()}).exit_code, 1);
+  EXPECT_EQ(demwb({"gate", dir.string(), "--allow-missing", "--baseline", (dir / "none.json").string()}).exit_code,
+            0);
+}
+
+TEST(DemwbGate, AReferenceCodeThatIsNotInstalledIsMissingAndFailsTheGate) {
+  // No lmp in PATH and no baselines to fall back on: LAMMPS is `missing` in the table.
+  const fs::path out = scratch("gate_no_lammps");
+  const fs::path empty_baselines = scratch("gate_no_baselines");
+  fs::create_directories(empty_baselines);
+  const auto r = demwb({"compare", canonical("single_collision"), "--engines", "inhouse,analytic,lammps", "--no-cache",
+                        "--baselines", empty_baselines.string(), "-o", out.string()},
+                       {{"PATH", "/nonexistent"}});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("| contact_duration | lammps |"), std::string::npos) << r.out;
+  const auto g = demwb({"gate", out.string(), "--baseline", (empty_baselines / "none.json").string()});
+  EXPECT_EQ(g.exit_code, 1) << g.out;
+  EXPECT_NE(g.out.find("lammps vs analytic: missing"), std::string::npos) << g.out;
+}
+
+}  // namespace
