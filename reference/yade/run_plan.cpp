@@ -104,6 +104,7 @@ YadeRunPlan make_run_plan(const cases::Scene& scene) {
   plan.snapshot_iterations = snapshot_iterations(scene.output.snapshot_times, plan.timestep, plan.steps);
   plan.trace_columns = trace_columns(scene);
   plan.model = map_contact_model(scene);
+  plan.calibration = plan_calibration(scene, plan.model, plan.steps);
   StartVelocities start = start_velocities(scene, plan.timestep);
   plan.start_velocities = std::move(start.velocity);
 
@@ -145,6 +146,12 @@ YadeRunPlan make_run_plan(const cases::Scene& scene) {
   c["rotation"] = scene.integration.rotation
                       ? "integrated by NewtonIntegrator (spherical leapfrog)"
                       : "blocked (State.blockedDOFs = 'XYZ'): angular velocities keep their initial values";
+  c["restitution calibration"] =
+      plan.calibration
+          ? "FrictViscoMat.betan calibrated by secant on two-body YADE runs so that YADE's rebound "
+            "is the case's ε (table in the run's calibrations); YADE's α-scaled dashpot and the "
+            "leapfrog's O(Δt) error are absorbed in it"
+          : "none: YADE's own damping convention (the registry's mapping) is used as is";
   c["invocation"] =
       "python3.11 imports yade as a module (no `yade` launcher, so no TCP prompt or XMLRPC server)";
   c["threads"] = "OMP_NUM_THREADS=1";

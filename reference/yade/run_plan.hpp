@@ -8,6 +8,7 @@
 
 #include "cases/scene.hpp"
 #include "reference/yade/model_mapping.hpp"
+#include "reference/yade/restitution_calibration.hpp"
 
 namespace reference::yade {
 
@@ -21,6 +22,7 @@ struct YadeRunPlan {
   std::vector<cases::Vector3> start_velocities;   ///< State.vel per particle, taken as v(−Δt/2)
   std::vector<std::string> trace_columns;         ///< exactly the in-house engine's columns
   YadeModelMapping model;
+  std::optional<YadeCalibrationPlan> calibration;  ///< betan calibration run first, if any
   std::vector<std::string> warnings;              ///< time step, start velocity, mapping
   std::map<std::string, std::string> conventions; ///< for RunResult::conventions
 };

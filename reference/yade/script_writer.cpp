@@ -7,6 +7,7 @@
 
 #include "dem/particles/particles.hpp"
 #include "reference/yade/python_literals.hpp"
+#include "reference/yade/restitution_calibration.hpp"
 
 namespace reference::yade {
 namespace {
@@ -73,11 +74,13 @@ void write_materials(std::string& s, const cases::Scene& scene, const YadeRunPla
                    py_float(at(m.material_poisson, 0.25)), py_float(at(m.material_damping_ratio, 0.0)));
   }
   s += "]\n"
-       "for k, (label, density, young, poisson, betan) in enumerate(MATERIALS):\n";
-  s += m.viscous ? "    mat = FrictViscoMat(young=young, poisson=poisson, density=density, frictionAngle=0.0,\n"
-                   "                        betan=betan, label=label)\n"
-                 : "    mat = FrictMat(young=young, poisson=poisson, density=density, frictionAngle=0.0, label=label)\n";
-  s += "    assert O.materials.append(mat) == k\n\n";
+       "def _append_materials():\n"
+       "    for k, (label, density, young, poisson, betan) in enumerate(MATERIALS):\n";
+  s += m.viscous ? "        mat = FrictViscoMat(young=young, poisson=poisson, density=density, frictionAngle=0.0,\n"
+                   "                            betan=betan, label=label)\n"
+                 : "        mat = FrictMat(young=young, poisson=poisson, density=density, frictionAngle=0.0, label=label)\n";
+  s += "        assert O.materials.append(mat) == k\n"
+       "_append_materials()\n\n";
 
   s += "# Contact parameters of every material pair from the workbench's pair table: exact values,\n"
        "# YADE's own mixing is not used (a pair missing here would get NaN).\n";
@@ -130,8 +133,11 @@ void write_walls(std::string& s, const cases::Scene& scene) {
                    a.axis, a.sense, w.material);
   }
   s += "]\n"
-       "for k, (position, axis, sense, material) in enumerate(WALLS):\n"
-       "    assert O.bodies.append(utils.wall(position, axis=axis, sense=sense, material=material)) == len(PARTICLES) + k\n\n";
+       "def _append_walls():\n"
+       "    for k, (position, axis, sense, material) in enumerate(WALLS):\n"
+       "        wall = utils.wall(position, axis=axis, sense=sense, material=material)\n"
+       "        assert O.bodies.append(wall) == len(PARTICLES) + k\n"
+       "_append_walls()\n\n";
 }
 
 void write_particles(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
@@ -149,16 +155,18 @@ void write_particles(std::string& s, const cases::Scene& scene, const YadeRunPla
                    py_float(dem::sphere_inertia(mass, p.radius)));
   }
   s += "]\n"
-       "for i, (radius, material, pos, vel, angvel, fixed, mass, inertia) in enumerate(PARTICLES):\n"
-       "    b = utils.sphere(pos, radius, fixed=fixed, material=material)  # fixed: all DOFs blocked\n"
-       "    b.state.mass = mass\n"
-       "    b.state.inertia = Vector3(inertia, inertia, inertia)\n"
-       "    if not fixed:\n"
-       "        b.state.vel = vel\n"
-       "        b.state.angVel = angvel\n"
-       "        if not ROTATION:\n"
-       "            b.state.blockedDOFs = 'XYZ'\n"
-       "    assert O.bodies.append(b) == i\n\n";
+       "def _append_particles():\n"
+       "    for i, (radius, material, pos, vel, angvel, fixed, mass, inertia) in enumerate(PARTICLES):\n"
+       "        b = utils.sphere(pos, radius, fixed=fixed, material=material)  # fixed: all DOFs blocked\n"
+       "        b.state.mass = mass\n"
+       "        b.state.inertia = Vector3(inertia, inertia, inertia)\n"
+       "        if not fixed:\n"
+       "            b.state.vel = vel\n"
+       "            b.state.angVel = angvel\n"
+       "            if not ROTATION:\n"
+       "                b.state.blockedDOFs = 'XYZ'\n"
+       "        assert O.bodies.append(b) == i\n"
+       "_append_particles()\n\n";
 }
 
 void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
@@ -253,6 +261,7 @@ std::string write_yade_script(const cases::Scene& scene, const YadeRunPlan& plan
   write_materials(s, scene, plan);
   write_particles(s, scene, plan);
   write_walls(s, scene);
+  if (plan.calibration) s += write_calibration_block(*plan.calibration);
   write_recorders(s, scene, plan);
   write_engines_and_run(s);
   return s;

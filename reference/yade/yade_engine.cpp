@@ -7,6 +7,7 @@
 
 #include "reference/yade/model_mapping.hpp"
 #include "reference/yade/output_parser.hpp"
+#include "reference/yade/restitution_calibration.hpp"
 #include "reference/yade/run_plan.hpp"
 #include "reference/yade/scene_support.hpp"
 #include "reference/yade/script_writer.hpp"
@@ -93,6 +94,15 @@ cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& op
   try {
     result.trace = read_trace(outcome.directory, plan, scene.output.trace_every);
     result.snapshots = read_snapshots(outcome.directory, plan, scene.particles.size());
+    if (plan.calibration) {
+      const auto path = outcome.directory / yade::kCalibrationFile;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) {
+        throw yade::YadeOutputError(fmt::format("YADE wrote no calibration file ({})", path.string()));
+      }
+      result.calibrations.push_back(
+          yade::parse_calibration_csv(support::read_file(path), *plan.calibration));
+    }
   } catch (const yade::YadeOutputError& e) {
     result.reason = e.what();
     return result;

@@ -76,6 +76,26 @@ TEST(YadeHertz, MatchedMindlinAgreesWithin1em8) {
   expect_matched_within_1e8(canonical("hertz_collision.toml"), "hertz-matched");
 }
 
+TEST(YadeObliqueWall, NativeFrictViscoWallMeetsTheCaseTolerances) {
+  DEMWB_REQUIRE_YADE();
+  expect_native_within_tolerances(canonical("oblique_wall_impact.toml"), "oblique-native");
+}
+
+TEST(YadeObliqueWall, NativeRunRecordsTheRestitutionCalibration) {
+  DEMWB_REQUIRE_YADE();
+  const auto yade = reference::run_engine(reference::YadeEngine{}, canonical("oblique_wall_impact.toml"),
+                                          {scratch("oblique-calibration"), 300.0});
+  ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
+  ASSERT_EQ(yade.calibrations.size(), 1u);
+  const auto& c = yade.calibrations.front();
+  for (const auto& [betan, e] : c.samples) std::printf("  betan %.12g -> e %.12g\n", betan, e);
+  EXPECT_EQ(c.target, 0.8);
+  ASSERT_GE(c.samples.size(), 2u);
+  EXPECT_LT(c.samples.front().second, 0.8);  // the textbook betan: YADE's α lowers the rebound
+  EXPECT_NEAR(c.samples.back().second, 0.8, 1e-10);
+  EXPECT_EQ(c.chosen, c.samples.back().first);
+}
+
 TEST(YadeObliqueWall, MatchedFrictViscoWallAgreesWithin1em8) {
   DEMWB_REQUIRE_YADE();
   expect_matched_within_1e8(canonical("oblique_wall_impact.toml"), "oblique-matched");
