@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "app/driver_revisions.hpp"
 #include "cases/case_library.hpp"
 #include "cases/catalogue.hpp"
 #include "store/scene_json.hpp"
@@ -46,18 +47,24 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
   reference::RunOptions o = ctx.options;
   o.work_dir = ctx.options.work_dir / name;
   const bool reference_code = cases::is_reference_code(name);
-  if (reference_code && ctx.cache && !ctx.refresh) {
-    const auto start = std::chrono::steady_clock::now();
+  // The cache key's version: the code's own and its driver's source revision, so that results
+  // made by another driver are never reused.
+  std::optional<std::string> key;
+  if (reference_code && ctx.cache) {
     if (const auto version = engine->version()) {
-      if (auto hit = ctx.cache->find(scene, name, *version)) {
-        hit->conventions["original wall time"] = fmt::format("{:.3f} s", hit->wall_time_s);
-        hit->wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        return *hit;
-      }
+      key = fmt::format("{} | driver {}", *version, name == "lammps" ? kLammpsDriverRevision : kYadeDriverRevision);
+    }
+  }
+  if (key && !ctx.refresh) {
+    const auto start = std::chrono::steady_clock::now();
+    if (auto hit = ctx.cache->find(scene, name, *key)) {
+      hit->conventions["original wall time"] = fmt::format("{:.3f} s", hit->wall_time_s);
+      hit->wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return *hit;
     }
   }
   cases::RunResult result = reference::run_engine(*engine, scene, o);
-  if (reference_code && ctx.cache && result.status == cases::RunStatus::ok) ctx.cache->store(scene, result);
+  if (key && result.status == cases::RunStatus::ok) ctx.cache->store(scene, result, *key);
   if (reference_code && result.status == cases::RunStatus::missing && ctx.baselines) {
     if (auto b = baseline_result(scene, name, *ctx.baselines)) return *b;
   }

@@ -95,6 +95,12 @@ void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
     row.reference_value = value_of(metrics, reference.engine, row.metric, why);
     if (!row.reference_value) {
       row.note = "reference " + why;
+      // The reference states it cannot express this metric here: nothing to compare.
+      if (const auto e = metrics.find(reference.engine); e != metrics.end()) {
+        if (const auto it = e->second.find(row.metric); it != e->second.end() && it->second.not_applicable) {
+          row.status = Status::not_applicable;
+        }
+      }
       return;
     }
   }
@@ -184,6 +190,9 @@ std::vector<Comparison> compare_runs(const cases::Scene& scene,
   for (const std::string& metric : scene.compare.metrics) {
     for (const cases::RunResult& run : runs) {
       if (run.engine == ref_name) continue;
+      // A matched run adopts its reference code's conventions on purpose (e.g. where a JKR
+      // contact breaks): it is judged against that code only (append_matched_rows).
+      if (!cases::matched_code(run.engine).empty()) continue;
       Comparison row;
       row.metric = metric;
       row.engine = run.engine;

@@ -47,17 +47,17 @@ std::optional<cases::RunResult> ResultCache::find(const cases::Scene& scene, std
   }
 }
 
-void ResultCache::store(const cases::Scene& scene, const cases::RunResult& run) const {
+void ResultCache::store(const cases::Scene& scene, const cases::RunResult& run, const std::string& version) const {
   if (run.status != cases::RunStatus::ok) return;
   nlohmann::ordered_json j;
   j["fingerprint"] = scene_fingerprint(scene);
   j["engine"] = run.engine;
-  j["version"] = run.version;
+  j["version"] = version;
   j["scene"] = scene_json(scene);
   cases::RunResult stored = run;
   stored.source = "run";
   j["result"] = run_result_json(stored);
-  support::write_file(path_of(scene, run.engine, run.version), j.dump() + "\n");
+  support::write_file(path_of(scene, run.engine, version), j.dump() + "\n");
 }
 
 Baseline read_baseline(const std::filesystem::path& file) {

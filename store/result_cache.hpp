@@ -24,8 +24,9 @@ class ResultCache {
   /// The stored result of `engine` at `version` for `scene`, if any (source set to "cache").
   [[nodiscard]] std::optional<cases::RunResult> find(const cases::Scene& scene, std::string_view engine,
                                                      const std::string& version) const;
-  /// Stores a successful result (others are ignored). Throws on I/O failure.
-  void store(const cases::Scene& scene, const cases::RunResult& run) const;
+  /// Stores a successful result under `version` (the engine's version and its driver's revision;
+  /// others are ignored). Throws on I/O failure.
+  void store(const cases::Scene& scene, const cases::RunResult& run, const std::string& version) const;
   /// Where the result of `engine` at `version` for `scene` lives.
   [[nodiscard]] std::filesystem::path path_of(const cases::Scene& scene, std::string_view engine,
                                               const std::string& version) const;

@@ -142,3 +142,93 @@ TEST(DefaultTolerances, EveryCataloguedMetricHasOneOfItsKindAndMatchedRowsUseOne
 }
 
 }  // namespace
+
+namespace {
+
+/// Rows of `o` for `engine` against `reference`.
+std::vector<comparison::Comparison> rows_of(const comparison::CaseOutcome& o, const std::string& engine,
+                                            const std::string& reference) {
+  std::vector<comparison::Comparison> rows;
+  for (const auto& c : o.comparisons) {
+    if (c.engine == engine && c.reference == reference) rows.push_back(c);
+  }
+  return rows;
+}
+
+TEST(MatchedRows, AMatchedRunIsJudgedAgainstItsCodeOnlyWithTheTraceDeviation) {
+  auto scene = test_support::collision_scene({"max_overlap", "restitution"});
+  scene.compare.matched = {"lammps"};
+  scene.output.trace_particles = {0};
+  const auto trace = test_support::collision_trace(5e-6, 0.9);
+  const auto o = comparison::evaluate_runs(
+      scene, {test_support::ok_run("analytic", test_support::collision_trace(5e-6)),
+              test_support::ok_run("lammps", trace), test_support::ok_run("inhouse@lammps", trace)});
+  EXPECT_TRUE(rows_of(o, "inhouse@lammps", "analytic").empty());
+  const auto matched = rows_of(o, "inhouse@lammps", "lammps");
+  ASSERT_EQ(matched.size(), 3U);
+  EXPECT_EQ(matched[0].metric, "max_overlap");
+  EXPECT_EQ(matched[0].tolerance.rel, 1e-8);
+  EXPECT_EQ(matched[1].metric, "restitution");
+  EXPECT_EQ(matched[1].tolerance.abs, 1e-8);
+  EXPECT_EQ(matched[2].metric, "trace_deviation");
+  for (const auto& row : matched) {
+    EXPECT_EQ(row.status, comparison::Status::pass) << row.metric << ": " << row.note;
+  }
+  ASSERT_TRUE(matched[2].value) << matched[2].note;
+  EXPECT_EQ(*matched[2].value, 0.0);
+  // The native LAMMPS run (restitution 0.9) fails against the elastic closed form.
+  const auto native = rows_of(o, "lammps", "analytic");
+  ASSERT_EQ(native.size(), 2U);
+  EXPECT_EQ(native[1].status, comparison::Status::fail);
+}
+
+TEST(MatchedRows, ARestitutionOffByOnePartInAMillionFailsTheTraceDeviation) {
+  auto scene = test_support::collision_scene({"max_overlap"});
+  scene.compare.matched = {"yade"};
+  scene.output.trace_particles = {0};
+  const auto trace = test_support::collision_trace(5e-6);
+  const cases::Trace shifted = test_support::collision_trace(5e-6, 1.0 - 1e-6);
+  const auto o = comparison::evaluate_runs(
+      scene, {test_support::ok_run("analytic", trace), test_support::ok_run("yade", trace),
+              test_support::ok_run("inhouse@yade", shifted)});
+  const auto matched = rows_of(o, "inhouse@yade", "yade");
+  ASSERT_EQ(matched.size(), 2U);
+  EXPECT_EQ(matched[1].metric, "trace_deviation");
+  EXPECT_EQ(matched[1].status, comparison::Status::fail) << matched[1].note;
+  ASSERT_TRUE(matched[1].value) << matched[1].note;
+  EXPECT_GT(*matched[1].value, 1e-8);
+  EXPECT_LT(*matched[1].value, 1e-4);
+}
+
+TEST(MatchedRows, AMetricItsCodeCannotExpressIsNotApplicableNotAnError) {
+  auto scene = test_support::collision_scene({"max_overlap", "restitution"});
+  scene.compare.matched = {"lammps"};
+  const auto trace = test_support::collision_trace(5e-6);
+  auto lammps = test_support::ok_run("lammps", trace);
+  lammps.inexpressible_metrics["restitution"] = "breaks contacts elsewhere by design";
+  const auto o = comparison::evaluate_runs(
+      scene, {test_support::ok_run("analytic", trace), lammps, test_support::ok_run("inhouse@lammps", trace)});
+  const auto matched = rows_of(o, "inhouse@lammps", "lammps");
+  ASSERT_EQ(matched.size(), 3U);
+  EXPECT_EQ(matched[0].status, comparison::Status::pass);
+  EXPECT_EQ(matched[1].status, comparison::Status::not_applicable);
+  EXPECT_NE(matched[1].note.find("breaks contacts elsewhere by design"), std::string::npos) << matched[1].note;
+}
+
+TEST(MatchedRows, AMatchedCodeThatFailedMakesEveryMatchedRowAnError) {
+  auto scene = test_support::collision_scene({"max_overlap"});
+  scene.compare.matched = {"lammps"};
+  const auto trace = test_support::collision_trace(5e-6);
+  cases::RunResult crashed;
+  crashed.engine = "lammps";
+  crashed.status = cases::RunStatus::error;
+  crashed.reason = "lmp exited with status 1";
+  const auto o = comparison::evaluate_runs(
+      scene, {test_support::ok_run("analytic", trace), crashed, test_support::ok_run("inhouse@lammps", trace)});
+  for (const auto& row : rows_of(o, "inhouse@lammps", "lammps")) {
+    EXPECT_EQ(row.status, comparison::Status::error) << row.metric;
+    EXPECT_NE(row.note.find("lmp exited with status 1"), std::string::npos) << row.note;
+  }
+}
+
+}  // namespace

@@ -104,7 +104,7 @@ TEST(ResultCache, ReturnsAStoredResultOnlyForTheSameSceneEngineAndVersion) {
   const cases::Scene scene = single_collision();
   const cases::RunResult r = sample_result();
   EXPECT_FALSE(cache.find(scene, "lammps", r.version));
-  cache.store(scene, r);
+  cache.store(scene, r, r.version);
   const auto hit = cache.find(scene, "lammps", r.version);
   ASSERT_TRUE(hit);
   EXPECT_EQ(hit->source, "cache");
@@ -122,10 +122,10 @@ TEST(ResultCache, KeepsOnlySuccessfulRunsAndTreatsACorruptEntryAsAbsent) {
   const cases::Scene scene = single_collision();
   cases::RunResult failed = sample_result();
   failed.status = cases::RunStatus::error;
-  cache.store(scene, failed);
+  cache.store(scene, failed, failed.version);
   EXPECT_FALSE(fs::exists(cache.path_of(scene, "lammps", failed.version)));
   const cases::RunResult ok = sample_result();
-  cache.store(scene, ok);
+  cache.store(scene, ok, ok.version);
   support::write_file(cache.path_of(scene, "lammps", ok.version), "{ not json");
   EXPECT_FALSE(cache.find(scene, "lammps", ok.version));
 }
