@@ -200,7 +200,7 @@ TEST(MatchedRows, ARestitutionOffByOnePartInAMillionFailsTheTraceDeviation) {
   EXPECT_LT(*matched[1].value, 1e-4);
 }
 
-TEST(MatchedRows, AMetricItsCodeCannotExpressIsNotApplicableNotAnError) {
+TEST(MatchedRows, AMetricItsCodeCannotExpressForTheCaseIsStillComparedInTheMatchedRun) {
   auto scene = test_support::collision_scene({"max_overlap", "restitution"});
   scene.compare.matched = {"lammps"};
   const auto trace = test_support::collision_trace(5e-6);
@@ -208,11 +208,27 @@ TEST(MatchedRows, AMetricItsCodeCannotExpressIsNotApplicableNotAnError) {
   lammps.inexpressible_metrics["restitution"] = "breaks contacts elsewhere by design";
   const auto o = comparison::evaluate_runs(
       scene, {test_support::ok_run("analytic", trace), lammps, test_support::ok_run("inhouse@lammps", trace)});
+  const auto native = rows_of(o, "lammps", "analytic");
+  ASSERT_EQ(native.size(), 2U);
+  EXPECT_EQ(native[1].status, comparison::Status::not_applicable);
   const auto matched = rows_of(o, "inhouse@lammps", "lammps");
   ASSERT_EQ(matched.size(), 3U);
   EXPECT_EQ(matched[0].status, comparison::Status::pass);
-  EXPECT_EQ(matched[1].status, comparison::Status::not_applicable);
+  EXPECT_EQ(matched[1].status, comparison::Status::pass) << matched[1].note;
   EXPECT_NE(matched[1].note.find("breaks contacts elsewhere by design"), std::string::npos) << matched[1].note;
+}
+
+TEST(MatchedRows, AMatchedRunThatDisagreesOnSuchAMetricFails) {
+  auto scene = test_support::collision_scene({"restitution"});
+  scene.compare.matched = {"lammps"};
+  auto lammps = test_support::ok_run("lammps", test_support::collision_trace(5e-6, 0.9));
+  lammps.inexpressible_metrics["restitution"] = "breaks contacts elsewhere by design";
+  const auto o = comparison::evaluate_runs(scene, {test_support::ok_run("analytic", test_support::collision_trace(5e-6)),
+                                                   lammps,
+                                                   test_support::ok_run("inhouse@lammps", test_support::collision_trace(5e-6))});
+  const auto matched = rows_of(o, "inhouse@lammps", "lammps");
+  ASSERT_FALSE(matched.empty());
+  EXPECT_EQ(matched[0].status, comparison::Status::fail);
 }
 
 TEST(MatchedRows, AMatchedCodeThatFailedMakesEveryMatchedRowAnError) {
