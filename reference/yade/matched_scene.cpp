@@ -2,7 +2,9 @@
 #include "reference/yade/matched_scene.hpp"
 
 #include "reference/inhouse/scene_to_core.hpp"
+#include "reference/yade/matched_calibration.hpp"
 #include "reference/yade/model_mapping.hpp"
+#include "reference/yade/restitution_calibration.hpp"
 
 namespace reference::yade {
 
@@ -31,6 +33,16 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   matched.model.contact_at_zero_overlap = true;
   // Torque lever arm of a sphere–wall contact: radius − δ/2 (CundallStrack, sphericalBodies).
   matched.model.wall_lever_arm = dem::WallLeverArm::contact_point;
+  // The native YADE run calibrates FrictViscoMat.betan (restitution_calibration.hpp); the core
+  // repeats that calibration on its own replica and takes the ε' whose β(ε')/2 is that betan.
+  const YadeModelMapping mapping = map_contact_model(scene);
+  const auto calibration =
+      plan_calibration(scene, mapping, step_count(scene.integration.duration, *matched.integration.timestep));
+  if (calibration) {
+    if (const auto e = matched_calibrated_restitution(matched, *calibration)) {
+      matched.materials[calibration->material].restitution = *e;
+    }
+  }
   return matched;
 }
 

@@ -34,7 +34,8 @@ TEST(YadeDamping, NormalForceIsSpringPlusAlphaScaledDashpot) {
   const auto& p = scene.particles;
   const double k = *scene.materials[0].normal_stiffness;
   const double m = dem::sphere_mass(scene.materials[0].density, p[0].radius);
-  const double eta = dem::laws::restitution_damping_coefficient(0.5, m, k);
+  // the matched scene carries the restitution ε' of the calibrated betan (β(ε')/2)
+  const double eta = dem::laws::restitution_damping_coefficient(*scene.materials[0].restitution, m, k);
   const double contact = p[0].radius + p[1].radius;
   const auto& overlap = *yade.trace.column("c0-1.overlap");
   const auto& fn = *yade.trace.column("c0-1.fn");

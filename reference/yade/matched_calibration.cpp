@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+#include "reference/yade/matched_calibration.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "reference/inhouse/inhouse_engine.hpp"
+
+namespace reference::yade {
+namespace {
+
+/// The compared contact alone, as the YADE calibration block builds it: the particle and its
+/// partner (sphere or wall), no gravity, no friction, no rotation, its velocity traced.
+cases::Scene two_body_scene(const cases::Scene& matched, const YadeCalibrationPlan& plan) {
+  cases::Scene s = matched;
+  s.particles = {matched.particles[plan.particle]};
+  s.walls.clear();
+  if (plan.partner_particle) s.particles.push_back(matched.particles[*plan.partner_particle]);
+  if (plan.partner_wall) s.walls = {matched.walls[*plan.partner_wall]};
+  s.gravity = {0.0, 0.0, 0.0};
+  s.fluid.reset();
+  s.integration.rotation = false;
+  s.model.tangential = "none";
+  s.output = {};
+  s.output.trace_every = 1;
+  s.output.trace_particles = {0};
+  if (s.particles.size() > 1) s.output.trace_particles.push_back(1);
+  s.compare = {};
+  return s;
+}
+
+/// Rebound restitution of the two-body core run with material restitution ε', or NaN.
+double rebound(cases::Scene s, const YadeCalibrationPlan& plan, double restitution) {
+  s.materials[plan.material].restitution = restitution;
+  const auto run = InhouseEngine{}.run(s, {});
+  if (run.status != cases::RunStatus::ok || run.trace.rows() == 0) return std::nan("");
+  const auto velocity = [&](std::size_t i, std::size_t row) {
+    double v = 0.0;
+    const char* names[] = {"vx", "vy", "vz"};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto* c = run.trace.column(cases::particle_column(i, names[k]));
+      if (c == nullptr) return std::nan("");
+      v += (*c)[row] * plan.normal[k];
+    }
+    return v;
+  };
+  const std::size_t last = run.trace.rows() - 1;
+  const bool pair = s.particles.size() > 1;
+  const double before = velocity(0, 0) - (pair ? velocity(1, 0) : 0.0);
+  const double after = velocity(0, last) - (pair ? velocity(1, last) : 0.0);
+  return -after / before;
+}
+
+}  // namespace
+
+double restitution_for_betan(double betan) noexcept {
+  return std::exp(-std::numbers::pi * betan / std::sqrt(1.0 - betan * betan));
+}
+
+std::optional<double> matched_calibrated_restitution(const cases::Scene& matched,
+                                                     const YadeCalibrationPlan& plan) {
+  const cases::Scene s = two_body_scene(matched, plan);
+  const auto e_of = [&](double betan) { return rebound(s, plan, restitution_for_betan(betan)); };
+  // The same secant as the YADE block (restitution_calibration.cpp).
+  double b0 = plan.start;
+  double e0 = e_of(b0);
+  if (!std::isfinite(e0)) return std::nullopt;
+  double best_b = b0;
+  double best_e = e0;
+  double b1 = b0 * (1.0 + 2.0 * (e0 - plan.target));
+  for (int k = 0; k < 20; ++k) {
+    const double e1 = e_of(b1);
+    if (!std::isfinite(e1)) return std::nullopt;
+    if (std::abs(e1 - plan.target) < std::abs(best_e - plan.target)) {
+      best_b = b1;
+      best_e = e1;
+    }
+    if (std::abs(e1 - plan.target) <= 1e-12 || e1 == e0) break;
+    const double next = b1 - (e1 - plan.target) * (b1 - b0) / (e1 - e0);
+    b0 = b1;
+    e0 = e1;
+    b1 = next;
+  }
+  return restitution_for_betan(best_b);
+}
+
+}  // namespace reference::yade
