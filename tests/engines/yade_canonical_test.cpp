@@ -111,6 +111,25 @@ TEST(YadeDampedCollision, MatchedAlphaDashpotAgreesWithin1em8) {
   expect_matched_within_1e8(scene, "damped-matched-1e8");
 }
 
+TEST(YadeHertz, MatchedMindlinDampingAgreesWithin1em8) {
+  // damping 'yade_mindlin' = YADE's en → β_n (Thornton 2013 B6–B7), clipped F_n ≥ 0.
+  DEMWB_REQUIRE_YADE();
+  cases::Scene scene = canonical("hertz_collision.toml");
+  scene.model.damping = "yade_mindlin";
+  scene.model.clamp_tensile = true;
+  scene.materials[0].restitution = 0.5;
+  expect_matched_within_1e8(scene, "mindlin-damped-matched");
+}
+
+TEST(YadeHertz, MatchedDmtAdhesionAgreesWithin1em8) {
+  // cohesion 'dmt' = Mindlin's includeAdhesion with gamma = γ: F = k_no δ^{3/2} − 4πγR*.
+  DEMWB_REQUIRE_YADE();
+  cases::Scene scene = canonical("hertz_collision.toml");
+  scene.model.cohesion = "dmt";
+  scene.materials[0].surface_energy = 0.05;
+  expect_matched_within_1e8(scene, "dmt-matched");
+}
+
 TEST(YadeJkr, PullOffIsNotApplicableWithTheReason) {
   DEMWB_REQUIRE_YADE();
   const cases::Scene scene = canonical("jkr_pulloff.toml");
