@@ -130,8 +130,11 @@ struct ContactOutcome {
     rolling = std::visit([&](const auto& m) { return m.evaluate(in, basis, next); }, law.rolling);
     next.max_overlap = std::max(committed.max_overlap, g.overlap);
   } else {
+    // Apart (a long-range law may keep the pair interacting): the next touch is a new contact,
+    // so its springs start unloaded and its largest overlap afresh (eq 3.20).
     next.tangential_slip.setZero();
     next.rolling_slip.setZero();
+    next.max_overlap = 0.0;
   }
 
   out.force_on_p = out.normal_force * g.normal + tangential.force;

@@ -47,7 +47,8 @@ double expected_impact_speed(const ParticleProperties& props, const KinematicSta
 
 TimestepLimits timestep_limits(const ParticleProperties& props, const KinematicState& state,
                                const PairTable& table, const Vec3& gravity, bool rotation,
-                               double steps_per_collision) {
+                               double steps_per_collision,
+                               const std::vector<std::uint32_t>& wall_materials) {
   std::vector<MaterialCensus> census(table.material_count());
   for (std::size_t i = 0; i < props.size(); ++i) {
     MaterialCensus& c = census[props.material[i]];
@@ -80,6 +81,13 @@ TimestepLimits timestep_limits(const ParticleProperties& props, const KinematicS
         t_c = std::min(t_c, collision_duration(law, {m_a * m_b / (m_a + m_b), scale.reduced_radius, speed}));
       }
       if (fixed_partner) t_c = std::min(t_c, collision_duration(law, scale));
+    }
+    // A wall is a fixed partner of infinite radius: R* = r, m* = m.
+    for (const std::uint32_t w : wall_materials) {
+      const PairLaw& law = table.law(a, w);
+      const CollisionScale scale{census[a].lightest_mobile, census[a].smallest_radius, speed};
+      sqrt_m_over_k = std::min(sqrt_m_over_k, std::sqrt(scale.reduced_mass / collision_stiffness(law, scale)));
+      t_c = std::min(t_c, collision_duration(law, scale));
     }
   }
   return TimestepLimits{sqrt_m_over_k, (rotation ? 0.22 : 0.34) * sqrt_m_over_k, t_c,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,9 +25,11 @@ struct TimestepLimits {
 /// of each material pair that can actually touch (mobile–mobile, or mobile–fixed with m* = m).
 /// Stiffness that grows with overlap (Hertz) is taken at the overlap of an impact at twice the
 /// fastest initial speed, or of a fall through the largest diameter (PHYSICS.md §7).
+/// Plane walls of the materials `wall_materials` are infinite-mass partners with R* = r, m* = m.
 TimestepLimits timestep_limits(const ParticleProperties& props, const KinematicState& state,
                                const PairTable& table, const Vec3& gravity, bool rotation,
-                               double steps_per_collision);
+                               double steps_per_collision,
+                               const std::vector<std::uint32_t>& wall_materials = {});
 
 /// Automatic time step: the smaller of the O'Sullivan–Bray limit and t_c / a.
 [[nodiscard]] double automatic_timestep(const TimestepLimits& limits) noexcept;

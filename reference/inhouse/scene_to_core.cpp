@@ -76,8 +76,10 @@ CoreSetup core_setup(const cases::Scene& scene) {
   dem::KinematicState initial;
   dem::build_particles(s.particles, props, initial);
   const dem::PairTable table(s.materials, s.mixing, s.pair_overrides, s.model);
+  std::vector<std::uint32_t> wall_materials;
+  for (const auto& w : s.walls) wall_materials.push_back(w.material);
   out.limits = dem::timestep_limits(props, initial, table, s.fields.gravity, in.rotation,
-                                    in.steps_per_collision);
+                                    in.steps_per_collision, wall_materials);
   if (in.timestep) {
     s.timestep = *in.timestep;
     for (const auto& w : dem::timestep_warnings(s.timestep, out.limits)) {

@@ -47,3 +47,23 @@ TEST(TimestepWarnings, NameTheViolatedCriterion) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(TimestepLimits, APlaneWallIsAFixedPartnerWithTheSphereRadius) {
+  // The mover alone with a wall of its own material: the limits are those of m* = m against k.
+  auto s = test_support::head_on_collision(dem::SchemeId::rk2, 5e-5, 1.0);
+  dem::ParticleProperties props;
+  dem::KinematicState state;
+  s.particles.pop_back();  // drop the fixed partner: only the wall remains
+  dem::build_particles(s.particles, props, state);
+  const dem::PairTable table(s.materials, s.mixing, s.pair_overrides, s.model);
+  const auto none = dem::timestep_limits(props, state, table, dem::Vec3::Zero(), false, 20.0);
+  EXPECT_FALSE(std::isfinite(none.collision_duration)) << "no partner, no collision";
+  const auto wall = dem::timestep_limits(props, state, table, dem::Vec3::Zero(), false, 20.0, {0});
+  EXPECT_NEAR(wall.collision_duration, std::numbers::pi * std::sqrt(test_support::mover_mass() / 1e5), 1e-15);
+  EXPECT_NEAR(wall.cundall_strack, std::sqrt(test_support::mover_mass() / 1e5), 1e-18);
+  EXPECT_TRUE(std::isfinite(dem::automatic_timestep(wall)));
+}
+
+}  // namespace
