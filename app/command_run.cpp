@@ -96,7 +96,10 @@ int command_run(const std::vector<std::string>& args, const Invocation& inv) {
   const RunContext context = run_context(*vm, out / "work");
   comparison::CaseOutcome outcome = run_case(scene, engines, context);
   if (std::find(engines.begin(), engines.end(), scene.compare.reference) == engines.end()) {
-    outcome.comparisons.clear();  // the reference did not run: metrics only
+    // The case's reference did not run: keep only rows whose own reference did (matched rows).
+    std::erase_if(outcome.comparisons, [&](const comparison::Comparison& c) {
+      return std::find(engines.begin(), engines.end(), c.reference) == engines.end();
+    });
   }
   reports::write_case_outputs(outcome, out, reports::reproduce_command(inv.argc, inv.argv), context.wall_times);
   std::cout << engine_summary(outcome);

@@ -160,7 +160,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   all["cases"] = nlohmann::ordered_json::array();
   comparison::Status worst = comparison::Status::pass;
   for (const auto& e : entries) {
-    if (!comparison::is_green(entry_status(e))) worst = entry_status(e);
+    worst = comparison::worse(worst, entry_status(e));
     if (!e.outcome) {
       all["cases"].push_back({{"case_file", e.file.string()}, {"status", "error"}, {"reason", e.load_error}});
       continue;

@@ -54,7 +54,7 @@ void add_run_options(po::options_description& opts) {
   opts.add_options()("timeout", po::value<double>()->default_value(600.0),
                      "seconds before an external engine is killed")(
       "cache", po::value<std::string>(),
-      "reference-result cache directory (default $DEMWB_CACHE_DIR, else ~/.cache/demwb)")(
+      "reference-result cache directory (default $DEMWB_CACHE_DIR, else $XDG_CACHE_HOME/demwb, else ~/.cache/demwb, else ./.demwb-cache)")(
       "no-cache", "run reference codes every time and store nothing")(
       "baselines", po::value<std::string>(),
       "committed baselines used when a reference code is not installed (default cases/baselines)")(

@@ -15,7 +15,8 @@ namespace app {
 /// --match.
 void add_run_options(boost::program_options::options_description& opts);
 
-/// `scene` with the reference codes of --match added to compare.matched (and compare.engines).
+/// `scene` with the reference codes of --match added to compare.matched (engines_to_run then adds
+/// each code and its matched engine to the engines run).
 cases::Scene with_matches(cases::Scene scene, const boost::program_options::variables_map& vm);
 
 /// The run context those options describe; `work_dir` holds the engines' scratch files.

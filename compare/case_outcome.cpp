@@ -18,6 +18,8 @@ int severity(Status s) noexcept {
 
 }  // namespace
 
+Status worse(Status a, Status b) noexcept { return severity(b) > severity(a) ? b : a; }
+
 Status worst_status(const CaseOutcome& outcome) noexcept {
   Status worst = Status::pass;
   for (const auto& c : outcome.comparisons) {

@@ -23,6 +23,8 @@ struct CaseOutcome {
 
 /// Worst status over the outcome's comparisons (pass when there are none).
 Status worst_status(const CaseOutcome& outcome) noexcept;
+/// The more severe of two statuses (pass < n/a < missing < fail < error).
+Status worse(Status a, Status b) noexcept;
 
 /// Computes metrics and comparisons for runs already made.
 CaseOutcome evaluate_runs(cases::Scene scene, std::vector<cases::RunResult> runs);

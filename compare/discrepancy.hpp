@@ -28,7 +28,7 @@ struct Comparison {
   std::string note;                 ///< reason for error / missing / n/a
 };
 
-/// Tolerance used when the case gives none for `metric` (documented in docs/case-format.md).
+/// Tolerance used when the case gives none for `metric` (documented in docs/metrics.md).
 cases::Tolerance default_tolerance(std::string_view metric) noexcept;
 
 /// Tolerance of `metric` in `scene` (the case's own, else the default).

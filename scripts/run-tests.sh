@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Quick start, command 2: installs what is missing, builds, and runs every test with ctest.
-# Select by label with e.g. `scripts/run-tests.sh -L unit` (labels: unit, e2e, study).
+# Select by label with e.g. `scripts/run-tests.sh -L unit` (labels: unit, e2e, study, reference = runs the real lmp / YADE).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/setup.sh"
