@@ -14,6 +14,9 @@
 namespace reference::yade {
 namespace {
 
+/// Largest scene for the O(N²) per-step Python cohesion force.
+constexpr std::size_t kMaxPythonCohesionParticles = 50;
+
 /// std::visit helper: one lambda per alternative.
 template <class... F>
 struct Overloaded : F... {
@@ -146,9 +149,15 @@ SlotMapping map_tangential(const dem::TangentialModel& model, YadeLaw law, YadeP
 }
 
 /// Cohesion slot: `none`, or DMT through Mindlin's adhesion (gamma); JKR has no YADE law.
-SlotMapping map_cohesion(const dem::CohesionModel& model, YadeLaw law, double& surface_energy) {
+SlotMapping map_cohesion(const dem::CohesionModel& model, YadeLaw law, double& surface_energy,
+                         YadePairParameters& pair) {
   return std::visit(
       Overloaded{[](const dem::NoCohesion& m) { return mapped(m); },
+                 [&](const dem::LinearCohesion& m) {
+                   if (law == YadeLaw::mindlin) return refused("YADE driver: cohesion 'linear' needs the linear normal model");
+                   pair.cohesive_stiffness = m.stiffness;
+                   return mapped(m);
+                 },
                  [&](const dem::DmtCohesion& m) {
                    if (law != YadeLaw::mindlin) return refused("YADE driver: cohesion 'dmt' needs the Hertz normal model");
                    if (surface_energy != 0.0 && surface_energy != m.surface_energy) {
@@ -301,7 +310,7 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
                              : (slots[0].ok ? unmapped("damping", std::visit([](const auto& m) { return keyword_of(m); }, law.damping))
                                             : SlotMapping{true, "", ""});
       slots[2] = map_tangential(law.tangential, f, pair);
-      slots[3] = map_cohesion(law.cohesion, f, out.surface_energy);
+      slots[3] = map_cohesion(law.cohesion, f, out.surface_energy, pair);
       slots[4] = map_rolling(law.rolling);
       const char* names[] = {"normal", "damping", "tangential", "cohesion", "rolling"};
       bool ok = true;
@@ -328,6 +337,23 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
   out.law = family.value_or(YadeLaw::frict);
   out.viscous = out.law == YadeLaw::frict_visco;
   check_walls(scene, out.law, out.reasons);
+  for (const auto& p : out.pairs) out.python_cohesion = out.python_cohesion || p.cohesive_stiffness != 0.0;
+  if (out.python_cohesion) {
+    if (!scene.walls.empty()) {
+      out.reasons.push_back("YADE driver: linear cohesion against plane walls is not mapped (the "
+                            "per-step Python force handles sphere pairs only)");
+    }
+    if (scene.particles.size() > kMaxPythonCohesionParticles) {
+      out.reasons.push_back(fmt::format(
+          "YADE driver: linear cohesion is a per-step Python force over all particle pairs, "
+          "mapped for at most {} particles (the scene has {})",
+          kMaxPythonCohesionParticles, scene.particles.size()));
+    }
+    out.warnings.push_back(
+        "cohesion 'linear': not built into YADE; the script adds F = k_c (r̂_p + r̂_q − d) along "
+        "the line of centres with O.forces.addF in a PyRunner between InteractionLoop and "
+        "NewtonIntegrator (exact, ~10× slower per step); YADE's Coulomb cap does not see it");
+  }
   if (out.law == YadeLaw::mindlin) {
     for (std::size_t k = 0; k < n; ++k) {
       out.material_young[k] = scene.materials[k].youngs_modulus.value_or(1.0);

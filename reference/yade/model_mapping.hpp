@@ -26,6 +26,7 @@ struct YadePairParameters {
   double damping_ratio = 0.0;     ///< betan: frict_visco η/(2√(m* kn)); Mindlin β_n; 0 without dashpot
   double shear_stiffness = 0.0;   ///< ks [N/m] (frict; frict_visco passes kRatio = ks/kn); 0 for Mindlin
   double friction_angle = 0.0;    ///< atan μ [rad] (frictAngle MatchMaker)
+  double cohesive_stiffness = 0.0;  ///< k_c [N/m] of the per-step Python force (linear cohesion)
 };
 
 /// How the scene's contact model and walls are expressed in YADE 2023.02a.
@@ -36,6 +37,7 @@ struct YadeModelMapping {
   std::vector<double> material_young;          ///< FrictMat.young per material (Mindlin; else 1)
   std::vector<double> material_poisson;        ///< FrictMat.poisson per material (Mindlin; else 0.25)
   double surface_energy = 0.0;                 ///< Mindlin DMT gamma (one value for every pair); 0: none
+  bool python_cohesion = false;                ///< linear cohesion as a per-step Python force
   std::vector<YadePairParameters> pairs;       ///< every material pair a ≤ b
   std::vector<std::string> reasons;            ///< why the model cannot be expressed (empty: it can)
   std::vector<std::string> warnings;           ///< where YADE's law differs from the workbench's

@@ -31,6 +31,7 @@ std::optional<YadeCalibrationPlan> plan_calibration(const cases::Scene& scene,
                                                     const YadeModelMapping& model,
                                                     std::uint64_t max_steps) {
   if (model.law != YadeLaw::frict_visco || scene.model.damping != "restitution") return std::nullopt;
+  if (model.python_cohesion) return std::nullopt;  // the two-body rebound would need the cohesion too
   YadeCalibrationPlan plan;
   std::size_t partner_material = 0;
   const auto& ps = scene.particles;
@@ -57,6 +58,12 @@ std::optional<YadeCalibrationPlan> plan_calibration(const cases::Scene& scene,
   } else {
     return std::nullopt;
   }
+  double approach = 0.0;  // (u_p − u_q)·n < 0: the two bodies close in
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double partner = plan.partner_particle ? ps[*plan.partner_particle].velocity[k] : 0.0;
+    approach += (ps[plan.particle].velocity[k] - partner) * n[k];
+  }
+  if (!(approach < 0.0)) return std::nullopt;
   plan.material = ps[plan.particle].material;
   if (partner_material != plan.material) return std::nullopt;
   const auto& mat = scene.materials[plan.material];

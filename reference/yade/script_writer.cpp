@@ -121,6 +121,42 @@ void write_materials(std::string& s, const cases::Scene& scene, const YadeRunPla
   }
 }
 
+/// Linear cohesion (eq 3.33) as an exact per-step force: F = k_c (r̂_p + r̂_q − d) attracting
+/// along the line of centres while the effect spheres overlap, added with O.forces.addF by a
+/// PyRunner between InteractionLoop and NewtonIntegrator (yade-notes §8).
+void write_python_cohesion(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
+  auto out = std::back_inserter(s);
+  s += "# Linear cohesion (not built into YADE): k_c per material pair, effect radius per particle.\n"
+       "COHESIVE_STIFFNESS = {";
+  for (const auto& p : plan.model.pairs) {
+    fmt::format_to(out, "({}, {}): {}, ({}, {}): {}, ", p.material_a, p.material_b,
+                   py_float(p.cohesive_stiffness), p.material_b, p.material_a,
+                   py_float(p.cohesive_stiffness));
+  }
+  s += "}\n";
+  fmt::format_to(out, "EFFECT_RADII = [{}]\n", joined(scene.particles, [](const auto& p) {
+                   return py_float(p.effect_radius);
+                 }));
+  s += "def apply_cohesion():\n"
+       "    \"\"\"Adds -k_c * effect overlap along the line of centres for every particle pair (x(n)).\"\"\"\n"
+       "    COHESIVE_FN.clear()\n"
+       "    for i in range(len(PARTICLES)):\n"
+       "        for j in range(i + 1, len(PARTICLES)):\n"
+       "            kc = COHESIVE_STIFFNESS[(PARTICLES[i][1], PARTICLES[j][1])]\n"
+       "            if kc == 0.0:\n"
+       "                continue\n"
+       "            dv = O.bodies[i].state.pos - O.bodies[j].state.pos\n"
+       "            d = dv.norm()\n"
+       "            overlap = EFFECT_RADII[i] + EFFECT_RADII[j] - d\n"
+       "            if not overlap > 0.0:\n"
+       "                continue\n"
+       "            fn = -kc * overlap  # repulsive positive, on i along (x_i - x_j)/d\n"
+       "            f = (dv / d) * fn\n"
+       "            O.forces.addF(i, f)\n"
+       "            O.forces.addF(j, -f)\n"
+       "            COHESIVE_FN[(i, j)] = fn\n\n";
+}
+
 /// Plane walls as utils.wall bodies after the particles (body id = particle count + wall index).
 void write_walls(std::string& s, const cases::Scene& scene) {
   auto out = std::back_inserter(s);
@@ -189,15 +225,18 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
   s += py_string(kSnapshotFile);
   s += ", 'w')\n"
        "_snapshots.write('time,particle,x,y,z,vx,vy,vz,wx,wy,wz\\n')\n\n"
+       "COHESIVE_FN = {}  # (i, j) -> linear cohesive normal force of this iteration (Python force)\n\n"
        "def _pair_values(p, q):\n"
        "    \"\"\"Overlap and normal force (repulsive positive) YADE has for the pair.\"\"\"\n"
        "    I = O.interactions[p, q] if O.interactions.has(p, q) else None\n"
        "    if I is not None and I.isReal:\n"
        "        overlap = I.geom.penetrationDepth\n"
        "        # normalForce is the total normal force on body id2, along normal (id1 -> id2)\n"
-       "        return [overlap, I.phys.normalForce.dot(I.geom.normal) if overlap >= 0 else 0.0]\n"
-       "    bp, bq = O.bodies[p], O.bodies[q]\n"
-       "    return [bp.shape.radius + bq.shape.radius - (bp.state.pos - bq.state.pos).norm(), 0.0]\n\n"
+       "        fn = I.phys.normalForce.dot(I.geom.normal) if overlap >= 0 else 0.0\n"
+       "    else:\n"
+       "        bp, bq = O.bodies[p], O.bodies[q]\n"
+       "        overlap, fn = bp.shape.radius + bq.shape.radius - (bp.state.pos - bq.state.pos).norm(), 0.0\n"
+       "    return [overlap, fn + COHESIVE_FN.get((min(p, q), max(p, q)), 0.0)]\n\n"
        "def _wall_values(p, w):\n"
        "    \"\"\"Overlap and normal force (repulsive positive) YADE has for particle p and wall body w.\"\"\"\n"
        "    I = O.interactions[w, p] if O.interactions.has(w, p) else None\n"
@@ -229,15 +268,19 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "        _snapshots.write(','.join('%.17g' % v for v in values) + '\\n')\n\n";
 }
 
-void write_engines_and_run(std::string& s) {
+void write_engines_and_run(std::string& s, const YadeRunPlan& plan) {
   s += "O.engines = [\n"
        "    ForceResetter(),\n"
        "    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),\n"
        "    # Ig2 defaults: avoidGranularRatcheting / noRatch = True (alpha-scaled incident velocity)\n"
        "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [IP2], [LAW2]),\n"
        "    # between the contact laws and the integrator: sees x(n), v(n-1/2) and F(x(n)) of\n"
-       "    # iteration n = the in-house trace row at t = n*DT; initRun: also at iteration 0\n"
-       "    PyRunner(command='record_trace()', iterPeriod=TRACE_EVERY, initRun=True),\n"
+       "    # iteration n = the in-house trace row at t = n*DT; initRun: also at iteration 0\n";
+  if (plan.model.python_cohesion) {
+    s += "    # linear cohesion: adds its force before the trace is recorded and Newton integrates\n"
+         "    PyRunner(command='apply_cohesion()', iterPeriod=1, initRun=True),\n";
+  }
+  s += "    PyRunner(command='record_trace()', iterPeriod=TRACE_EVERY, initRun=True),\n"
        "    NewtonIntegrator(damping=0.0, gravity=GRAVITY),  # YADE's default damping is 0.2\n"
        "]\n"
        "O.dt = DT\n\n"
@@ -261,9 +304,10 @@ std::string write_yade_script(const cases::Scene& scene, const YadeRunPlan& plan
   write_materials(s, scene, plan);
   write_particles(s, scene, plan);
   write_walls(s, scene);
+  if (plan.model.python_cohesion) write_python_cohesion(s, scene, plan);
   if (plan.calibration) s += write_calibration_block(*plan.calibration);
   write_recorders(s, scene, plan);
-  write_engines_and_run(s);
+  write_engines_and_run(s, plan);
   return s;
 }
 

@@ -130,6 +130,16 @@ TEST(YadeHertz, MatchedDmtAdhesionAgreesWithin1em8) {
   expect_matched_within_1e8(scene, "dmt-matched");
 }
 
+TEST(YadeLinearCohesion, MatchedPythonCohesionForceAgreesWithin1em8) {
+  // cohesion 'linear' = a per-step Python force (O.forces.addF) between InteractionLoop and
+  // NewtonIntegrator; 10 000 of the case's 200 000 steps keep the test short.
+  DEMWB_REQUIRE_YADE();
+  cases::Scene scene = canonical("linear_cohesion_pair.toml");
+  scene.integration.duration = 0.01;
+  scene.compare.metrics = {"contact_duration", "max_overlap", "restitution"};
+  expect_matched_within_1e8(scene, "cohesion-matched");
+}
+
 TEST(YadeJkr, PullOffIsNotApplicableWithTheReason) {
   DEMWB_REQUIRE_YADE();
   const cases::Scene scene = canonical("jkr_pulloff.toml");
