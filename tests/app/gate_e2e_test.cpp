@@ -129,3 +129,25 @@ TEST(DemwbGate, AReferenceCodeThatIsNotInstalledIsMissingAndFailsTheGate) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(DemwbGate, WhereAReferenceIsNotInstalledItsCommittedBaselineStandsInWithAWarning) {
+  // No lmp in PATH: LAMMPS comes from cases/baselines/single_collision.json (YADE, found at its
+  // Debian path, still runs).
+  const fs::path out = scratch("gate_from_baselines");
+  const auto r = demwb({"compare", canonical("single_collision"), "--no-cache", "-o", out.string()},
+                       {{"PATH", "/nonexistent"}});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  const Json results = Json::parse(support::read_file(out / "results.json"));
+  EXPECT_EQ(results["engines"]["lammps"]["source"], "baseline");
+  EXPECT_EQ(results["engines"]["lammps"]["status"], "ok");
+  EXPECT_NE(results.dump().find("is not installed here: using its committed baseline"), std::string::npos);
+  const auto g = demwb({"gate", out.string()});
+  EXPECT_EQ(g.exit_code, 0) << g.out;
+  EXPECT_NE(g.out.find("note: single_collision: lammps not installed; compared against its committed baseline"),
+            std::string::npos)
+      << g.out;
+}
+
+}  // namespace
