@@ -36,6 +36,7 @@ std::optional<YadeCalibrationPlan> plan_calibration(const cases::Scene& scene,
   std::size_t partner_material = 0;
   const auto& ps = scene.particles;
   std::array<double, 3> n{};
+  cases::Vector3 partner_velocity{};  // a wall is immobile
   if (const auto& wc = scene.compare.wall_contact) {
     if (wc->first >= ps.size() || wc->second >= scene.walls.size()) return std::nullopt;
     plan.particle = wc->first;
@@ -48,6 +49,7 @@ std::optional<YadeCalibrationPlan> plan_calibration(const cases::Scene& scene,
     plan.particle = first_moves ? pair->first : pair->second;
     plan.partner_particle = first_moves ? pair->second : pair->first;
     partner_material = ps[*plan.partner_particle].material;
+    partner_velocity = ps[*plan.partner_particle].velocity;
     double norm = 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
       n[k] = ps[plan.particle].position[k] - ps[*plan.partner_particle].position[k];
@@ -60,8 +62,7 @@ std::optional<YadeCalibrationPlan> plan_calibration(const cases::Scene& scene,
   }
   double approach = 0.0;  // (u_p − u_q)·n < 0: the two bodies close in
   for (std::size_t k = 0; k < 3; ++k) {
-    const double partner = plan.partner_particle ? ps[*plan.partner_particle].velocity[k] : 0.0;
-    approach += (ps[plan.particle].velocity[k] - partner) * n[k];
+    approach += (ps[plan.particle].velocity[k] - partner_velocity[k]) * n[k];
   }
   if (!(approach < 0.0)) return std::nullopt;
   plan.material = ps[plan.particle].material;
