@@ -158,7 +158,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   nlohmann::ordered_json all;
   all["suite"] = suite_name;
   all["cases"] = nlohmann::ordered_json::array();
-  comparison::Status worst = comparison::Status::pass;
+  comparison::Status worst = comparison::Status::not_applicable;
   for (const auto& e : entries) {
     worst = comparison::worse(worst, entry_status(e));
     if (!e.outcome) {

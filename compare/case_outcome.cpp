@@ -4,11 +4,13 @@
 namespace comparison {
 namespace {
 
-/// Severity order used to find the worst status.
+/// Severity order used to find the worst status. `n/a` ranks below `pass`: a case whose rows
+/// pass except those an engine cannot express is a passing case; only a case with nothing but
+/// n/a rows is n/a.
 int severity(Status s) noexcept {
   switch (s) {
-    case Status::pass: return 0;
-    case Status::not_applicable: return 1;
+    case Status::not_applicable: return 0;
+    case Status::pass: return 1;
     case Status::missing: return 2;
     case Status::fail: return 3;
     case Status::error: return 4;
@@ -21,10 +23,9 @@ int severity(Status s) noexcept {
 Status worse(Status a, Status b) noexcept { return severity(b) > severity(a) ? b : a; }
 
 Status worst_status(const CaseOutcome& outcome) noexcept {
-  Status worst = Status::pass;
-  for (const auto& c : outcome.comparisons) {
-    if (severity(c.status) > severity(worst)) worst = c.status;
-  }
+  if (outcome.comparisons.empty()) return Status::pass;
+  Status worst = Status::not_applicable;
+  for (const auto& c : outcome.comparisons) worst = worse(worst, c.status);
   return worst;
 }
 

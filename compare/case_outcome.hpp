@@ -23,7 +23,7 @@ struct CaseOutcome {
 
 /// Worst status over the outcome's comparisons (pass when there are none).
 Status worst_status(const CaseOutcome& outcome) noexcept;
-/// The more severe of two statuses (pass < n/a < missing < fail < error).
+/// The more severe of two statuses (n/a < pass < missing < fail < error).
 Status worse(Status a, Status b) noexcept;
 
 /// Computes metrics and comparisons for runs already made.

@@ -248,3 +248,29 @@ TEST(MatchedRows, AMatchedCodeThatFailedMakesEveryMatchedRowAnError) {
 }
 
 }  // namespace
+
+namespace {
+
+/// An outcome whose rows have the given statuses.
+comparison::CaseOutcome with_statuses(std::initializer_list<comparison::Status> statuses) {
+  comparison::CaseOutcome o;
+  for (const auto s : statuses) {
+    comparison::Comparison c;
+    c.status = s;
+    o.comparisons.push_back(c);
+  }
+  return o;
+}
+
+TEST(WorstStatus, NotApplicableRowsDoNotTurnAPassingCaseIntoNotApplicable) {
+  using comparison::Status;
+  EXPECT_EQ(comparison::worst_status(with_statuses({})), Status::pass);
+  EXPECT_EQ(comparison::worst_status(with_statuses({Status::pass, Status::not_applicable})), Status::pass);
+  EXPECT_EQ(comparison::worst_status(with_statuses({Status::not_applicable})), Status::not_applicable);
+  EXPECT_EQ(comparison::worst_status(with_statuses({Status::not_applicable, Status::missing})), Status::missing);
+  EXPECT_EQ(comparison::worst_status(with_statuses({Status::fail, Status::missing, Status::pass})), Status::fail);
+  EXPECT_EQ(comparison::worst_status(with_statuses({Status::fail, Status::error})), Status::error);
+  EXPECT_EQ(comparison::worse(Status::missing, Status::fail), Status::fail);
+}
+
+}  // namespace
