@@ -10,7 +10,7 @@ namespace reference::lammps {
 /// (FrictionLimit::elastic_damping, jkr_shifted for jkr/dmt); fix wall/gran's lever arm r
 /// (WallLeverArm::radius); pair granular's JKR rupture at δ_f (JkrRupture::load). Damping needs
 /// no change: the driver feeds LAMMPS the core's own dashpot (η, or the Tsuji e_in whose factor
-/// is the core's). Not reproduced (documented in docs/engines-lammps.md): the pair contact
+/// is the core's). Not reproduced (documented in docs/engines.md (section LAMMPS)): the pair contact
 /// velocity with full radii, the 1e-10 threshold of the history projection, JKR's damping-free
 /// friction basis, and the wall's δ = 0 contact onset.
 cases::Scene matched_scene(const cases::Scene& scene);
