@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "../bad_case_files.hpp"
 #include "demwb_process.hpp"
 
 namespace {
@@ -19,25 +20,10 @@ using demwb_e2e::scratch;
 namespace fs = std::filesystem;
 
 /// Every malformed case file, sorted by name.
-std::vector<fs::path> bad_case_files() {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(fs::path(DEMWB_TEST_DATA_DIR) / "bad_cases")) {
-    if (entry.path().extension() == ".toml") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
+std::vector<fs::path> bad_case_files() { return bad_cases::files(); }
 
-/// The key the file's first line ("# expect: KEY | FRAGMENT") promises the error names.
-std::string expected_key(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  const std::string prefix = "# expect: ";
-  const auto bar = line.find(" | ");
-  if (line.rfind(prefix, 0) != 0 || bar == std::string::npos) return {};
-  return line.substr(prefix.size(), bar - prefix.size());
-}
+/// The key the file's first line promises the error names.
+std::string expected_key(const fs::path& file) { return bad_cases::expectation(file).key; }
 
 /// Parameterised over the malformed case files.
 class BadCaseFile : public ::testing::TestWithParam<fs::path> {};

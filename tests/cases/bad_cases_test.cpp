@@ -10,48 +10,24 @@
 
 #include <gtest/gtest.h>
 
+#include "../bad_case_files.hpp"
 #include "cases/case_loader.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-/// What a bad case file promises about its error.
-struct Expectation {
-  std::string key;
-  std::string fragment;
-};
-
-/// Folder of the malformed case files.
-fs::path bad_cases_dir() { return fs::path(DEMWB_TEST_DATA_DIR) / "bad_cases"; }
+using bad_cases::Expectation;
 
 /// Every malformed case file, sorted by name.
-std::vector<fs::path> bad_case_files() {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(bad_cases_dir())) {
-    if (entry.path().extension() == ".toml") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
-/// Parses "# expect: KEY | FRAGMENT" from the first line of `file`.
-Expectation read_expectation(const fs::path& file) {
-  std::ifstream in(file);
-  std::string line;
-  std::getline(in, line);
-  const std::string prefix = "# expect: ";
-  const auto bar = line.find(" | ");
-  if (line.rfind(prefix, 0) != 0 || bar == std::string::npos) return {};
-  return {line.substr(prefix.size(), bar - prefix.size()), line.substr(bar + 3)};
-}
+std::vector<fs::path> bad_case_files() { return bad_cases::files(); }
 
 /// Parameterised over the malformed case files.
 class BadCase : public ::testing::TestWithParam<fs::path> {};
 
 TEST_P(BadCase, IsRejectedNamingFileKeyAndProblem) {
   const fs::path file = GetParam();
-  const Expectation expected = read_expectation(file);
+  const Expectation expected = bad_cases::expectation(file);
   ASSERT_FALSE(expected.key.empty()) << file << " lacks a '# expect: KEY | FRAGMENT' first line";
   ASSERT_FALSE(expected.fragment.empty()) << file << " has an empty expected fragment";
   try {

@@ -47,13 +47,14 @@ TEST(WaltonBraunLaw, RestitutionIsTheSquareRootOfTheStiffnessRatio) {
 }
 
 /// Drives one pair law along a prescribed overlap path (a kinematic rig: push in, pull back,
-/// push further), committing the history as the force field does; returns the forces.
-std::vector<double> rig(const dem::PairLaw& law, const std::vector<double>& path) {
+/// push further), committing the history as the force field does; returns the forces. Spheres of
+/// radius 0.01 with the given effect radius (larger: the pair interacts beyond contact).
+std::vector<double> rig(const dem::PairLaw& law, const std::vector<double>& path, double effect_radius = 0.01) {
   dem::ContactHistory history;
   std::vector<double> forces;
   for (const double delta : path) {
-    dem::SphereState p{dem::Vec3(0, 0, 0), dem::Vec3::Zero(), dem::Vec3::Zero(), 0.01, 0.01, 1.0};
-    dem::SphereState q{dem::Vec3(0.02 - delta, 0, 0), dem::Vec3::Zero(), dem::Vec3::Zero(), 0.01, 0.01, 1.0};
+    dem::SphereState p{dem::Vec3(0, 0, 0), dem::Vec3::Zero(), dem::Vec3::Zero(), 0.01, effect_radius, 1.0};
+    dem::SphereState q{dem::Vec3(0.02 - delta, 0, 0), dem::Vec3::Zero(), dem::Vec3::Zero(), 0.01, effect_radius, 1.0};
     const dem::ContactOutcome c = dem::evaluate_contact(law, dem::pair_geometry(p, q), history, 1e-6);
     forces.push_back(c.normal_force);
     history = c.interacting ? c.history : dem::ContactHistory{};
@@ -85,21 +86,6 @@ TEST(HystereticNormal, ReloadingRetracesTheUnloadingLineUntilTheLargestOverlap) 
   EXPECT_NEAR(f[10], kLoad * 1e-4, 1e-9);               // a new contact loads afresh
 }
 
-/// Rig of spheres with effect radius 0.015 (interaction beyond contact) for `law`.
-std::vector<double> long_range_rig(const dem::PairLaw& law, const std::vector<double>& path) {
-  dem::ContactHistory history;
-  std::vector<double> forces;
-  for (const double delta : path) {
-    dem::SphereState p{dem::Vec3(0, 0, 0), dem::Vec3::Zero(), dem::Vec3::Zero(), 0.01, 0.015, 1.0};
-    dem::SphereState q{dem::Vec3(0.02 - delta, 0, 0), dem::Vec3::Zero(), dem::Vec3::Zero(), 0.01, 0.015, 1.0};
-    const dem::ContactOutcome c = dem::evaluate_contact(law, dem::pair_geometry(p, q), history, 1e-6);
-    EXPECT_TRUE(c.interacting) << "δ = " << delta << " is within the effect radius";
-    forces.push_back(c.normal_force);
-    history = c.interacting ? c.history : dem::ContactHistory{};
-  }
-  return forces;
-}
-
 TEST(HystereticNormal, ASeparationUnderALongRangeCohesionStillStartsTheNextContactAfresh) {
   dem::ModelChoice choice;
   choice.normal = "hysteretic";
@@ -111,8 +97,9 @@ TEST(HystereticNormal, ASeparationUnderALongRangeCohesionStillStartsTheNextConta
   const dem::PairLaw law = dem::make_pair_law(choice, p);
   // Loaded to 4e-4, apart (δ < 0, still attracting), then touching again at 1e-4: the same
   // force as a first touch at 1e-4, not the old unloading line (which is zero below δ_0 = 3e-4).
-  const std::vector<double> again = long_range_rig(law, {1e-4, 4e-4, -1e-5, 1e-4});
-  const std::vector<double> first = long_range_rig(law, {1e-4});
+  const std::vector<double> again = rig(law, {1e-4, 4e-4, -1e-5, 1e-4}, 0.015);
+  const std::vector<double> first = rig(law, {1e-4}, 0.015);
+  EXPECT_LT(again[2], 0.0) << "apart but within the effect radius: the pair still attracts";
   EXPECT_DOUBLE_EQ(again[3], first[0]);
   // Loading spring k_l δ plus the linear cohesion k_c (2·0.015 − distance) pulling inwards.
   EXPECT_NEAR(again[3], kLoad * 1e-4 - 1e3 * (0.03 - (0.02 - 1e-4)), 1e-9);
