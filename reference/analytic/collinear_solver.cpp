@@ -148,10 +148,7 @@ std::vector<std::string> CollinearSolver::unsupported_reasons(const cases::Scene
 
 cases::RunResult CollinearSolver::run(const cases::Scene& scene) const {
   const CollinearScene reduced = analytic::reduce_scene(scene);
-  const double dt = core_setup(scene).simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
-  const std::uint64_t every = std::max<std::uint64_t>(1, scene.output.trace_every);
-  const double t_end = static_cast<double>(steps) * dt;
+  const auto [dt, steps, every, t_end] = sample_grid(scene);
   const analytic::AxisSolution solution(reduced.problem, 0.0, t_end);
 
   cases::RunResult result;

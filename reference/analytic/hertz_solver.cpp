@@ -472,9 +472,7 @@ cases::RunResult HertzSolver::run(const cases::Scene& scene) const {
   const std::optional<HertzPair> reduced = reduce_checked(scene, reasons);
   if (!reduced) throw std::invalid_argument(reasons.empty() ? "unsupported scene" : reasons.front());
   const HertzPair& h = *reduced;
-  const double dt = core_setup(scene).simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
-  const std::uint64_t every = std::max<std::uint64_t>(1, scene.output.trace_every);
+  const auto [dt, steps, every, t_end] = sample_grid(scene);
 
   std::vector<double> times;
   for (std::uint64_t n = 0; n <= steps; n += every) times.push_back(static_cast<double>(n) * dt);
@@ -497,7 +495,6 @@ cases::RunResult HertzSolver::run(const cases::Scene& scene) const {
   }
 
   result.conventions = conventions(scene, h, dt, every);
-  const double t_end = static_cast<double>(steps) * dt;
   if (compares_this_contact(scene, h)) {
     if (summary.happens && summary.start <= t_end) {
       result.exact_metrics["contact_duration"] = summary.duration;

@@ -311,8 +311,7 @@ std::vector<std::string> JkrPulloffSolver::unsupported_reasons(const cases::Scen
   if (!reasons.empty()) return reasons;
   try {
     const Rig rig = make_rig(scene);
-    const double dt = core_setup(scene).simulation.timestep;
-    const double t_end = static_cast<double>(step_count(scene.integration.duration, dt)) * dt;
+    const double t_end = sample_grid(scene).t_end;
     for (const double t : breakpoints(scene)) {
       if (!(rig.distance(std::min(t, t_end)) > 0.0)) {
         reasons.push_back("analytic (JKR pull-off rig): the centres meet during the motion");
@@ -329,10 +328,7 @@ std::vector<std::string> JkrPulloffSolver::unsupported_reasons(const cases::Scen
 
 cases::RunResult JkrPulloffSolver::run(const cases::Scene& scene) const {
   const Rig rig = make_rig(scene);
-  const double dt = core_setup(scene).simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
-  const std::uint64_t every = std::max<std::uint64_t>(1, scene.output.trace_every);
-  const double t_end = static_cast<double>(steps) * dt;
+  const auto [dt, steps, every, t_end] = sample_grid(scene);
   const History history(rig, t_end);
 
   cases::RunResult result;

@@ -430,10 +430,7 @@ std::vector<std::string> LinearCohesionSolver::unsupported_reasons(const cases::
 
 cases::RunResult LinearCohesionSolver::run(const cases::Scene& scene) const {
   const Pair p = make_pair(scene);
-  const double dt = core_setup(scene).simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
-  const std::uint64_t every = std::max<std::uint64_t>(1, scene.output.trace_every);
-  const double t_end = static_cast<double>(steps) * dt;
+  const auto [dt, steps, every, t_end] = sample_grid(scene);
   const auto [delta0, rate0] = initial(scene, p);
   const Motion motion(p, delta0, rate0, t_end);
 

@@ -398,10 +398,7 @@ std::vector<std::string> ObliqueImpactSolver::unsupported_reasons(const cases::S
 cases::RunResult ObliqueImpactSolver::run(const cases::Scene& scene) const {
   const SphereWallScene s = sphere_wall_scene(scene);
   const GrossSlidingImpact impact(s);
-  const double dt = core_setup(scene).simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
-  const std::uint64_t every = std::max<std::uint64_t>(1, scene.output.trace_every);
-  const double t_end = static_cast<double>(steps) * dt;
+  const auto [dt, steps, every, t_end] = sample_grid(scene);
 
   cases::RunResult result;
   result.status = cases::RunStatus::ok;

@@ -103,9 +103,7 @@ std::vector<std::string> SlidingSolver::unsupported_reasons(const cases::Scene& 
 cases::RunResult SlidingSolver::run(const cases::Scene& scene) const {
   const SphereWallScene s = sphere_wall_scene(scene);
   const SlidingMotion motion(s, vec(scene.gravity));
-  const double dt = core_setup(scene).simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
-  const std::uint64_t every = std::max<std::uint64_t>(1, scene.output.trace_every);
+  const auto [dt, steps, every, t_end] = sample_grid(scene);
   const double weight = s.mass * -vec(scene.gravity).dot(vec(s.normal));
 
   cases::RunResult result;

@@ -101,6 +101,12 @@ std::uint64_t step_count(double duration, double dt) {
   return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(n));
 }
 
+SampleGrid sample_grid(const cases::Scene& scene) {
+  const double dt = core_setup(scene).simulation.timestep;
+  const std::uint64_t steps = step_count(scene.integration.duration, dt);
+  return {dt, steps, std::max<std::uint64_t>(1, scene.output.trace_every), static_cast<double>(steps) * dt};
+}
+
 dem::KinematicState to_state(const cases::Snapshot& snapshot) {
   dem::KinematicState s;
   const auto n = static_cast<Eigen::Index>(snapshot.position.size());

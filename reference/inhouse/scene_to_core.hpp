@@ -25,6 +25,18 @@ CoreSetup core_setup(const cases::Scene& scene);
 /// Number of steps that cover the scene's duration with time step dt (at least 1).
 std::uint64_t step_count(double duration, double dt);
 
+/// The time grid every engine samples a scene on: the core's resolved Δt, the step count, the
+/// trace interval in steps and the end time steps·Δt.
+struct SampleGrid {
+  double dt;
+  std::uint64_t steps;
+  std::uint64_t every;
+  double t_end;
+};
+
+/// The sample grid of `scene` (resolves the time step like core_setup).
+SampleGrid sample_grid(const cases::Scene& scene);
+
 /// Converts an exact snapshot into the core's state (orientations at identity).
 dem::KinematicState to_state(const cases::Snapshot& snapshot);
 

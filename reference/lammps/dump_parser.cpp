@@ -6,9 +6,13 @@
 
 #include <fmt/format.h>
 
-#include "reference/lammps/text_tokens.hpp"
+#include "support/text_tokens.hpp"
 
 namespace reference::lammps {
+
+using support::split_lines;
+using support::split_words;
+using support::parse_number;
 namespace {
 
 /// Reads `text` line by line, with errors that name the file and line.

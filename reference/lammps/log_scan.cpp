@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "reference/lammps/log_scan.hpp"
 
-#include "reference/lammps/text_tokens.hpp"
+#include "support/text_tokens.hpp"
 
 namespace reference::lammps {
+
+using support::split_lines;
 namespace {
 
 bool starts_with(std::string_view text, std::string_view prefix) {

@@ -7,9 +7,13 @@
 
 #include <fmt/format.h>
 
-#include "reference/lammps/text_tokens.hpp"
+#include "support/text_tokens.hpp"
 
 namespace reference::lammps {
+
+using support::split_lines;
+using support::split_words;
+using support::parse_number;
 
 cases::Trace parse_fix_print(std::string_view text, std::string_view file_name) {
   cases::Trace trace;

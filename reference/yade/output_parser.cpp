@@ -1,29 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "reference/yade/output_parser.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <set>
 #include <string>
 
 #include <fmt/format.h>
 
+#include "support/text_tokens.hpp"
+
 namespace reference::yade {
 namespace {
 
-/// Lines of `text` without their line ends ("\n" or "\r\n"); a final newline ends the last line.
-std::vector<std::string_view> split_lines(std::string_view text) {
-  std::vector<std::string_view> lines;
-  while (!text.empty()) {
-    const auto end = text.find('\n');
-    std::string_view line = text.substr(0, end);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    lines.push_back(line);
-    if (end == std::string_view::npos) break;
-    text.remove_prefix(end + 1);
-  }
-  return lines;
-}
+using support::split_lines;
 
 std::vector<std::string_view> split_fields(std::string_view line) {
   std::vector<std::string_view> fields;
@@ -38,16 +27,12 @@ std::vector<std::string_view> split_fields(std::string_view line) {
 /// The number in `field` (the whole field), or throws naming file, line and column.
 double to_number(std::string_view field, std::string_view file, std::size_t line,
                  std::string_view column) {
-  double value = 0.0;
-  const char* first = field.data();
-  const char* last = field.data() + field.size();
-  if (!field.empty() && field.front() == '+') ++first;  // from_chars rejects a leading '+'
-  const auto [end, ec] = std::from_chars(first, last, value);
-  if (field.empty() || ec != std::errc() || end != last) {
+  const std::optional<double> value = support::parse_number(field);
+  if (!value) {
     throw YadeOutputError(fmt::format("{} line {}, column '{}': '{}' is not a number", file, line,
                                       column, field));
   }
-  return value;
+  return *value;
 }
 
 /// The header's column names; throws on an empty or duplicate name.

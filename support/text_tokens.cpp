@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "reference/lammps/text_tokens.hpp"
+#include "support/text_tokens.hpp"
 
 #include <charconv>
 
-namespace reference::lammps {
+namespace support {
 
 std::vector<std::string_view> split_lines(std::string_view text) {
   std::vector<std::string_view> lines;
@@ -40,4 +40,4 @@ std::optional<double> parse_number(std::string_view token) {
   return value;
 }
 
-}  // namespace reference::lammps
+}  // namespace support
