@@ -70,6 +70,15 @@ std::optional<double> value_of(const std::map<std::string, MetricSet>& metrics,
   return m->second.value;
 }
 
+/// True when `engine` declared that it cannot express `metric` in this case.
+bool declared_not_applicable(const std::map<std::string, MetricSet>& metrics, const std::string& engine,
+                             const std::string& metric) {
+  const auto e = metrics.find(engine);
+  if (e == metrics.end()) return false;
+  const auto it = e->second.find(metric);
+  return it != e->second.end() && it->second.not_applicable;
+}
+
 /// Fills one comparison row for an engine that ran.
 void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
                const cases::RunResult& reference) {
@@ -77,11 +86,7 @@ void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
   row.value = value_of(metrics, row.engine, row.metric, why);
   if (!row.value) {
     row.note = why;
-    if (const auto e = metrics.find(row.engine); e != metrics.end()) {
-      if (const auto it = e->second.find(row.metric); it != e->second.end() && it->second.not_applicable) {
-        row.status = Status::not_applicable;
-      }
-    }
+    if (declared_not_applicable(metrics, row.engine, row.metric)) row.status = Status::not_applicable;
     return;
   }
   if (row.metric == "amplitude_error") {
@@ -96,11 +101,7 @@ void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
     if (!row.reference_value) {
       row.note = "reference " + why;
       // The reference states it cannot express this metric here: nothing to compare.
-      if (const auto e = metrics.find(reference.engine); e != metrics.end()) {
-        if (const auto it = e->second.find(row.metric); it != e->second.end() && it->second.not_applicable) {
-          row.status = Status::not_applicable;
-        }
-      }
+      if (declared_not_applicable(metrics, reference.engine, row.metric)) row.status = Status::not_applicable;
       return;
     }
   }

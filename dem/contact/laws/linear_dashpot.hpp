@@ -43,4 +43,10 @@ namespace dem::laws {
   return std::exp(-std::numbers::pi * zeta / std::sqrt(1.0 - zeta * zeta));
 }
 
+/// YADE's ratcheting correction α = D/(D − δ) of the relative normal velocity (ScGeom::
+/// getIncidentVel with avoidGranularRatcheting), for the reference length D and overlap δ.
+[[nodiscard]] inline double incident_velocity_scale(double reference_length, double overlap) noexcept {
+  return reference_length / (reference_length - overlap);
+}
+
 }  // namespace dem::laws

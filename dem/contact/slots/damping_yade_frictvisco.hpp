@@ -15,8 +15,8 @@ namespace dem {
 /// puts on the relative translational velocity: D = r_p + r_q for a sphere pair, and 2r against
 /// a plane wall (Ig2_Wall_Sphere_ScGeom gives the wall the sphere's radius). Pure.
 [[nodiscard]] inline double yade_incident_velocity_scale(const ContactGeometry& g) noexcept {
-  const double d = g.against_wall ? 2.0 * g.contact_distance : g.contact_distance;
-  return d / (d - g.overlap);
+  return laws::incident_velocity_scale(g.against_wall ? 2.0 * g.contact_distance : g.contact_distance,
+                                       g.overlap);
 }
 
 /// Damping sub-model `yade_frictvisco`: the restitution dashpot of eq 3.10–3.11 as YADE 2023.02a's
