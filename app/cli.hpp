@@ -33,6 +33,8 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv);
 int command_refresh(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb engines`.
 int command_engines(const std::vector<std::string>& args, const Invocation& inv);
+/// `demwb bench`: the core against LAMMPS on one scene, speed and memory.
+int command_bench(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb convert`: thesis appendix E parameter conversion.
 int command_convert(const std::vector<std::string>& args, const Invocation& inv);
 

@@ -20,6 +20,7 @@ commands:
   study integrators [-o DIR]                  the integrator-accuracy study (thesis ch. 4)
   gate DIR|SUITE [--baseline F] [--allow-missing]  exit 0 only when every comparison is green
   refresh [SUITE|CASE] [--write-baselines]    re-run reference codes into the cache/baselines
+  bench chute|box [--threads N] [--ranks N]    the core against LAMMPS: particle-steps/s, memory
   engines                                     installed engines and their versions
   convert linear-to-jkr|jkr-to-linear ...     appendix E: linear cohesion <-> JKR
 
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
     if (args[0] == "gate") return app::command_gate(rest, inv);
     if (args[0] == "refresh") return app::command_refresh(rest, inv);
     if (args[0] == "convert") return app::command_convert(rest, inv);
+    if (args[0] == "bench") return app::command_bench(rest, inv);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "demwb %s: error: %s\n", args[0].c_str(), e.what());
     return app::kExitUsage;

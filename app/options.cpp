@@ -61,7 +61,9 @@ void add_run_options(po::options_description& opts) {
       "reproducible",
       "leave wall times out of results.json (they stay in report.md) so that two runs compare byte for byte")(
       "match", po::value<std::vector<std::string>>()->composing(),
-      "also run the core with this reference code's numerics (lammps, yade) and compare the two");
+      "also run the core with this reference code's numerics (lammps, yade) and compare the two")(
+      "threads", po::value<int>()->default_value(1),
+      "OpenMP threads of the core (results are bit-identical for any count)");
 }
 
 cases::Scene with_matches(cases::Scene scene, const po::variables_map& vm) {
@@ -81,6 +83,10 @@ RunContext run_context(const po::variables_map& vm, const std::filesystem::path&
   RunContext ctx;
   ctx.options.work_dir = work_dir;
   ctx.options.timeout_s = vm["timeout"].as<double>();
+  ctx.options.threads = vm["threads"].as<int>();
+  if (ctx.options.threads < 1 || ctx.options.threads > 1024) {
+    throw std::invalid_argument("--threads must be between 1 and 1024");
+  }
   if (vm.count("no-cache") == 0) {
     ctx.cache.emplace(vm.count("cache") != 0 ? std::filesystem::path(vm["cache"].as<std::string>())
                                              : store::ResultCache::default_dir());

@@ -26,8 +26,14 @@ void read_materials(const Table& root, Scene& scene);
 void read_pairs(const Table& root, Scene& scene);
 /// Reads the [[particles]] entries.
 void read_particles(const Table& root, Scene& scene);
+/// Reads the optional [[populations]] entries: generated particles appended to the scene's.
+void read_populations(const Table& root, Scene& scene);
 /// Reads the optional [[walls]] entries (planes, and boxes as up to six inner planes).
 void read_walls(const Table& root, Scene& scene);
+/// Reads the optional [domain] table: box and periodic axes (needs the walls).
+void read_domain(const Table& root, Scene& scene);
+/// Reads the optional [neighbors] table: Verlet skin and reorder interval.
+void read_neighbors(const Table& root, Scene& scene);
 /// Reads the optional [fields] table (gravity and [fields.fluid]).
 void read_fields(const Table& root, Scene& scene);
 /// Reads [integration].

@@ -27,7 +27,7 @@ constexpr std::array kMixingRules{dem::MixingRule::harmonic, dem::MixingRule::ar
 
 /// Keys of [model] that name policies rather than sub-models.
 constexpr auto kPolicyKeys = std::to_array<std::string_view>(
-    {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm"});
+    {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm", "pair_lever_arm", "tangential_history"});
 
 /// The enumerator a policy keyword names; `names` lists the keywords in enumerator order.
 template <class Enum, class Parse>
@@ -53,6 +53,16 @@ void read_policies(const Table& model, dem::ModelChoice& choice) {
     constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius"});
     choice.wall_lever_arm = read_policy<dem::WallLeverArm>(
         *v, names, [](std::string_view k) { return dem::parse_wall_lever_arm(k); }, "wall lever-arm policy");
+  }
+  if (const auto v = model.find("pair_lever_arm")) {
+    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius"});
+    choice.pair_lever_arm = read_policy<dem::PairLeverArm>(
+        *v, names, [](std::string_view k) { return dem::parse_pair_lever_arm(k); }, "pair lever-arm policy");
+  }
+  if (const auto v = model.find("tangential_history")) {
+    constexpr auto names = std::to_array<std::string_view>({"project_rescale", "increment_project"});
+    choice.tangential_history = read_policy<dem::TangentialHistory>(
+        *v, names, [](std::string_view k) { return dem::parse_tangential_history(k); }, "tangential-history rule");
   }
 }
 

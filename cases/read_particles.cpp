@@ -181,6 +181,7 @@ std::vector<std::string_view> scheme_keywords() {
 }  // namespace
 
 void read_particles(const Table& root, Scene& scene) {
+  if (!root.has("particles") && root.has("populations")) return;  // all generated
   const Value section = root.require("particles", "array of tables [[particles]]");
   if (!section.node().is_array()) {
     section.fail("expected an array of tables ([[particles]]), got " + describe(section.node()));

@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -72,7 +73,23 @@ struct FluidSpec {
   double ramp_time = 0.0;       ///< [s]
 };
 
-/// How the equations of motion are integrated (PHYSICS.md §7).
+/// The box and the axes along which it wraps (periodic boundaries, case table [domain]).
+struct DomainSpec {
+  Vector3 min{};                              ///< lower corner [m]
+  Vector3 max{};                              ///< upper corner [m]
+  std::array<bool, 3> periodic{false, false, false};  ///< x, y, z wrap
+
+  /// True when some axis wraps.
+  [[nodiscard]] bool any_periodic() const noexcept { return periodic[0] || periodic[1] || periodic[2]; }
+};
+
+/// How the core keeps its neighbour list (case table [neighbors]).
+struct NeighborSpec {
+  std::optional<double> skin;    ///< Verlet skin [m]; empty: a tenth of the smallest diameter
+  std::uint32_t sort_every = 8;  ///< reorder along a Morton curve every this many list builds (0: never)
+};
+
+/// How the equations of motion are integrated (docs/integrators.md).
 struct IntegrationSpec {
   dem::SchemeId scheme = dem::SchemeId::velocity_verlet;
   std::optional<double> timestep;       ///< Δt [s]; empty means automatic
@@ -131,11 +148,14 @@ struct Scene {
   dem::MixingRules mixing;
   std::vector<dem::PairOverride> pair_overrides;
   dem::ModelChoice model;
-  std::vector<ParticleSpec> particles;
+  std::vector<ParticleSpec> particles;        ///< [[particles]], then each [[populations]] entry's
+  std::vector<std::size_t> population_first;  ///< index of the first particle of each population
   std::vector<WallSpec> walls;
   Vector3 gravity{};
   std::optional<FluidSpec> fluid;
 
+  DomainSpec domain;
+  NeighborSpec neighbors;
   IntegrationSpec integration;
   OutputSpec output;
   CompareSpec compare;

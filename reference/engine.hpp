@@ -26,6 +26,7 @@ struct Support {
 struct RunOptions {
   std::filesystem::path work_dir;  ///< scratch directory the engine may use (created if needed)
   double timeout_s = 600.0;        ///< external engines are killed after this
+  int threads = 1;                 ///< OpenMP threads of the core (results do not depend on it)
 };
 
 /// One way of running a Scene: the in-house core, a closed-form solution, or a reference code.

@@ -15,12 +15,14 @@ packages=(
   nlohmann-json3-dev               # results.json
   libfmt-dev                       # formatting
   libgtest-dev                     # GoogleTest
+  libbenchmark-dev                 # Google Benchmark: the micro-benchmarks (build/bench/demwb_microbench)
   gnuplot-nox                      # report plots
   pandoc                           # checks that report.md renders
 )
 references=(
   lammps                           # LAMMPS (GRANULAR), Debian 20220106
   yade                             # YADE 2023.02a (driven as a Python module, no servers)
+  openmpi-bin                      # mpirun: `demwb bench --ranks N` runs LAMMPS on N ranks
 )
 check_only=false
 for arg in "$@"; do

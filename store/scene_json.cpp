@@ -94,6 +94,12 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
                 {"friction_limit", std::string(dem::to_string(s.model.friction_limit))},
                 {"jkr_rupture", std::string(dem::to_string(s.model.jkr_rupture))},
                 {"wall_lever_arm", std::string(dem::to_string(s.model.wall_lever_arm))}};
+  if (s.model.pair_lever_arm != dem::PairLeverArm::contact_point) {
+    j["model"]["pair_lever_arm"] = std::string(dem::to_string(s.model.pair_lever_arm));
+  }
+  if (s.model.tangential_history != dem::TangentialHistory::project_rescale) {
+    j["model"]["tangential_history"] = std::string(dem::to_string(s.model.tangential_history));
+  }
   Json particles = Json::array();
   for (const auto& p : s.particles) particles.push_back(particle_json(p));
   j["particles"] = particles;
@@ -102,6 +108,14 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
     walls.push_back({{"point", w.point}, {"normal", w.normal}, {"velocity", w.velocity}, {"material", w.material}});
   }
   j["walls"] = walls;
+  // Written only when set, so that the fingerprints of scenes without them stay as they were.
+  if (s.domain.any_periodic()) {
+    j["domain"] = {{"min", s.domain.min}, {"max", s.domain.max}, {"periodic", s.domain.periodic}};
+  }
+  if (s.neighbors.skin || s.neighbors.sort_every != 8) {
+    j["neighbors"] = {{"skin", s.neighbors.skin ? Json(*s.neighbors.skin) : Json(nullptr)},
+                      {"sort_every", s.neighbors.sort_every}};
+  }
   j["gravity"] = s.gravity;
   j["fluid"] = s.fluid ? fluid_json(*s.fluid) : Json(nullptr);
   const auto& in = s.integration;

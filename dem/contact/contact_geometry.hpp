@@ -14,8 +14,8 @@ struct ContactGeometry {
   double distance;          ///< |x_pq| [m]
   double overlap;           ///< body overlap δ = r_p + r_q − |x_pq| [m]
   double effect_overlap;    ///< effect overlap δ̂ = r̂_p + r̂_q − |x_pq| [m]
-  Vec3 branch_p;            ///< a_p = −(r_p − δ/2) n, centre of p → contact point [m]
-  Vec3 branch_q;            ///< a_q = +(r_q − δ/2) n, centre of q → contact point [m]
+  Vec3 branch_p;            ///< a_p = −(r_p − δ/2) n (or −r_p n), centre of p → contact point [m]
+  Vec3 branch_q;            ///< a_q = +(r_q − δ/2) n (or +r_q n), centre of q → contact point [m]
   Vec3 contact_velocity;    ///< u_c = (u_p + ω_p × a_p) − (u_q + ω_q × a_q) [m/s]
   double normal_speed;      ///< u_c · n [m/s], negative while approaching
   Vec3 tangential_velocity; ///< u_t = u_c − (u_c·n) n [m/s]
@@ -47,17 +47,19 @@ struct SphereState {
 };
 
 /// Contact kinematics of p and q by the common-normal method (thesis §3.3.3). Coincident
-/// centres (|x_pq| = 0) get the normal +x so the result stays finite.
-[[nodiscard]] inline ContactGeometry pair_geometry(const SphereState& p,
-                                                   const SphereState& q) noexcept {
+/// centres (|x_pq| = 0) get the normal +x so the result stays finite. The lever arms are
+/// r − δ/2, or the radii r when `lever_arm_is_radius` (PairLeverArm::radius, LAMMPS
+/// gran/hooke/history). q is passed at its periodic image nearest p.
+[[nodiscard]] inline ContactGeometry pair_geometry(const SphereState& p, const SphereState& q,
+                                                   bool lever_arm_is_radius = false) noexcept {
   ContactGeometry g;
   const Vec3 x_pq = p.position - q.position;
   g.distance = x_pq.norm();
   g.normal = g.distance > 0.0 ? Vec3(x_pq / g.distance) : Vec3::UnitX();
   g.overlap = p.radius + q.radius - g.distance;
   g.effect_overlap = p.effect_radius + q.effect_radius - g.distance;
-  g.branch_p = -(p.radius - 0.5 * g.overlap) * g.normal;
-  g.branch_q = (q.radius - 0.5 * g.overlap) * g.normal;
+  g.branch_p = -(lever_arm_is_radius ? p.radius : p.radius - 0.5 * g.overlap) * g.normal;
+  g.branch_q = (lever_arm_is_radius ? q.radius : q.radius - 0.5 * g.overlap) * g.normal;
   g.contact_velocity = (p.velocity + p.angular_velocity.cross(g.branch_p)) -
                        (q.velocity + q.angular_velocity.cross(g.branch_q));
   g.normal_speed = g.contact_velocity.dot(g.normal);

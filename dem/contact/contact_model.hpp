@@ -91,22 +91,53 @@ struct ContactOutcome {
   return std::abs(elastic + damping + cohesion);
 }
 
-/// Evaluates the contact law of one pair. The order reads top to bottom:
+/// A pair law whose sub-models are found at run time: each slot is one std::visit. What
+/// evaluate_contact uses.
+struct DynamicSlots {
+  const PairLaw& law;
+  template <class F> decltype(auto) normal(F&& f) const { return std::visit(f, law.normal); }
+  template <class F> decltype(auto) damping(F&& f) const { return std::visit(f, law.damping); }
+  template <class F> decltype(auto) tangential(F&& f) const { return std::visit(f, law.tangential); }
+  template <class F> decltype(auto) cohesion(F&& f) const { return std::visit(f, law.cohesion); }
+  template <class F> decltype(auto) rolling(F&& f) const { return std::visit(f, law.rolling); }
+};
+
+/// A pair law whose sub-model types N, D, T, C, R are known at compile time, so that the
+/// evaluation compiles to straight-line code (the many-body pair loop's fast path). The caller
+/// guarantees the law holds these alternatives (holds()).
+template <class N, class D, class T, class C, class R>
+struct StaticSlots {
+  const PairLaw& law;
+  template <class F> decltype(auto) normal(F&& f) const { return f(*std::get_if<N>(&law.normal)); }
+  template <class F> decltype(auto) damping(F&& f) const { return f(*std::get_if<D>(&law.damping)); }
+  template <class F> decltype(auto) tangential(F&& f) const { return f(*std::get_if<T>(&law.tangential)); }
+  template <class F> decltype(auto) cohesion(F&& f) const { return f(*std::get_if<C>(&law.cohesion)); }
+  template <class F> decltype(auto) rolling(F&& f) const { return f(*std::get_if<R>(&law.rolling)); }
+  /// True when `l` holds exactly these sub-model types.
+  [[nodiscard]] static bool holds(const PairLaw& l) noexcept {
+    return std::holds_alternative<N>(l.normal) && std::holds_alternative<D>(l.damping) &&
+           std::holds_alternative<T>(l.tangential) && std::holds_alternative<C>(l.cohesion) &&
+           std::holds_alternative<R>(l.rolling);
+  }
+};
+
+/// Evaluates the contact law of one pair through `slots` (DynamicSlots or StaticSlots: the same
+/// arithmetic either way, the second without dispatch). The order reads top to bottom:
 /// normal → cohesion → damping (→ clamp) → friction limit → tangential → rolling → assemble.
 /// `committed` is the history at the last commit, `elapsed` the time since then [s].
-[[nodiscard]] inline ContactOutcome evaluate_contact(const PairLaw& law, const ContactGeometry& g,
-                                                     const ContactHistory& committed,
-                                                     double elapsed) noexcept {
+template <class Slots>
+[[nodiscard]] inline ContactOutcome evaluate_contact_in(const Slots& slots, const ContactGeometry& g,
+                                                        const ContactHistory& committed,
+                                                        double elapsed) noexcept {
+  const ContactPolicies& policies = slots.law.policies;
   ContactOutcome out;
   out.history = committed;
   ContactHistory& next = out.history;
-  const ContactInput in{g, committed, elapsed, law.policies};
+  const ContactInput in{g, committed, elapsed, policies};
 
-  const NormalResponse elastic =
-      std::visit([&](const auto& m) { return m.evaluate(in, next); }, law.normal);
-  const CohesionResponse cohesion =
-      std::visit([&](const auto& m) { return m.evaluate(in, elastic, next); }, law.cohesion);
-  out.contact = g.overlap > 0.0 || (law.policies.contact_at_zero_overlap && g.overlap == 0.0) ||
+  const NormalResponse elastic = slots.normal([&](const auto& m) { return m.evaluate(in, next); });
+  const CohesionResponse cohesion = slots.cohesion([&](const auto& m) { return m.evaluate(in, elastic, next); });
+  out.contact = g.overlap > 0.0 || (policies.contact_at_zero_overlap && g.overlap == 0.0) ||
                 cohesion.contact;
   out.interacting = out.contact || elastic.active || cohesion.active;
   if (!out.interacting) return out;
@@ -114,20 +145,20 @@ struct ContactOutcome {
   // Two infinite masses (a fixed sphere driven against another, m* = ∞): a dashpot scaled by m*
   // is undefined and could change no motion anyway, so such a contact reports no damping.
   const double eta = out.contact && std::isfinite(g.reduced_mass)
-                         ? std::visit([&](const auto& m) { return m.coefficient(g, elastic); }, law.damping)
+                         ? slots.damping([&](const auto& m) { return m.coefficient(g, elastic); })
                          : 0.0;
   double damping = -eta * g.normal_speed;
-  if (law.policies.clamp_tensile && elastic.force + damping < 0.0) damping = -elastic.force;
+  if (policies.clamp_tensile && elastic.force + damping < 0.0) damping = -elastic.force;
   out.normal_force = elastic.force + damping + cohesion.force;
 
   TangentialResponse tangential;
   RollingResponse rolling;
   if (out.contact) {
-    const double basis = friction_limit_basis(law.policies.friction_limit, elastic.force, damping,
+    const double basis = friction_limit_basis(policies.friction_limit, elastic.force, damping,
                                               cohesion.force, cohesion.pulloff_force);
     const TangentialInput t_in{elastic, eta, basis};
-    tangential = std::visit([&](const auto& m) { return m.evaluate(in, t_in, next); }, law.tangential);
-    rolling = std::visit([&](const auto& m) { return m.evaluate(in, basis, next); }, law.rolling);
+    tangential = slots.tangential([&](const auto& m) { return m.evaluate(in, t_in, next); });
+    rolling = slots.rolling([&](const auto& m) { return m.evaluate(in, basis, next); });
     next.max_overlap = std::max(committed.max_overlap, g.overlap);
   } else {
     // Apart (a long-range law may keep the pair interacting): the next touch is a new contact,
@@ -145,6 +176,14 @@ struct ContactOutcome {
   out.dissipated_damping = std::max(0.0, -damping * g.normal_speed) * elapsed;
   out.dissipated_friction = tangential.dissipated + rolling.dissipated;
   return out;
+}
+
+/// Evaluates the contact law of one pair (the one per-pair evaluator: every engine path, every
+/// pair and wall contact goes through evaluate_contact_in). See evaluate_contact_in.
+[[nodiscard]] inline ContactOutcome evaluate_contact(const PairLaw& law, const ContactGeometry& g,
+                                                     const ContactHistory& committed,
+                                                     double elapsed) noexcept {
+  return evaluate_contact_in(DynamicSlots{law}, g, committed, elapsed);
 }
 
 /// Largest centre distance at which the law of a pair with extent `e` acts (neighbour search).

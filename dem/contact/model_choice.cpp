@@ -39,6 +39,15 @@ constexpr std::array<std::pair<WallLeverArm, std::string_view>, 2> kLever{{
     {WallLeverArm::radius, "radius"},
 }};
 
+constexpr std::array<std::pair<PairLeverArm, std::string_view>, 2> kPairLever{{
+    {PairLeverArm::contact_point, "contact_point"},
+    {PairLeverArm::radius, "radius"},
+}};
+constexpr std::array<std::pair<TangentialHistory, std::string_view>, 2> kHistory{{
+    {TangentialHistory::project_rescale, "project_rescale"},
+    {TangentialHistory::increment_project, "increment_project"},
+}};
+
 }  // namespace
 
 std::string_view to_string(FrictionLimit p) noexcept { return name_of(kFriction, p); }
@@ -47,5 +56,11 @@ std::string_view to_string(JkrRupture p) noexcept { return name_of(kRupture, p);
 std::optional<JkrRupture> parse_jkr_rupture(std::string_view k) noexcept { return value_of(kRupture, k); }
 std::string_view to_string(WallLeverArm p) noexcept { return name_of(kLever, p); }
 std::optional<WallLeverArm> parse_wall_lever_arm(std::string_view k) noexcept { return value_of(kLever, k); }
+std::string_view to_string(PairLeverArm p) noexcept { return name_of(kPairLever, p); }
+std::optional<PairLeverArm> parse_pair_lever_arm(std::string_view k) noexcept { return value_of(kPairLever, k); }
+std::string_view to_string(TangentialHistory p) noexcept { return name_of(kHistory, p); }
+std::optional<TangentialHistory> parse_tangential_history(std::string_view k) noexcept {
+  return value_of(kHistory, k);
+}
 
 }  // namespace dem

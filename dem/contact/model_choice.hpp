@@ -27,6 +27,22 @@ enum class WallLeverArm {
   radius,         ///< r, as LAMMPS fix wall/gran
 };
 
+/// Lever arm of the contact point about each sphere's centre in a sphere–sphere contact: it sets
+/// both the contact-point velocity u_c and the torque of the tangential force.
+enum class PairLeverArm {
+  contact_point,  ///< r − δ/2 (common-normal method, thesis §3.3.3; default)
+  radius,         ///< the body radius r, as LAMMPS gran/hooke/history
+};
+
+/// How the stored tangential slip ς follows the contact plane as the normal turns (eq 3.9).
+enum class TangentialHistory {
+  /// Carry ς into the current tangent plane keeping its magnitude, then add u_t·Δt (LAMMPS pair
+  /// granular, Luding 2008 eq 17; default).
+  project_rescale,
+  /// Add u_t·Δt, then drop the part along n without rescaling (LAMMPS gran/hooke/history).
+  increment_project,
+};
+
 /// Keywords of the sub-model chosen for each slot and the named policies, as a case file gives
 /// them ([model] table).
 struct ModelChoice {
@@ -39,6 +55,8 @@ struct ModelChoice {
   FrictionLimit friction_limit = FrictionLimit::total;
   JkrRupture jkr_rupture = JkrRupture::displacement;
   WallLeverArm wall_lever_arm = WallLeverArm::contact_point;
+  PairLeverArm pair_lever_arm = PairLeverArm::contact_point;
+  TangentialHistory tangential_history = TangentialHistory::project_rescale;
   /// Bodies exactly touching (δ = 0) are in contact, so the dashpot and friction act there
   /// (YADE's Ig2/Law2 keep δ ≥ 0); default false: contact needs δ > 0. Set by matched runs only.
   bool contact_at_zero_overlap = false;
@@ -56,5 +74,13 @@ std::optional<JkrRupture> parse_jkr_rupture(std::string_view keyword) noexcept;
 std::string_view to_string(WallLeverArm p) noexcept;
 /// Wall lever-arm policy named `keyword`, or empty.
 std::optional<WallLeverArm> parse_wall_lever_arm(std::string_view keyword) noexcept;
+/// Case-file keyword of a pair lever-arm policy.
+std::string_view to_string(PairLeverArm p) noexcept;
+/// Pair lever-arm policy named `keyword`, or empty.
+std::optional<PairLeverArm> parse_pair_lever_arm(std::string_view keyword) noexcept;
+/// Case-file keyword of a tangential-history rule.
+std::string_view to_string(TangentialHistory p) noexcept;
+/// Tangential-history rule named `keyword`, or empty.
+std::optional<TangentialHistory> parse_tangential_history(std::string_view keyword) noexcept;
 
 }  // namespace dem

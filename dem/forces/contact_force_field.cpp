@@ -1,133 +1,349 @@
 // SPDX-License-Identifier: MIT
 #include "dem/forces/contact_force_field.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
+#include <limits>
+#include <string>
 
-#include "dem/neighbors/all_pairs.hpp"
+#include <fmt/format.h>
+
+#include "dem/core/model_error.hpp"
+#include "dem/neighbors/interaction_reach.hpp"
+#include "dem/particles/spatial_order.hpp"
 
 namespace dem {
+namespace {
+
+/// Spheres per chunk of the per-sphere loop: chunks, not threads, group the energy sums, so the
+/// sums are the same for any thread count.
+constexpr std::uint32_t kSphereChunk = 4096;
+
+/// True when some sub-model of the choice reads history beyond the tangential slip: rolling
+/// slip (rolling resistance), the largest overlap (hysteretic loading) or the JKR neck.
+bool needs_extended_history(const ModelChoice& c) {
+  return c.rolling != "none" || c.normal == "hysteretic" || c.cohesion == "jkr";
+}
+
+/// Default Verlet skin: a tenth of the smallest body diameter.
+double default_skin(const ParticleProperties& props) {
+  double smallest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < props.radius.size(); ++i) smallest = std::min(smallest, props.radius[i]);
+  return std::isfinite(smallest) ? 0.2 * smallest : 1.0;
+}
+
+/// A history assembled from a list entry's slip and extended record.
+ContactHistory assemble(const Vec3& slip, std::uint32_t active, std::span<const ExtendedHistory> ext,
+                        std::size_t k) noexcept {
+  if (active == 0) return {};
+  if (ext.empty()) return {slip, Vec3::Zero(), 0.0, false};
+  const ExtendedHistory& x = ext[k];
+  return {slip, x.rolling_slip, x.max_overlap, x.attached != 0};
+}
+
+/// Stores the history an evaluation proposes into a list entry.
+template <class Entry>
+void store(Entry& e, std::span<ExtendedHistory> ext, std::size_t k, const ContactHistory& h) noexcept {
+  e.active = 1;
+  e.slip = h.tangential_slip;
+  if (!ext.empty()) ext[k] = {h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0)};
+}
+
+/// Adds one contact's energies to a running sum.
+void add_energies(EnergyTotals& t, const ContactOutcome& c) noexcept {
+  t.elastic += c.elastic_energy;
+  t.cohesive += c.cohesive_energy;
+  t.damping += c.dissipated_damping;
+  t.friction += c.dissipated_friction;
+}
+
+}  // namespace
 
 ContactForceField::ContactForceField(const ParticleProperties& props, const PairTable& table,
                                      ForceFieldSetup setup)
     : props_(props), table_(table), setup_(std::move(setup)), motion_of_(props.size(), -1) {
-  moving_.assign(props.size(), 0);
+  const auto n = props.size();
+  if (n > kMaxSpheres) {
+    throw ModelError("particles", fmt::format("{} spheres exceed the neighbour list's limit of {}", n, kMaxSpheres));
+  }
+  still_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) still_[i] = props.fixed[i];
   for (std::size_t k = 0; k < setup_.motions.size(); ++k) {
     motion_of_[setup_.motions[k].particle] = static_cast<std::int32_t>(k);
-    moving_[setup_.motions[k].particle] = 1;
+    still_[setup_.motions[k].particle] = 0;
   }
-  const auto n = static_cast<Eigen::Index>(props.size());
-  committed_force_ = Vec3Array::Zero(3, n);
-  committed_torque_ = Vec3Array::Zero(3, n);
+  motion_position_.resize(setup_.motions.size());
+  motion_velocity_.resize(setup_.motions.size());
+  half_reach_ = half_reaches(props, table);
+  contact_spheres_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    contact_spheres_[i] = {props.radius[k], props.effect_radius[k], props.inverse_mass[k], props.charge[k]};
+  }
+  classes_ = size_classes({half_reach_.data(), n});
+  extended_history_ = needs_extended_history(table.choice());
+  if (!(setup_.neighbors.skin > 0.0)) setup_.neighbors.skin = default_skin(props);
+
+  const PeriodicBox& box = setup_.box;
+  double largest = 0.0;
+  for (const double h : classes_.max_half_reach) largest = std::max(largest, h);
+  const double cutoff = 2.0 * largest + setup_.neighbors.skin;
+  constexpr const char* kAxis = "xyz";
+  for (int k = 0; k < 3; ++k) {
+    if (!box.periodic[k]) continue;
+    const double length = box.hi[k] - box.lo[k];
+    if (!(length >= 2.0 * cutoff)) {
+      throw ModelError("domain.periodic",
+                       fmt::format("the periodic box is {:.6g} m long along {}, shorter than twice the "
+                                   "longest listed pair distance {:.6g} m (largest interaction reach "
+                                   "{:.6g} m plus skin {:.6g} m): a pair would meet more than one image",
+                                   length, kAxis[k], cutoff, 2.0 * largest, setup_.neighbors.skin));
+    }
+    for (std::size_t w = 0; w < setup_.walls.size(); ++w) {
+      if (setup_.walls[w].normal[k] != 0.0) {
+        throw ModelError("walls", fmt::format("wall {} has a normal component along the periodic axis {}; "
+                                              "a plane wall must be parallel to every periodic axis",
+                                              w, kAxis[k]));
+      }
+    }
+  }
+  packed_.resize(n);
+  if (box.any()) wrap_offset_ = Vec3Array::Zero(3, static_cast<Eigen::Index>(n));
+  const auto cols = static_cast<Eigen::Index>(n);
+  force_ = Vec3Array::Zero(3, cols);
+  torque_ = Vec3Array::Zero(3, cols);
+  committed_force_ = Vec3Array::Zero(3, cols);
+  committed_torque_ = Vec3Array::Zero(3, cols);
+  built_position_ = Vec3Array::Zero(3, cols);
 }
 
-SphereState ContactForceField::sphere(const KinematicState& s, std::uint32_t i) const {
-  const auto c = static_cast<Eigen::Index>(i);
-  SphereState out{s.position.col(c),    s.velocity.col(c),      s.angular_velocity.col(c),
-                  props_.radius[c],     props_.effect_radius[c], props_.inverse_mass[c],
-                  props_.charge[c]};
-  if (const std::int32_t m = motion_of_[i]; m >= 0) {
-    // A sphere under prescribed motion is where its motion says, whatever the integrator did.
-    const PrescribedMotion& motion = setup_.motions[static_cast<std::size_t>(m)];
-    out.position = motion.position(s.time);
-    out.velocity = motion.velocity(s.time);
-  }
-  return out;
+SphereState ContactForceField::sphere(const KinematicState& s, std::uint32_t i) const noexcept {
+  const PackedSphere& x = packed_[i];
+  const std::int32_t m = motion_of_[i];
+  return SphereState{Vec3(x.x, x.y, x.z),
+                     m >= 0 ? motion_velocity_[static_cast<std::size_t>(m)] : Vec3(s.velocity.col(i)),
+                     s.angular_velocity.col(i),
+                     props_.radius[i],
+                     props_.effect_radius[i],
+                     props_.inverse_mass[i],
+                     props_.charge[i]};
 }
 
-void ContactForceField::add_contact(std::uint32_t i, std::uint32_t j, const ContactOutcome& c) {
-  force_.col(i) += c.force_on_p;
-  force_.col(j) -= c.force_on_p;
-  torque_.col(i) += c.torque_on_p;
-  torque_.col(j) += c.torque_on_q;
-  totals_.elastic += c.elastic_energy;
-  totals_.cohesive += c.cohesive_energy;
-  totals_.damping += c.dissipated_damping;
-  totals_.friction += c.dissipated_friction;
+double ContactForceField::wall_reach_of(std::uint32_t i, std::uint32_t w) const noexcept {
+  return wall_reach(table_.law(props_.material[i], setup_.walls[w].material), props_.radius[i],
+                    props_.effect_radius[i]);
+}
+
+double ContactForceField::pack(const KinematicState& state) {
+  const double t = state.time;
+  for (std::size_t m = 0; m < setup_.motions.size(); ++m) {
+    motion_position_[m] = setup_.motions[m].position(t);
+    motion_velocity_[m] = setup_.motions[m].velocity(t);
+  }
+  const auto n = static_cast<std::int64_t>(packed_.size());
+  const double* position = state.position.data();
+  const double* built = built_position_.data();
+  const double* offset = wrap_offset_.size() > 0 ? wrap_offset_.data() : nullptr;
+  const double* h = half_reach_.data();
+  PackedSphere* out = packed_.data();
+  double worst = 0.0;
+  const int threads = std::max(setup_.threads, 1);
+#pragma omp parallel for schedule(static) reduction(max : worst) num_threads(threads) if (threads > 1)
+  for (std::int64_t i = 0; i < n; ++i) {
+    double x = position[3 * i];
+    double y = position[3 * i + 1];
+    double z = position[3 * i + 2];
+    if (offset != nullptr) {
+      x -= offset[3 * i];
+      y -= offset[3 * i + 1];
+      z -= offset[3 * i + 2];
+    }
+    out[i] = {x, y, z, h[i]};
+    const double dx = x - built[3 * i];
+    const double dy = y - built[3 * i + 1];
+    const double dz = z - built[3 * i + 2];
+    worst = std::max(worst, dx * dx + dy * dy + dz * dz);
+  }
+  // A sphere under prescribed motion is where its motion says, whatever the integrator did.
+  for (std::size_t m = 0; m < setup_.motions.size(); ++m) {
+    const std::uint32_t i = setup_.motions[m].particle;
+    Vec3 x = motion_position_[m];
+    if (offset != nullptr) x -= wrap_offset_.col(i);
+    packed_[i] = {x[0], x[1], x[2], half_reach_[i]};
+    worst = std::max(worst, (x - built_position_.col(i)).squaredNorm());
+  }
+  force_.setZero();
+  torque_.setZero();
+  return worst;
+}
+
+void ContactForceField::rebuild(const KinematicState& state, std::span<const std::uint32_t> new_of_old) {
+  const ScopedSeconds timer(timing_.neighbor_build);
+  if (setup_.box.any()) {
+    // Wrap: images are chosen afresh at every build, so centres lie in the box, give or take
+    // the half skin they may move before the next build.
+    wrap_offset_.setZero();
+    pack(state);
+    const Vec3 length = setup_.box.length();
+    for (std::size_t i = 0; i < packed_.size(); ++i) {
+      const auto image = setup_.box.image_of(Vec3(packed_[i].x, packed_[i].y, packed_[i].z));
+      for (int k = 0; k < 3; ++k) {
+        wrap_offset_(k, static_cast<Eigen::Index>(i)) = setup_.box.periodic[static_cast<std::size_t>(k)] ? image[static_cast<std::size_t>(k)] * length[k] : 0.0;
+      }
+    }
+    pack(state);
+  }
+  const int threads = std::max(setup_.threads, 1);
+  list_.build({packed_, still_, classes_.of, classes_.max_half_reach, &setup_.box,
+               setup_.neighbors.skin, threads, extended_history_},
+              new_of_old);
+  wall_list_.build(
+      packed_, props_.fixed, setup_.walls, state.time, setup_.neighbors.skin,
+      [this](std::uint32_t i, std::uint32_t w) { return wall_reach_of(i, w); }, extended_history_,
+      new_of_old);
+  for (std::size_t i = 0; i < packed_.size(); ++i) {
+    built_position_.col(static_cast<Eigen::Index>(i)) = Vec3(packed_[i].x, packed_[i].y, packed_[i].z);
+  }
+  built_time_ = state.time;
+  built_ = true;
 }
 
 void ContactForceField::evaluate(const KinematicState& state, double elapsed, Accelerations& out,
-                                 bool record) {
-  const auto n = static_cast<Eigen::Index>(props_.size());
-  force_.setZero(3, n);
-  torque_.setZero(3, n);
-  totals_ = Totals{};
-  next_history_.clear();
-  next_wall_history_.clear();
-  if (record) {
-    for (auto& o : observations_) {
-      o.normal_force = 0.0;
-      o.interacting = false;
-      const SphereState p = sphere(state, o.p);
-      o.overlap = o.wall ? wall_geometry(p, setup_.walls[o.q], state.time, false).overlap
-                         : pair_geometry(p, sphere(state, o.q)).overlap;
+                                 bool commit) {
+  double worst = 0.0;
+  {
+    const ScopedSeconds timer(timing_.other);
+    worst = pack(state);
+  }
+  const double half_skin = 0.5 * setup_.neighbors.skin;
+  double wall_travel = 0.0;
+  for (const PlaneWall& w : setup_.walls) {
+    wall_travel = std::max(wall_travel, w.velocity.norm() * std::abs(state.time - built_time_));
+  }
+  // Verlet criterion (thesis B.2): rebuild once some sphere or wall has moved half the skin.
+  if (!built_ || worst > half_skin * half_skin || wall_travel > half_skin) rebuild(state, {});
+  if (commit && !observations_.empty()) {
+    const ScopedSeconds timer(timing_.other);
+    observe(state, elapsed);
+  }
+  {
+    const ScopedSeconds timer(timing_.pair_loop);
+    run_pairs(state, elapsed, commit);
+  }
+  {
+    const ScopedSeconds timer(timing_.sphere_loop);
+    run_walls_and_fields(state, elapsed, out, commit);
+  }
+  if (!commit) return;
+  std::swap(force_, committed_force_);
+  std::swap(torque_, committed_torque_);
+  ledger_.elastic = totals_.elastic;
+  ledger_.cohesive = totals_.cohesive;
+  ledger_.dissipated_damping += totals_.damping;
+  ledger_.dissipated_friction += totals_.friction;
+  ledger_.fluid_work += totals_.fluid_power * elapsed;
+}
+
+void ContactForceField::run_pairs(const KinematicState& state, double elapsed, bool commit) {
+  const SlabPartition& slabs = list_.slabs();
+  const std::uint32_t count = slabs.count();
+  slab_totals_.assign(count, EnergyTotals{});
+  const PairLoopInput in{packed_.data(),
+                         state.velocity.data(),
+                         state.angular_velocity.data(),
+                         contact_spheres_.data(),
+                         props_.material.data(),
+                         setup_.motions.empty() ? nullptr : motion_of_.data(),
+                         motion_velocity_.data(),
+                         &table_,
+                         setup_.pair_lever_arm_is_radius,
+                         elapsed,
+                         commit,
+                         setup_.track_energy};
+  double* force = force_.data();
+  double* torque = torque_.data();
+  const auto run_slab = [&](std::uint32_t s) {
+    slab_totals_[s] = run_pair_loop(in, list_, slabs.members(s), force, torque);
+  };
+
+  const int threads = std::max(setup_.threads, 1);
+  if (count == 1) {
+    run_slab(0);
+  } else {
+    // Even slabs, then odd ones: two slabs of one colour never share a sphere.
+    for (std::uint32_t colour = 0; colour < 2; ++colour) {
+      const auto half = static_cast<std::int64_t>((count - colour + 1) / 2);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1)
+      for (std::int64_t h = 0; h < half; ++h) run_slab(colour + 2 * static_cast<std::uint32_t>(h));
     }
   }
-  static const ContactHistory kFresh{};
+  totals_ = EnergyTotals{};
+  for (const EnergyTotals& t : slab_totals_) totals_ += t;
+}
 
-  // Sphere–sphere contacts: every pair within reach of its law.
-  for_each_candidate_pair(props_, moving_, state.position, [&](std::uint32_t i, std::uint32_t j) {
-    const PairLaw& law = table_.law(props_.material[i], props_.material[j]);
-    const ContactGeometry g = pair_geometry(sphere(state, i), sphere(state, j));
-    const std::uint64_t key = pair_key(i, j);
-    const auto found = history_.find(key);
-    const ContactOutcome c = evaluate_contact(law, g, found == history_.end() ? kFresh : found->second,
-                                              elapsed);
-    if (record) record_observation(i, j, false, g, c);
-    if (!c.interacting) return;
-    add_contact(i, j, c);
-    next_history_.insert_or_assign(key, c.history);
-  }, [&](std::uint32_t i, std::uint32_t j) {
-    const PairLaw& law = table_.law(props_.material[i], props_.material[j]);
-    const double r_p = props_.radius[i], r_q = props_.radius[j];
-    return interaction_range(law, {r_p + r_q, props_.effect_radius[i] + props_.effect_radius[j],
-                                   r_p * r_q / (r_p + r_q)});
-  });
+void ContactForceField::run_walls_and_fields(const KinematicState& state, double elapsed,
+                                             Accelerations& out, bool commit) {
+  const auto n = static_cast<std::uint32_t>(packed_.size());
+  const auto cols = static_cast<Eigen::Index>(n);
+  out.linear.resize(3, cols);
+  out.angular.resize(3, cols);
+  const std::uint32_t chunks = std::max<std::uint32_t>(1, (n + kSphereChunk - 1) / kSphereChunk);
+  chunk_totals_.assign(chunks, EnergyTotals{});
+  chunk_totals_[0] = totals_;  // the running sums continue from the pair loop's
+  const std::span<WallEntry> wall_entries = wall_list_.entries();
+  const std::span<ExtendedHistory> wall_ext = wall_list_.extended();
+  const bool lever = setup_.wall_lever_arm_is_radius;
+  const bool track = setup_.track_energy;
+  const double t_now = state.time;
+  const int threads = std::max(setup_.threads, 1);
 
-  // Sphere–wall contacts: the wall is an infinite-mass partner (m* = m, R* = r).
-  for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(n); ++i) {
-    if (props_.fixed[i] != 0) continue;
-    const SphereState p = sphere(state, i);
-    for (std::uint32_t w = 0; w < setup_.walls.size(); ++w) {
-      const PlaneWall& wall = setup_.walls[w];
-      const PairLaw& law = table_.law(props_.material[i], wall.material);
-      const ContactGeometry g = wall_geometry(p, wall, state.time, setup_.wall_lever_arm_is_radius);
-      const double r = props_.radius[i];
-      if (g.distance > interaction_range(law, {r, props_.effect_radius[i], r})) continue;
-      const std::uint64_t key = pair_key(i, w);
-      const auto found = wall_history_.find(key);
-      const ContactOutcome c = evaluate_contact(
-          law, g, found == wall_history_.end() ? kFresh : found->second, elapsed);
-      if (record) record_observation(i, w, true, g, c);
-      if (!c.interacting) continue;
-      force_.col(i) += c.force_on_p;
-      torque_.col(i) += c.torque_on_p;
-      totals_.elastic += c.elastic_energy;
-      totals_.cohesive += c.cohesive_energy;
-      totals_.damping += c.dissipated_damping;
-      totals_.friction += c.dissipated_friction;
-      next_wall_history_.insert_or_assign(key, c.history);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
+    EnergyTotals& sums = chunk_totals_[chunk];
+    const std::uint32_t end = std::min(n, (chunk + 1) * kSphereChunk);
+    for (std::uint32_t i = chunk * kSphereChunk; i < end; ++i) {
+      const auto c = static_cast<Eigen::Index>(i);
+      if (props_.fixed[i] != 0) {
+        out.linear.col(c).setZero();
+        out.angular.col(c).setZero();
+        continue;
+      }
+      // Sphere–wall contacts: the wall is an infinite-mass partner (m* = m, R* = r).
+      const std::uint32_t wall_end = wall_list_.begin(i + 1);
+      if (wall_list_.begin(i) < wall_end) {
+        const SphereState p = sphere(state, i);
+        for (std::uint32_t k = wall_list_.begin(i); k < wall_end; ++k) {
+          WallEntry& e = wall_entries[k];
+          const PlaneWall& wall = setup_.walls[e.wall];
+          const ContactGeometry g = wall_geometry(p, wall, t_now, lever);
+          if (g.distance > wall_reach_of(i, e.wall)) {
+            if (commit) e.active = 0;
+            continue;
+          }
+          const PairLaw& law = table_.law(props_.material[i], wall.material);
+          const ContactOutcome o = evaluate_contact(law, g, assemble(e.slip, e.active, wall_ext, k), elapsed);
+          if (!o.interacting) {
+            if (commit) e.active = 0;
+            continue;
+          }
+          force_.col(c) += o.force_on_p;
+          torque_.col(c) += o.torque_on_p;
+          if (track) add_energies(sums, o);
+          if (commit) store(e, wall_ext, k, o.history);
+        }
+      }
+      // External fields and accelerations of the mobile spheres.
+      const FieldInput in{state.position.col(c), state.velocity.col(c), props_.radius[c],
+                          props_.density[c], props_.mass[c], t_now};
+      force_.col(c) += setup_.fields.force(in);
+      if (track) sums.fluid_power += setup_.fields.hydrodynamic_power(in);
+      const double inertia_mass = props_.mass[c] + setup_.fields.added_mass(props_.radius[c]);
+      out.linear.col(c) = force_.col(c) / inertia_mass;
+      out.angular.col(c) = props_.inverse_inertia[c] * torque_.col(c);
     }
   }
-
-  // External fields and accelerations of the mobile spheres.
-  out.linear.resize(3, n);
-  out.angular.resize(3, n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (props_.fixed[static_cast<std::size_t>(i)] != 0) {
-      out.linear.col(i).setZero();
-      out.angular.col(i).setZero();
-      continue;
-    }
-    const double density = props_.mass[i] / (4.0 / 3.0 * std::numbers::pi * std::pow(props_.radius[i], 3));
-    const FieldInput in{state.position.col(i), state.velocity.col(i), props_.radius[i], density,
-                        props_.mass[i], state.time};
-    force_.col(i) += setup_.fields.force(in);
-    totals_.fluid_power += setup_.fields.hydrodynamic_power(in);
-    const double inertia_mass = props_.mass[i] + setup_.fields.added_mass(props_.radius[i]);
-    out.linear.col(i) = force_.col(i) / inertia_mass;
-    out.angular.col(i) = props_.inverse_inertia[i] * torque_.col(i);
-  }
+  totals_ = EnergyTotals{};
+  for (const EnergyTotals& t : chunk_totals_) totals_ += t;
 }
 
 void ContactForceField::trial(const KinematicState& state, double elapsed, Accelerations& out) {
@@ -136,30 +352,104 @@ void ContactForceField::trial(const KinematicState& state, double elapsed, Accel
 
 void ContactForceField::commit(const KinematicState& state, double elapsed, Accelerations& out) {
   evaluate(state, elapsed, out, true);
-  std::swap(history_, next_history_);
-  std::swap(wall_history_, next_wall_history_);
-  committed_force_ = force_;
-  committed_torque_ = torque_;
-  ledger_.elastic = totals_.elastic;
-  ledger_.cohesive = totals_.cohesive;
-  ledger_.dissipated_damping += totals_.damping;
-  ledger_.dissipated_friction += totals_.friction;
-  ledger_.fluid_work += totals_.fluid_power * elapsed;
 }
 
 void ContactForceField::watch(const std::vector<ContactObservation>& contacts) {
   observations_ = contacts;
 }
 
-void ContactForceField::record_observation(std::uint32_t p, std::uint32_t q, bool wall,
-                                           const ContactGeometry& g, const ContactOutcome& c) {
+void ContactForceField::observe(const KinematicState& state, double elapsed) {
   for (auto& o : observations_) {
-    const bool same = o.wall == wall && ((o.p == p && o.q == q) || (!wall && o.p == q && o.q == p));
-    if (!same) continue;
+    o.normal_force = 0.0;
+    o.interacting = false;
+    if (o.wall) {
+      const PlaneWall& wall = setup_.walls[o.q];
+      const ContactGeometry g = wall_geometry(sphere(state, o.p), wall, state.time, setup_.wall_lever_arm_is_radius);
+      o.overlap = g.overlap;
+      if (props_.fixed[o.p] != 0 || g.distance > wall_reach_of(o.p, o.q)) continue;
+      const std::int64_t k = wall_list_.find(o.p, o.q);
+      const ContactHistory h = k >= 0 ? wall_list_.history(static_cast<std::size_t>(k)) : ContactHistory{};
+      const ContactOutcome c = evaluate_contact(table_.law(props_.material[o.p], wall.material), g, h, elapsed);
+      o.normal_force = c.interacting ? c.normal_force : 0.0;
+      o.interacting = c.interacting;
+      continue;
+    }
+    bool p_owns = true;
+    const std::int64_t k = list_.find(o.p, o.q, p_owns);
+    const std::uint32_t owner = p_owns ? o.p : o.q;
+    const std::uint32_t partner = p_owns ? o.q : o.p;
+    const SphereState p = sphere(state, owner);
+    SphereState q = sphere(state, partner);
+    if (k >= 0) {
+      q.position -= list_.shift(list_.partners()[static_cast<std::size_t>(k)] >> kPartnerBits);
+    } else {
+      q.position -= setup_.box.minimum_image_shift(p.position - q.position);
+    }
+    const ContactGeometry g = pair_geometry(p, q, setup_.pair_lever_arm_is_radius);
     o.overlap = g.overlap;
+    if (k < 0) continue;  // not listed: beyond reach
+    const ContactOutcome c = evaluate_contact(table_.law(props_.material[owner], props_.material[partner]), g,
+                                              list_.history(static_cast<std::size_t>(k)), elapsed);
     o.normal_force = c.interacting ? c.normal_force : 0.0;
     o.interacting = c.interacting;
   }
+}
+
+ContactHistory ContactForceField::pair_history(std::uint32_t i, std::uint32_t j) const noexcept {
+  bool i_owns = true;
+  const std::int64_t k = list_.find(i, j, i_owns);
+  if (k < 0) return {};
+  ContactHistory h = list_.history(static_cast<std::size_t>(k));
+  if (!i_owns) h.tangential_slip = -h.tangential_slip;
+  return h;
+}
+
+std::size_t ContactForceField::interacting_pairs() const noexcept {
+  std::size_t count = 0;
+  for (const std::uint8_t a : list_.active()) count += a;
+  return count;
+}
+
+std::vector<std::uint32_t> ContactForceField::spatial_order(const KinematicState& state) const {
+  const double cell = 2.0 * classes_.max_half_reach.front() + setup_.neighbors.skin;
+  const std::span<const std::uint32_t> slabs = list_.slabs().all();
+  return morton_order(state.position, setup_.box, cell, slabs.size() == packed_.size() ? slabs : std::span<const std::uint32_t>{});
+}
+
+std::size_t ContactForceField::bytes() const noexcept {
+  const auto matrix = [](const Vec3Array& a) { return static_cast<std::size_t>(a.size()) * sizeof(double); };
+  return motion_of_.capacity() * sizeof(std::int32_t) + still_.capacity() + classes_.of.capacity() +
+         contact_spheres_.capacity() * sizeof(ContactSphere) +
+         static_cast<std::size_t>(half_reach_.size()) * sizeof(double) +
+         packed_.capacity() * sizeof(PackedSphere) + matrix(wrap_offset_) +
+         matrix(built_position_) + matrix(force_) + matrix(torque_) + matrix(committed_force_) +
+         matrix(committed_torque_) + list_.bytes() + wall_list_.bytes() +
+         (slab_totals_.capacity() + chunk_totals_.capacity()) * sizeof(EnergyTotals);
+}
+
+void ContactForceField::permute(std::span<const std::uint32_t> order, const KinematicState& state) {
+  const std::vector<std::uint32_t> new_of_old = inverse_permutation(order);
+  const auto reorder = [&order](auto& values) {
+    const auto old = values;
+    for (std::size_t k = 0; k < order.size(); ++k) values[k] = old[order[k]];
+  };
+  reorder(motion_of_);
+  reorder(still_);
+  reorder(classes_.of);
+  reorder(contact_spheres_);
+  if (wrap_offset_.size() > 0) dem::permute(wrap_offset_, order);
+  {
+    const ScalarArray old = half_reach_;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      half_reach_[static_cast<Eigen::Index>(k)] = old[static_cast<Eigen::Index>(order[k])];
+    }
+  }
+  dem::permute(committed_force_, order);
+  dem::permute(committed_torque_, order);
+  for (PrescribedMotion& m : setup_.motions) m.particle = new_of_old[m.particle];
+  built_ = false;
+  pack(state);
+  rebuild(state, new_of_old);
 }
 
 }  // namespace dem

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -9,9 +10,15 @@
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/contact_model.hpp"
 #include "dem/contact/pair_table.hpp"
+#include "dem/domain/periodic_box.hpp"
 #include "dem/fields/external_fields.hpp"
+#include "dem/forces/energy_ledger.hpp"
+#include "dem/forces/loop_timing.hpp"
+#include "dem/forces/pair_loop.hpp"
 #include "dem/integrators/force_evaluator.hpp"
 #include "dem/motion/prescribed_motion.hpp"
+#include "dem/neighbors/neighbor_list.hpp"
+#include "dem/neighbors/wall_list.hpp"
 #include "dem/particles/particles.hpp"
 
 namespace dem {
@@ -26,37 +33,31 @@ struct ContactObservation {
   bool interacting;
 };
 
-/// Energies of the system at the last commit, and work accumulated since t = 0 [J].
-struct EnergyLedger {
-  double kinetic = 0.0;              ///< translational + rotational of mobile spheres
-  double elastic = 0.0;              ///< normal and tangential springs
-  double cohesive = 0.0;             ///< cohesive potential (≤ 0 while attracting)
-  double gravitational = 0.0;        ///< −Σ m g·x of mobile spheres
-  double dissipated_damping = 0.0;   ///< cumulative dashpot work
-  double dissipated_friction = 0.0;  ///< cumulative sliding and rolling work
-  double fluid_work = 0.0;           ///< cumulative work of drag and pressure gradient on spheres
-  /// Mechanical energy plus everything dissipated minus work put in: constant for an exact
-  /// integration (with walls at rest and no prescribed motion).
-  [[nodiscard]] double balance() const noexcept {
-    return kinetic + elastic + cohesive + gravitational + dissipated_damping + dissipated_friction -
-           fluid_work;
-  }
-};
-
 /// What the force field acts on, beyond the particles and pair laws.
 struct ForceFieldSetup {
   std::vector<PlaneWall> walls;
   ExternalFields fields;
   std::vector<PrescribedMotion> motions;  ///< for fixed spheres that move
   bool wall_lever_arm_is_radius = false;  ///< WallLeverArm::radius
+  bool pair_lever_arm_is_radius = false;  ///< PairLeverArm::radius
+  PeriodicBox box;                        ///< periodic axes (none by default)
+  NeighborSettings neighbors;             ///< skin > 0 (Simulation picks one when 0)
+  int threads = 1;                        ///< OpenMP threads of the loops
+  /// Keep the energy ledger (contact energies, dissipated and fluid work). A run that records no
+  /// energy may switch it off: the loops then skip that arithmetic and energy() stays at 0.
+  bool track_energy = true;
 };
 
 /// Forces on every sphere from pair and wall contacts and external fields; the ForceEvaluator the
-/// integrators call. Holds the committed contact history and the energy bookkeeping.
+/// integrators call. The loop (HOOMD-blue's split of loop and evaluator) owns a Verlet list
+/// rebuilt when a sphere has moved half the skin, the contact history stored beside the list,
+/// and three passes: pairs (by slabs, see SlabPartition), walls and fields per sphere. Every
+/// pair goes through the one evaluator, evaluate_contact. Observation (watched contacts) runs
+/// outside the pair loop, at commits only.
 class ContactForceField final : public ForceEvaluator {
  public:
   /// The field for spheres `props` with pair laws `table`; both are referenced and must outlive
-  /// the field.
+  /// the field. Throws ModelError when the periodic box is too small for the interaction reach.
   ContactForceField(const ParticleProperties& props, const PairTable& table, ForceFieldSetup setup);
 
   void trial(const KinematicState& state, double elapsed, Accelerations& out) override;
@@ -72,8 +73,10 @@ class ContactForceField final : public ForceEvaluator {
   [[nodiscard]] const Vec3Array& forces() const noexcept { return committed_force_; }
   /// Total torque on each sphere at the last commit [N·m].
   [[nodiscard]] const Vec3Array& torques() const noexcept { return committed_torque_; }
-  /// Committed history of every interacting sphere pair.
-  [[nodiscard]] const ContactHistoryTable& history() const noexcept { return history_; }
+  /// Committed history of the pair (i, j), oriented i → j (fresh when it does not interact).
+  [[nodiscard]] ContactHistory pair_history(std::uint32_t i, std::uint32_t j) const noexcept;
+  /// Sphere pairs interacting at the last commit.
+  [[nodiscard]] std::size_t interacting_pairs() const noexcept;
   /// Elastic energy stored in all contacts at the last commit [J].
   [[nodiscard]] double elastic_energy() const noexcept { return ledger_.elastic; }
   /// Contact energies at the last commit and work accumulated so far; kinetic and gravitational
@@ -85,38 +88,65 @@ class ContactForceField final : public ForceEvaluator {
   [[nodiscard]] const std::vector<PrescribedMotion>& motions() const noexcept { return setup_.motions; }
   /// Walls.
   [[nodiscard]] const std::vector<PlaneWall>& walls() const noexcept { return setup_.walls; }
+  /// The periodic box.
+  [[nodiscard]] const PeriodicBox& box() const noexcept { return setup_.box; }
+  /// Neighbour-list settings (skin resolved).
+  [[nodiscard]] const NeighborSettings& neighbor_settings() const noexcept { return setup_.neighbors; }
+  /// The sphere neighbour list.
+  [[nodiscard]] const NeighborList& neighbors() const noexcept { return list_; }
+  /// Neighbour-list builds so far.
+  [[nodiscard]] std::uint64_t list_builds() const noexcept { return list_.builds(); }
+  /// Wall-clock time spent in list builds and in the force loops so far.
+  [[nodiscard]] const LoopTiming& timing() const noexcept { return timing_; }
+  /// The order a reorder should put the spheres in: slab by slab (the pair loop's work units),
+  /// along a Morton curve of the smallest size class's cells within each slab. Element k is the
+  /// current index of the sphere for place k.
+  [[nodiscard]] std::vector<std::uint32_t> spatial_order(const KinematicState& state) const;
+  /// Bytes held by the field: list, history, per-sphere arrays and scratch.
+  [[nodiscard]] std::size_t bytes() const noexcept;
+
+  /// Follows a reorder of the spheres (ParticleProperties and state already permuted: place k
+  /// holds the sphere that was at order[k]); the list is rebuilt at `state` carrying history.
+  void permute(std::span<const std::uint32_t> order, const KinematicState& state);
 
  private:
-  /// Sums of one evaluation.
-  struct Totals {
-    double elastic = 0.0;
-    double cohesive = 0.0;
-    double damping = 0.0;
-    double friction = 0.0;
-    double fluid_power = 0.0;
-  };
-  void evaluate(const KinematicState& state, double elapsed, Accelerations& out, bool record);
-  void add_contact(std::uint32_t i, std::uint32_t j, const ContactOutcome& c);
-  void record_observation(std::uint32_t p, std::uint32_t q, bool wall, const ContactGeometry& g,
-                          const ContactOutcome& c);
-  [[nodiscard]] SphereState sphere(const KinematicState& s, std::uint32_t i) const;
+  void evaluate(const KinematicState& state, double elapsed, Accelerations& out, bool commit);
+  double pack(const KinematicState& state);
+  void rebuild(const KinematicState& state, std::span<const std::uint32_t> new_of_old);
+  void observe(const KinematicState& state, double elapsed);
+  void run_pairs(const KinematicState& state, double elapsed, bool commit);
+  void run_walls_and_fields(const KinematicState& state, double elapsed, Accelerations& out, bool commit);
+  [[nodiscard]] SphereState sphere(const KinematicState& s, std::uint32_t i) const noexcept;
+  [[nodiscard]] double wall_reach_of(std::uint32_t i, std::uint32_t w) const noexcept;
 
   const ParticleProperties& props_;
   const PairTable& table_;
   ForceFieldSetup setup_;
-  std::vector<std::int32_t> motion_of_;  // particle → index into setup_.motions, or −1
-  std::vector<std::uint8_t> moving_;     // 1 for a fixed sphere under prescribed motion
-  ContactHistoryTable history_;          // committed sphere–sphere history
-  ContactHistoryTable next_history_;
-  ContactHistoryTable wall_history_;     // committed sphere–wall history (key: particle, wall)
-  ContactHistoryTable next_wall_history_;
+  std::vector<std::int32_t> motion_of_;   // sphere → index into setup_.motions, or −1
+  std::vector<std::uint8_t> still_;       // fixed and not moved by a prescribed motion
+  std::vector<Vec3> motion_position_;     // per motion, at the evaluation's time
+  std::vector<Vec3> motion_velocity_;
+  ScalarArray half_reach_;
+  std::vector<ContactSphere> contact_spheres_;  // radii, 1/m, charge packed for the pair loop
+  SizeClasses classes_;
+  bool extended_history_ = false;
+  std::vector<PackedSphere> packed_;      // wrapped centres + half reach, this evaluation
+  Vec3Array built_position_;              // wrapped centres at the last build
+  Vec3Array wrap_offset_;                 // image × box length subtracted to wrap (periodic only)
+  double built_time_ = 0.0;
+  bool built_ = false;
+  NeighborList list_;
+  WallList wall_list_;
   Vec3Array force_;
   Vec3Array torque_;
-  Totals totals_;
   Vec3Array committed_force_;
   Vec3Array committed_torque_;
+  EnergyTotals totals_;
+  std::vector<EnergyTotals> slab_totals_;   // per slab, summed in slab order
+  std::vector<EnergyTotals> chunk_totals_;  // per sphere chunk, summed in chunk order
   EnergyLedger ledger_;
   std::vector<ContactObservation> observations_;
+  LoopTiming timing_;
 };
 
 }  // namespace dem

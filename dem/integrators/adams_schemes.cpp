@@ -6,15 +6,6 @@
 namespace dem::detail {
 namespace {
 
-/// Derivative Σ c_k D_{n−k} with D_n = current and D_{n−1}, … from `past`.
-Derivative weighted(const Derivative& current, const std::deque<Derivative>& past,
-                    std::initializer_list<double> weights) {
-  auto w = weights.begin();
-  Derivative sum = scaled(*w, current);
-  for (std::size_t k = 0; ++w != weights.end(); ++k) add_scaled(sum, *w, past[k]);
-  return sum;
-}
-
 /// Second-order Adams–Bashforth, eq D.6: x_{n+1} = x_n + Δt/2 (3u_n − u_{n−1}), same for u.
 class AdamsBashforth2 final : public MultiStepScheme {
  public:
@@ -23,9 +14,9 @@ class AdamsBashforth2 final : public MultiStepScheme {
  protected:
   void multistep(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
                  const Derivative& current) override {
-    KinematicState next;
-    advance(state, dt, weighted(current, past(), {1.5, -0.5}), settings_.rotation, next);
-    state = std::move(next);
+    weighted(current, {1.5, -0.5}, work_);
+    advance(state, dt, work_, settings_.rotation, next_, settings_.orientation);
+    std::swap(state, next_);
     f.commit(state, dt, acc);
     ++diagnostics_.force_evaluations;
   }
@@ -39,11 +30,9 @@ class AdamsBashforth4 final : public MultiStepScheme {
  protected:
   void multistep(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
                  const Derivative& current) override {
-    KinematicState next;
-    advance(state, dt,
-            weighted(current, past(), {55.0 / 24.0, -59.0 / 24.0, 37.0 / 24.0, -9.0 / 24.0}),
-            settings_.rotation, next);
-    state = std::move(next);
+    weighted(current, {55.0 / 24.0, -59.0 / 24.0, 37.0 / 24.0, -9.0 / 24.0}, work_);
+    advance(state, dt, work_, settings_.rotation, next_, settings_.orientation);
+    std::swap(state, next_);
     f.commit(state, dt, acc);
     ++diagnostics_.force_evaluations;
   }
@@ -58,18 +47,16 @@ class AdamsBashforthMoulton final : public MultiStepScheme {
  protected:
   void multistep(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
                  const Derivative& current) override {
-    KinematicState predicted;
-    advance(state, dt, weighted(current, past(), {23.0 / 12.0, -16.0 / 12.0, 5.0 / 12.0}),
-            settings_.rotation, predicted);
-    Accelerations acc_predicted;
-    f.trial(predicted, dt, acc_predicted);
-    Derivative corrector = scaled(9.0 / 24.0, derivative_of(predicted, acc_predicted));
-    add_scaled(corrector, 19.0 / 24.0, current);
-    add_scaled(corrector, -5.0 / 24.0, past()[0]);
-    add_scaled(corrector, 1.0 / 24.0, past()[1]);
-    KinematicState next;
-    advance(state, dt, corrector, settings_.rotation, next);
-    state = std::move(next);
+    weighted(current, {23.0 / 12.0, -16.0 / 12.0, 5.0 / 12.0}, work_);
+    advance(state, dt, work_, settings_.rotation, next_, settings_.orientation);  // predictor
+    f.trial(next_, dt, acc_work_);
+    derivative_of(next_, acc_work_, work2_);
+    scale(9.0 / 24.0, work2_, work_);
+    add_scaled(work_, 19.0 / 24.0, current);
+    add_scaled(work_, -5.0 / 24.0, past(0));
+    add_scaled(work_, 1.0 / 24.0, past(1));
+    advance(state, dt, work_, settings_.rotation, next_, settings_.orientation);
+    std::swap(state, next_);
     f.commit(state, dt, acc);
     diagnostics_.force_evaluations += 2;
   }

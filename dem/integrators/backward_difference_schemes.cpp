@@ -3,47 +3,51 @@
 // Each step is a fixed-point iteration in which the forces are evaluated explicitly at the
 // latest iterate (no Jacobian), exactly as listed in the thesis; it ends when successive
 // iterates differ by less than the tolerance.
-#include <cmath>
-#include <functional>
-
 #include "dem/integrators/multistep_history.hpp"
 #include "dem/integrators/scheme_factories.hpp"
 
 namespace dem::detail {
 namespace {
 
-/// Runs the fixed-point iteration S^{h+1} = update(S^h, a(S^h)) from the forward-Euler
-/// predictor until converged, then commits at the result. Returns the iteration count.
-struct ImplicitIteration {
-  const SchemeSettings& settings;
-  SchemeDiagnostics& diagnostics;
-
-  void run(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
-           const std::function<Derivative(const Derivative& iterate)>& rate) const {
-    const double tol_x = settings.implicit_tolerance * settings.length_scale;
-    const double tol_u = tol_x / dt;
-    const double tol_w = settings.implicit_tolerance / dt;
-    KinematicState iterate;
-    advance(state, dt, derivative_of(state, acc), settings.rotation, iterate);
-    KinematicState next;
-    Accelerations a;
-    bool converged = false;
-    for (int h = 0; h < settings.implicit_max_iterations && !converged; ++h) {
-      f.trial(iterate, dt, a);
-      ++diagnostics.force_evaluations;
-      ++diagnostics.implicit_iterations;
-      advance(state, dt, rate(derivative_of(iterate, a)), settings.rotation, next);
-      converged = max_abs_difference(next.position, iterate.position) <= tol_x &&
-                  max_abs_difference(next.velocity, iterate.velocity) <= tol_u &&
-                  max_abs_difference(next.angular_velocity, iterate.angular_velocity) <= tol_w;
-      std::swap(iterate, next);
-    }
-    if (!converged) ++diagnostics.unconverged_steps;
-    state = std::move(iterate);
-    f.commit(state, dt, acc);
-    ++diagnostics.force_evaluations;
-  }
+/// The iterates of one implicit step, kept between steps so that a step allocates nothing.
+struct ImplicitWorkspace {
+  KinematicState iterate;
+  KinematicState next;
+  Accelerations acc;
+  Derivative d;
+  Derivative rate;
 };
+
+/// Runs the fixed-point iteration S^{h+1} = update(S^h, a(S^h)) from the forward-Euler
+/// predictor until converged, then commits at the result. `rate(d, out)` turns the derivative
+/// at an iterate into the rate the step applies.
+template <class Rate>
+void implicit_step(const SchemeSettings& settings, SchemeDiagnostics& diagnostics,
+                   ImplicitWorkspace& w, KinematicState& state, Accelerations& acc, double dt,
+                   ForceEvaluator& f, const Rate& rate) {
+  const double tol_x = settings.implicit_tolerance * settings.length_scale;
+  const double tol_u = tol_x / dt;
+  const double tol_w = settings.implicit_tolerance / dt;
+  derivative_of(state, acc, w.d);
+  advance(state, dt, w.d, settings.rotation, w.iterate, settings.orientation);
+  bool converged = false;
+  for (int h = 0; h < settings.implicit_max_iterations && !converged; ++h) {
+    f.trial(w.iterate, dt, w.acc);
+    ++diagnostics.force_evaluations;
+    ++diagnostics.implicit_iterations;
+    derivative_of(w.iterate, w.acc, w.d);
+    rate(w.d, w.rate);
+    advance(state, dt, w.rate, settings.rotation, w.next, settings.orientation);
+    converged = max_abs_difference(w.next.position, w.iterate.position) <= tol_x &&
+                max_abs_difference(w.next.velocity, w.iterate.velocity) <= tol_u &&
+                max_abs_difference(w.next.angular_velocity, w.iterate.angular_velocity) <= tol_w;
+    std::swap(w.iterate, w.next);
+  }
+  if (!converged) ++diagnostics.unconverged_steps;
+  std::swap(state, w.iterate);
+  f.commit(state, dt, acc);
+  ++diagnostics.force_evaluations;
+}
 
 /// First-order back-differenced (backward Euler), eq D.10:
 /// x_{n+1} = x_n + Δt u_{n+1}, u_{n+1} = u_n + Δt F(x_{n+1}, u_{n+1})/m.
@@ -51,12 +55,13 @@ class BackwardDifference1 final : public Scheme {
  public:
   explicit BackwardDifference1(const SchemeSettings& s) : settings_(s) {}
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
-    ImplicitIteration{settings_, diagnostics_}.run(state, acc, dt, f,
-                                                   [](const Derivative& d) { return d; });
+    implicit_step(settings_, diagnostics_, work_, state, acc, dt, f,
+                  [](const Derivative& d, Derivative& out) { scale(1.0, d, out); });
   }
 
  private:
   SchemeSettings settings_;
+  ImplicitWorkspace work_;
 };
 
 /// Second-order back-differenced, eq D.11 (fixed Δt):
@@ -71,17 +76,20 @@ class BackwardDifference2 final : public MultiStepScheme {
   void multistep(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
                  const Derivative&) override {
     const KinematicState& prev = previous_state();
-    const Derivative backward{(state.position - prev.position) / dt,
-                              (state.velocity - prev.velocity) / dt,
-                              orientation_rate(prev.orientation, state.orientation, dt),
-                              (state.angular_velocity - prev.angular_velocity) / dt};
-    ImplicitIteration{settings_, diagnostics_}.run(
-        state, acc, dt, f, [&backward](const Derivative& d) {
-          Derivative r = scaled(1.0 / 3.0, backward);
-          add_scaled(r, 2.0 / 3.0, d);
-          return r;
-        });
+    backward_.velocity = (state.position - prev.position) / dt;
+    backward_.acceleration = (state.velocity - prev.velocity) / dt;
+    orientation_rate(prev.orientation, state.orientation, dt, backward_.angular_velocity);
+    backward_.angular_acceleration = (state.angular_velocity - prev.angular_velocity) / dt;
+    implicit_step(settings_, diagnostics_, implicit_, state, acc, dt, f,
+                  [this](const Derivative& d, Derivative& out) {
+                    scale(1.0 / 3.0, backward_, out);
+                    add_scaled(out, 2.0 / 3.0, d);
+                  });
   }
+
+ private:
+  Derivative backward_;
+  ImplicitWorkspace implicit_;
 };
 
 }  // namespace

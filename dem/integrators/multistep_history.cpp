@@ -4,32 +4,52 @@
 #include <stdexcept>
 #include <string>
 
-#include "dem/integrators/scheme_factories.hpp"
-
 namespace dem::detail {
+namespace {
 
-void MultiStepScheme::remember(const KinematicState& state, Derivative current) {
-  previous_ = state;
-  past_.push_front(std::move(current));
-  while (past_.size() > needed_) past_.pop_back();
+/// Reorders every array of a derivative.
+void permute(Derivative& d, std::span<const std::uint32_t> order) {
+  for (Vec3Array* a : {&d.velocity, &d.acceleration, &d.angular_velocity, &d.angular_acceleration}) {
+    if (a->cols() == static_cast<Eigen::Index>(order.size())) dem::permute(*a, order);
+  }
+}
+
+}  // namespace
+
+void MultiStepScheme::remember(const Derivative& current) {
+  std::swap(previous_, before_);
+  head_ = (head_ + needed_ - 1) % needed_;
+  Derivative& slot = ring_[head_];
+  slot.velocity = current.velocity;
+  slot.acceleration = current.acceleration;
+  slot.angular_velocity = current.angular_velocity;
+  slot.angular_acceleration = current.angular_acceleration;
+  if (filled_ < needed_) ++filled_;
+}
+
+void MultiStepScheme::weighted(const Derivative& current, std::initializer_list<double> weights,
+                               Derivative& out) const {
+  auto w = weights.begin();
+  scale(*w, current, out);
+  for (std::size_t k = 0; ++w != weights.end(); ++k) add_scaled(out, *w, past(k));
 }
 
 void MultiStepScheme::step(KinematicState& state, Accelerations& acc, double dt,
                            ForceEvaluator& f) {
-  Derivative current = derivative_of(state, acc);
-  const KinematicState before = state;
-  if (past_.size() < needed_) {
+  derivative_of(state, acc, current_);
+  before_ = state;
+  if (filled_ < needed_) {
     // Start-up: RK4 sub-steps until enough time points are known.
     const int n = settings_.startup_substeps;
     for (int i = 0; i < n; ++i) {
       diagnostics_.force_evaluations += static_cast<std::uint64_t>(
-          runge_kutta_4_step(state, acc, dt / n, f, settings_.rotation));
+          runge_kutta_4_step(state, acc, dt / n, f, settings_.rotation, settings_.orientation, rk4_));
     }
     ++diagnostics_.startup_steps;
   } else {
-    multistep(state, acc, dt, f, current);
+    multistep(state, acc, dt, f, current_);
   }
-  remember(before, std::move(current));
+  remember(current_);
 }
 
 void MultiStepScheme::set_past(const std::vector<KinematicState>& past, ForceEvaluator& f,
@@ -39,13 +59,18 @@ void MultiStepScheme::set_past(const std::vector<KinematicState>& past, ForceEva
     throw std::invalid_argument("exact start-up needs " + std::to_string(needed_) +
                                 " past states, got " + std::to_string(past.size()));
   }
-  past_.clear();
+  head_ = 0;
   for (std::size_t k = 0; k < needed_; ++k) {
-    Accelerations a;
-    f.trial(past[k], 0.0, a);
-    past_.push_back(derivative_of(past[k], a));
+    f.trial(past[k], 0.0, acc_work_);
+    derivative_of(past[k], acc_work_, ring_[k]);
   }
+  filled_ = needed_;
   previous_ = past.front();
+}
+
+void MultiStepScheme::permute(std::span<const std::uint32_t> order) {
+  for (Derivative& d : ring_) detail::permute(d, order);
+  if (previous_.position.cols() == static_cast<Eigen::Index>(order.size())) dem::permute(previous_, order);
 }
 
 }  // namespace dem::detail

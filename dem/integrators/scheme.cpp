@@ -57,6 +57,10 @@ void Scheme::set_past(const std::vector<KinematicState>&, ForceEvaluator&, doubl
   // Single-step schemes start from the initial state alone.
 }
 
+void Scheme::permute(std::span<const std::uint32_t>) {
+  // Single-step schemes keep nothing per sphere between steps.
+}
+
 std::unique_ptr<Scheme> make_scheme(SchemeId id, const SchemeSettings& settings) {
   switch (id) {
     case SchemeId::fe: return detail::make_forward_euler(settings);

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "dem/integrators/force_evaluator.hpp"
@@ -33,9 +34,25 @@ class Scheme {
   virtual void set_past(const std::vector<KinematicState>& past, ForceEvaluator& f, double dt);
   /// Counters so far.
   [[nodiscard]] const SchemeDiagnostics& diagnostics() const noexcept { return diagnostics_; }
+  /// The spheres the scheme advances (a fixed sphere never drifts, whatever its velocity: LAMMPS
+  /// `fix freeze` keeps a frozen atom's velocity for its contacts) and the OpenMP threads of
+  /// its per-sphere passes. `props` must outlive the scheme.
+  void bind(const ParticleProperties& props, int threads) noexcept {
+    props_ = &props;
+    threads_ = threads < 1 ? 1 : threads;
+  }
+  /// Follows a reorder of the spheres (place k receives the sphere that was at order[k]): a
+  /// scheme that remembers past states reorders them too.
+  virtual void permute(std::span<const std::uint32_t> order);
 
  protected:
+  /// True when sphere i is fixed (never drifts); false when unbound.
+  [[nodiscard]] bool is_fixed(std::size_t i) const noexcept {
+    return props_ != nullptr && props_->fixed[i] != 0;
+  }
   SchemeDiagnostics diagnostics_;
+  const ParticleProperties* props_ = nullptr;
+  int threads_ = 1;
 };
 
 /// Creates the scheme `id` with `settings`.

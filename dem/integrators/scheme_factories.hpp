@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "dem/integrators/scheme.hpp"
+#include "dem/integrators/state_algebra.hpp"
 
 // Factories of the concrete schemes, one translation unit per family (internal to dem).
 namespace dem::detail {
@@ -20,9 +21,16 @@ std::unique_ptr<Scheme> make_backward_difference_2(const SchemeSettings& setting
 std::unique_ptr<Scheme> make_velocity_verlet(const SchemeSettings& settings);
 std::unique_ptr<Scheme> make_leapfrog(const SchemeSettings& settings);
 
+/// The stages of one RK4 step, kept between steps so that a step allocates nothing.
+struct RungeKutta4Workspace {
+  Derivative k1, k2, k3, k4, sum;
+  KinematicState stage;
+  Accelerations acc_stage;
+};
+
 /// One classical RK4 step (thesis eq D.5) of size dt, committing at the new state.
 /// Returns the number of force evaluations (4).
 int runge_kutta_4_step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
-                       bool rotation);
+                       bool rotation, bool orientation, RungeKutta4Workspace& work);
 
 }  // namespace dem::detail

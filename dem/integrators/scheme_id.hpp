@@ -54,6 +54,9 @@ struct SchemeSettings {
   int implicit_max_iterations = 100;   ///< BD1/BD2: iterations before giving up on a step
   double length_scale = 1.0;           ///< [m] scale of position changes (smallest radius)
   LeapfrogStart leapfrog_start = LeapfrogStart::half_kick;
+  /// Turn the orientation quaternions with ω (nothing in the core reads them back; a run that
+  /// records no orientation may switch this off, as LAMMPS' atom_style sphere keeps none).
+  bool orientation = true;
 };
 
 }  // namespace dem

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Self-starting explicit schemes of thesis appendix D: FE (D.2), SE (D.3), RK2 (D.4), RK4 (D.5).
+// Each keeps its stages in members, so a step allocates nothing once the sizes are known.
 #include "dem/integrators/scheme_factories.hpp"
 #include "dem/integrators/state_algebra.hpp"
 
@@ -9,99 +10,103 @@ namespace {
 /// Forward Euler, eq D.2: x and u both advance with the derivative at t_n.
 class ForwardEuler final : public Scheme {
  public:
-  explicit ForwardEuler(const SchemeSettings& s) : rotation_(s.rotation) {}
+  explicit ForwardEuler(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
-    KinematicState next;
-    advance(state, dt, derivative_of(state, acc), rotation_, next);
-    state = std::move(next);
+    derivative_of(state, acc, d_);
+    advance(state, dt, d_, rotation_, next_, orientation_);
+    std::swap(state, next_);
     f.commit(state, dt, acc);
     ++diagnostics_.force_evaluations;
   }
 
  private:
   bool rotation_;
+  bool orientation_;
+  Derivative d_;
+  KinematicState next_;
 };
 
 /// Symplectic Euler, eq D.3: u advances first and the new u moves x.
 class SymplecticEuler final : public Scheme {
  public:
-  explicit SymplecticEuler(const SchemeSettings& s) : rotation_(s.rotation) {}
+  explicit SymplecticEuler(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
-    Derivative d = derivative_of(state, acc);
-    d.velocity += dt * acc.linear;
-    if (rotation_) d.angular_velocity += dt * acc.angular;
-    KinematicState next;
-    advance(state, dt, d, rotation_, next);
-    state = std::move(next);
+    derivative_of(state, acc, d_);
+    d_.velocity += dt * acc.linear;
+    if (rotation_) d_.angular_velocity += dt * acc.angular;
+    advance(state, dt, d_, rotation_, next_, orientation_);
+    std::swap(state, next_);
     f.commit(state, dt, acc);
     ++diagnostics_.force_evaluations;
   }
 
  private:
   bool rotation_;
+  bool orientation_;
+  Derivative d_;
+  KinematicState next_;
 };
 
 /// Second-order Runge–Kutta (midpoint), eq D.4.
 class RungeKutta2 final : public Scheme {
  public:
-  explicit RungeKutta2(const SchemeSettings& s) : rotation_(s.rotation) {}
+  explicit RungeKutta2(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
-    KinematicState mid;
-    advance(state, 0.5 * dt, derivative_of(state, acc), rotation_, mid);
-    Accelerations acc_mid;
-    f.trial(mid, 0.5 * dt, acc_mid);
-    KinematicState next;
-    advance(state, dt, derivative_of(mid, acc_mid), rotation_, next);
-    state = std::move(next);
+    derivative_of(state, acc, d_);
+    advance(state, 0.5 * dt, d_, rotation_, mid_, orientation_);
+    f.trial(mid_, 0.5 * dt, acc_mid_);
+    derivative_of(mid_, acc_mid_, d_);
+    advance(state, dt, d_, rotation_, next_, orientation_);
+    std::swap(state, next_);
     f.commit(state, dt, acc);
     diagnostics_.force_evaluations += 2;
   }
 
  private:
   bool rotation_;
+  bool orientation_;
+  Derivative d_;
+  KinematicState mid_;
+  KinematicState next_;
+  Accelerations acc_mid_;
 };
 
 /// Classical fourth-order Runge–Kutta, eq D.5.
 class RungeKutta4 final : public Scheme {
  public:
-  explicit RungeKutta4(const SchemeSettings& s) : rotation_(s.rotation) {}
+  explicit RungeKutta4(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
     diagnostics_.force_evaluations +=
-        static_cast<std::uint64_t>(runge_kutta_4_step(state, acc, dt, f, rotation_));
+        static_cast<std::uint64_t>(runge_kutta_4_step(state, acc, dt, f, rotation_, orientation_, work_));
   }
 
  private:
   bool rotation_;
+  bool orientation_;
+  RungeKutta4Workspace work_;
 };
 
 }  // namespace
 
 int runge_kutta_4_step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
-                       bool rotation) {
-  const Derivative k1 = derivative_of(state, acc);
-  KinematicState s2;
-  advance(state, 0.5 * dt, k1, rotation, s2);
-  Accelerations a2;
-  f.trial(s2, 0.5 * dt, a2);
-  const Derivative k2 = derivative_of(s2, a2);
-  KinematicState s3;
-  advance(state, 0.5 * dt, k2, rotation, s3);
-  Accelerations a3;
-  f.trial(s3, 0.5 * dt, a3);
-  const Derivative k3 = derivative_of(s3, a3);
-  KinematicState s4;
-  advance(state, dt, k3, rotation, s4);
-  Accelerations a4;
-  f.trial(s4, dt, a4);
-  const Derivative k4 = derivative_of(s4, a4);
+                       bool rotation, bool orientation, RungeKutta4Workspace& w) {
+  derivative_of(state, acc, w.k1);
+  advance(state, 0.5 * dt, w.k1, rotation, w.stage, orientation);
+  f.trial(w.stage, 0.5 * dt, w.acc_stage);
+  derivative_of(w.stage, w.acc_stage, w.k2);
+  advance(state, 0.5 * dt, w.k2, rotation, w.stage, orientation);
+  f.trial(w.stage, 0.5 * dt, w.acc_stage);
+  derivative_of(w.stage, w.acc_stage, w.k3);
+  advance(state, dt, w.k3, rotation, w.stage, orientation);
+  f.trial(w.stage, dt, w.acc_stage);
+  derivative_of(w.stage, w.acc_stage, w.k4);
 
-  Derivative sum = scaled(1.0 / 6.0, k1);
-  add_scaled(sum, 2.0 / 6.0, k2);
-  add_scaled(sum, 2.0 / 6.0, k3);
-  add_scaled(sum, 1.0 / 6.0, k4);
-  KinematicState next;
-  advance(state, dt, sum, rotation, next);
-  state = std::move(next);
+  scale(1.0 / 6.0, w.k1, w.sum);
+  add_scaled(w.sum, 2.0 / 6.0, w.k2);
+  add_scaled(w.sum, 2.0 / 6.0, w.k3);
+  add_scaled(w.sum, 1.0 / 6.0, w.k4);
+  advance(state, dt, w.sum, rotation, w.stage, orientation);
+  std::swap(state, w.stage);
   f.commit(state, dt, acc);
   return 4;
 }

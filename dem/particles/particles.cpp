@@ -13,6 +13,7 @@ void build_particles(const std::vector<ParticleInit>& inits, ParticleProperties&
   properties.inertia.resize(n);
   properties.inverse_inertia.resize(n);
   properties.charge.resize(n);
+  properties.density.resize(n);
   properties.material.resize(inits.size());
   properties.fixed.resize(inits.size());
   state.position.resize(3, n);
@@ -31,12 +32,53 @@ void build_particles(const std::vector<ParticleInit>& inits, ParticleProperties&
     properties.inverse_mass[i] = p.fixed ? 0.0 : 1.0 / m;
     properties.inverse_inertia[i] = p.fixed ? 0.0 : 1.0 / inertia;
     properties.charge[i] = p.charge;
+    properties.density[i] = p.density;
     properties.material[static_cast<std::size_t>(i)] = p.material;
     properties.fixed[static_cast<std::size_t>(i)] = p.fixed ? 1 : 0;
     state.position.col(i) = p.position;
     state.velocity.col(i) = p.velocity;
     state.angular_velocity.col(i) = p.angular_velocity;
   }
+}
+
+namespace {
+
+/// Rewrites `values` in place so that place k holds the old value at order[k].
+template <class Array>
+void permute_in_place(Array& values, std::span<const std::uint32_t> order) {
+  const Array old = values;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    values[static_cast<decltype(values.size())>(k)] = old[static_cast<decltype(values.size())>(order[k])];
+  }
+}
+
+}  // namespace
+
+void permute(Vec3Array& values, std::span<const std::uint32_t> order) {
+  const Vec3Array old = values;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    values.col(static_cast<Eigen::Index>(k)) = old.col(static_cast<Eigen::Index>(order[k]));
+  }
+}
+
+void permute(ParticleProperties& p, std::span<const std::uint32_t> order) {
+  permute_in_place(p.radius, order);
+  permute_in_place(p.effect_radius, order);
+  permute_in_place(p.mass, order);
+  permute_in_place(p.inverse_mass, order);
+  permute_in_place(p.inertia, order);
+  permute_in_place(p.inverse_inertia, order);
+  permute_in_place(p.charge, order);
+  permute_in_place(p.density, order);
+  permute_in_place(p.material, order);
+  permute_in_place(p.fixed, order);
+}
+
+void permute(KinematicState& s, std::span<const std::uint32_t> order) {
+  permute(s.position, order);
+  permute(s.velocity, order);
+  permute(s.angular_velocity, order);
+  permute_in_place(s.orientation, order);
 }
 
 Accelerations zero_accelerations(std::size_t n) {

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "dem/core/vector.hpp"
@@ -43,6 +44,7 @@ struct ParticleProperties {
   ScalarArray inertia;
   ScalarArray inverse_inertia;
   ScalarArray charge;
+  ScalarArray density;  ///< ρ [kg/m³] as given (fluid forces need it; not recomputed from m)
   std::vector<std::uint32_t> material;
   std::vector<std::uint8_t> fixed;
 
@@ -68,6 +70,14 @@ struct Accelerations {
   Vec3Array linear;
   Vec3Array angular;
 };
+
+/// Puts the spheres in a new order: place k receives the sphere now at order[k]. Arrays are
+/// rewritten in place (their storage stays where it is).
+void permute(ParticleProperties& properties, std::span<const std::uint32_t> order);
+/// Puts the spheres of a state in a new order (see permute(ParticleProperties&, …)).
+void permute(KinematicState& state, std::span<const std::uint32_t> order);
+/// Puts the spheres of a per-sphere 3-vector array in a new order.
+void permute(Vec3Array& values, std::span<const std::uint32_t> order);
 
 /// Splits initial descriptions into static properties and the initial state.
 void build_particles(const std::vector<ParticleInit>& inits, ParticleProperties& properties,

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "dem/simulation/simulation.hpp"
 
+#include <numeric>
 #include <stdexcept>
+
+#include "dem/particles/spatial_order.hpp"
 
 namespace dem {
 namespace {
@@ -21,12 +24,20 @@ Simulation::Simulation(const SimulationSetup& setup)
       field_(std::make_unique<ContactForceField>(
           props_, table_,
           ForceFieldSetup{setup.walls, setup.fields, setup.motions,
-                          setup.model.wall_lever_arm == WallLeverArm::radius})),
+                          setup.model.wall_lever_arm == WallLeverArm::radius,
+                          setup.model.pair_lever_arm == PairLeverArm::radius, setup.box,
+                          setup.neighbors, setup.threads, setup.track_energy})),
       scheme_(make_scheme(setup.scheme, setup.scheme_settings)),
-      dt_(setup.timestep) {
+      dt_(setup.timestep),
+      neighbors_(setup.neighbors) {
   if (!(dt_ > 0.0)) throw std::invalid_argument("time step must be > 0");
+  scheme_->bind(props_, setup.threads);
+  slot_of_id_.resize(props_.size());
+  std::iota(slot_of_id_.begin(), slot_of_id_.end(), 0U);
+  id_of_slot_ = slot_of_id_;
   apply_prescribed_motion();
   field_->commit(state_, 0.0, acc_);
+  builds_at_last_sort_ = field_->list_builds();
 }
 
 std::size_t Simulation::past_states_needed() const noexcept {
@@ -47,6 +58,41 @@ void Simulation::step() {
   ++steps_;
   state_.time = time();  // exact n Δt, free of accumulated rounding
   apply_prescribed_motion();
+  if (neighbors_.sort_every > 0 && props_.size() >= kMinSpheresToReorder &&
+      field_->list_builds() >= builds_at_last_sort_ + neighbors_.sort_every) {
+    reorder();
+  }
+}
+
+void Simulation::reorder() {
+  const std::vector<std::uint32_t> order = field_->spatial_order(state_);
+  dem::permute(props_, order);
+  dem::permute(state_, order);
+  if (acc_.linear.cols() == state_.position.cols()) {
+    dem::permute(acc_.linear, order);
+    dem::permute(acc_.angular, order);
+  }
+  scheme_->permute(order);
+  field_->permute(order, state_);
+  const std::vector<std::uint32_t> old_ids = id_of_slot_;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    id_of_slot_[k] = old_ids[order[k]];
+    slot_of_id_[id_of_slot_[k]] = static_cast<std::uint32_t>(k);
+  }
+  builds_at_last_sort_ = field_->list_builds();
+  ++reorders_;
+}
+
+std::size_t Simulation::bytes() const noexcept {
+  const auto matrix = [](const Vec3Array& a) { return static_cast<std::size_t>(a.size()) * sizeof(double); };
+  const auto scalars = [](const ScalarArray& a) { return static_cast<std::size_t>(a.size()) * sizeof(double); };
+  return matrix(state_.position) + matrix(state_.velocity) + matrix(state_.angular_velocity) +
+         state_.orientation.capacity() * sizeof(Quat) + matrix(acc_.linear) + matrix(acc_.angular) +
+         scalars(props_.radius) + scalars(props_.effect_radius) + scalars(props_.mass) +
+         scalars(props_.inverse_mass) + scalars(props_.inertia) + scalars(props_.inverse_inertia) +
+         scalars(props_.charge) + scalars(props_.density) +
+         props_.material.capacity() * sizeof(std::uint32_t) + props_.fixed.capacity() +
+         (slot_of_id_.capacity() + id_of_slot_.capacity()) * sizeof(std::uint32_t) + field_->bytes();
 }
 
 void Simulation::apply_prescribed_motion() {

@@ -25,10 +25,16 @@ struct SimulationSetup {
   SchemeId scheme = SchemeId::velocity_verlet;
   SchemeSettings scheme_settings;
   double timestep = 0.0;  ///< Δt [s], > 0
+  PeriodicBox box;              ///< periodic axes (none by default)
+  NeighborSettings neighbors;   ///< skin (0: a tenth of the smallest diameter), reorder interval
+  int threads = 1;              ///< OpenMP threads; results do not depend on it
+  bool track_energy = true;     ///< keep the energy ledger (energy()); off skips its arithmetic
 };
 
 /// Wires particles, pair laws, force field and scheme together and steps them. Holds no
-/// physics of its own (STYLE.md §6).
+/// physics of its own. Between steps it may reorder the spheres along a Morton curve (after a
+/// neighbour-list build, every NeighborSettings::sort_every builds): state() is then in that
+/// internal order, and slot(id) says where the sphere given as `id` in the setup now lives.
 class Simulation {
  public:
   /// Builds the run; throws ModelError when the model lacks a parameter.
@@ -53,8 +59,19 @@ class Simulation {
   [[nodiscard]] std::uint64_t steps() const noexcept { return steps_; }
   /// Time step [s].
   [[nodiscard]] double timestep() const noexcept { return dt_; }
-  /// Current state.
+  /// Current state, in the internal order (see slot()).
   [[nodiscard]] const KinematicState& state() const noexcept { return state_; }
+  /// Where the sphere that was `id` in SimulationSetup::particles lives in state().
+  [[nodiscard]] std::uint32_t slot(std::uint32_t id) const noexcept { return slot_of_id_[id]; }
+  /// The setup index of the sphere at internal place `slot`.
+  [[nodiscard]] std::uint32_t id(std::uint32_t slot) const noexcept { return id_of_slot_[slot]; }
+  /// Reorders now (tests and benchmarks; step() does it on its own schedule).
+  void reorder();
+  /// Reorders done so far.
+  [[nodiscard]] std::uint64_t reorders() const noexcept { return reorders_; }
+  /// Bytes held by the run's per-sphere arrays, contact lists and history (the core's share of
+  /// memory, counted from the containers' capacities).
+  [[nodiscard]] std::size_t bytes() const noexcept;
   /// Static particle properties.
   [[nodiscard]] const ParticleProperties& particles() const noexcept { return props_; }
   /// The pair table (mixed parameters and laws).
@@ -81,6 +98,11 @@ class Simulation {
   Accelerations acc_;
   double dt_;
   std::uint64_t steps_ = 0;
+  NeighborSettings neighbors_;
+  std::vector<std::uint32_t> slot_of_id_;
+  std::vector<std::uint32_t> id_of_slot_;
+  std::uint64_t builds_at_last_sort_ = 0;
+  std::uint64_t reorders_ = 0;
 
   void apply_prescribed_motion();
 };

@@ -12,6 +12,11 @@ std::optional<std::string> AnalyticEngine::version() const { return "closed-form
 
 Support AnalyticEngine::supports(const cases::Scene& scene) const {
   Support support;
+  if (scene.domain.any_periodic()) {
+    support.reasons.emplace_back(
+        "analytic: the closed-form solutions are for bodies in open space; a periodic box is not one");
+    return support;
+  }
   for (const auto& solver : analytic::all_solvers()) {
     auto reasons = solver->unsupported_reasons(scene);
     if (reasons.empty()) return {};
@@ -21,6 +26,7 @@ Support AnalyticEngine::supports(const cases::Scene& scene) const {
 }
 
 cases::RunResult AnalyticEngine::run(const cases::Scene& scene, const RunOptions&) const {
+  if (scene.domain.any_periodic()) throw std::invalid_argument(supports(scene).reasons.front());
   for (const auto& solver : analytic::all_solvers()) {
     if (!solver->unsupported_reasons(scene).empty()) continue;
     cases::RunResult result = solver->run(scene);

@@ -49,7 +49,7 @@ void record(const cases::Scene& scene, const dem::Simulation& sim, cases::Trace&
   const dem::KinematicState& s = sim.state();
   const dem::Vec3Array& force = sim.force_field().forces();
   for (const std::size_t i : scene.output.trace_particles) {
-    const auto c = static_cast<Eigen::Index>(i);
+    const auto c = static_cast<Eigen::Index>(sim.slot(static_cast<std::uint32_t>(i)));
     for (const dem::Vec3Array* field : {&s.position, &s.velocity, &s.angular_velocity, &force}) {
       for (Eigen::Index k = 0; k < 3; ++k) row.push_back((*field)(k, c));
     }
@@ -66,7 +66,8 @@ cases::Snapshot snapshot(const dem::Simulation& sim) {
   cases::Snapshot snap;
   snap.time = sim.time();
   const dem::KinematicState& s = sim.state();
-  for (Eigen::Index i = 0; i < s.position.cols(); ++i) {
+  for (Eigen::Index id = 0; id < s.position.cols(); ++id) {
+    const auto i = static_cast<Eigen::Index>(sim.slot(static_cast<std::uint32_t>(id)));
     snap.position.push_back({s.position(0, i), s.position(1, i), s.position(2, i)});
     snap.velocity.push_back({s.velocity(0, i), s.velocity(1, i), s.velocity(2, i)});
     snap.angular_velocity.push_back(
@@ -119,8 +120,8 @@ std::optional<std::string> InhouseEngine::version() const {
 
 Support InhouseEngine::supports(const cases::Scene&) const { return {}; }
 
-cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&) const {
-  const CoreSetup setup = core_setup(scene);
+cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions& options) const {
+  const CoreSetup setup = core_setup(scene, options.threads);
   dem::Simulation sim(setup.simulation);
   if (scene.integration.startup == dem::StartupPolicy::exact) supply_exact_past(scene, sim);
   sim.watch(watched_contacts(scene));

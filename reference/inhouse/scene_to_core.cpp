@@ -36,7 +36,7 @@ double smallest_radius(const cases::Scene& scene) {
 
 }  // namespace
 
-CoreSetup core_setup(const cases::Scene& scene) {
+CoreSetup core_setup(const cases::Scene& scene, int threads) {
   CoreSetup out;
   dem::SimulationSetup& s = out.simulation;
   for (const auto& p : scene.particles) {
@@ -57,6 +57,16 @@ CoreSetup core_setup(const cases::Scene& scene) {
                                      static_cast<std::uint32_t>(w.material)});
   }
   s.fields.gravity = to_vec(scene.gravity);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const auto a = static_cast<Eigen::Index>(k);
+    s.box.lo[a] = scene.domain.min[k];
+    s.box.hi[a] = scene.domain.max[k];
+    s.box.periodic[k] = scene.domain.periodic[k];
+  }
+  s.neighbors.skin = scene.neighbors.skin.value_or(0.0);  // 0: the core's default
+  s.neighbors.sort_every = scene.neighbors.sort_every;
+  s.threads = threads;
+  s.track_energy = scene.output.trace_energy;
   if (scene.fluid) s.fields.fluid = to_fluid(*scene.fluid);
   s.materials = scene.materials;
   s.mixing = scene.mixing;

@@ -19,8 +19,9 @@ struct CoreSetup {
   std::vector<std::string> warnings;  ///< time-step warnings, naming integration.timestep
 };
 
-/// Translates `scene` into the core's terms. Throws dem::ModelError on an incomplete model.
-CoreSetup core_setup(const cases::Scene& scene);
+/// Translates `scene` into the core's terms, run with `threads` OpenMP threads. Throws
+/// dem::ModelError on an incomplete model.
+CoreSetup core_setup(const cases::Scene& scene, int threads = 1);
 
 /// Number of steps that cover the scene's duration with time step dt (at least 1).
 std::uint64_t step_count(double duration, double dt);

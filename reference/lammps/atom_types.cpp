@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "reference/lammps/atom_types.hpp"
 
+#include <map>
+#include <tuple>
+
 #include "dem/particles/particles.hpp"
 
 namespace reference::lammps {
@@ -18,20 +21,36 @@ std::optional<double> AtomTypes::reduced_mass(std::size_t a, std::size_t b) cons
 AtomTypes classify_particles(const cases::Scene& scene) {
   AtomTypes out;
   out.type_of.reserve(scene.particles.size());
+  // Classes by (material, radius, fixed) in order of first appearance, found through a map so
+  // that a million particles classify in O(N log N).
+  std::map<std::tuple<std::size_t, double, bool>, std::size_t> index_of;
   for (const cases::ParticleSpec& p : scene.particles) {
-    std::size_t index = 0;
-    while (index < out.types.size() &&
-           !(out.types[index].material == p.material && out.types[index].radius == p.radius &&
-             out.types[index].fixed == p.fixed)) {
-      ++index;
-    }
-    if (index == out.types.size()) {
+    const auto key = std::make_tuple(p.material, p.radius, p.fixed);
+    auto it = index_of.find(key);
+    if (it == index_of.end()) {
       const double density = scene.materials.at(p.material).density;
+      it = index_of.emplace(key, out.types.size()).first;
       out.types.push_back({p.material, p.radius, p.fixed, dem::sphere_mass(density, p.radius)});
     }
-    out.type_of.push_back(index);
+    out.type_of.push_back(it->second);
   }
-  return out;
+  if (out.types.size() <= kMaxAtomTypes) return out;
+  // Too many classes: one type per (material, fixed), diameters per atom.
+  AtomTypes coarse;
+  coarse.per_atom_diameter = true;
+  std::map<std::pair<std::size_t, bool>, std::size_t> coarse_of;
+  for (const cases::ParticleSpec& p : scene.particles) {
+    const auto key = std::make_pair(p.material, p.fixed);
+    auto it = coarse_of.find(key);
+    if (it == coarse_of.end()) {
+      it = coarse_of.emplace(key, coarse.types.size()).first;
+      coarse.types.push_back({p.material, 0.0, p.fixed, 0.0});
+    }
+    coarse.type_of.push_back(it->second);
+  }
+  return coarse;
 }
+
+bool atoms_in_data_file(const cases::Scene& scene) { return scene.particles.size() > kMaxInlineAtoms; }
 
 }  // namespace reference::lammps

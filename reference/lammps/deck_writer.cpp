@@ -2,6 +2,7 @@
 #include "reference/lammps/deck_writer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -67,16 +68,46 @@ void write_header(std::string& deck, const cases::Scene& scene, const DeckSettin
                       s.steps, num(s.timestep));
   line(deck, "units", "si");
   line(deck, "atom_style", "sphere");
-  line(deck, "atom_modify", "map array sort 0 0.0  # x[i] in variables; atoms stay in id order");
+  if (atoms_in_data_file(scene)) {
+    line(deck, "atom_modify", "map array  # x[i] in variables; LAMMPS sorts atoms in memory as usual");
+  } else {
+    line(deck, "atom_modify", "map array sort 0 0.0  # x[i] in variables; atoms stay in id order");
+  }
   line(deck, "dimension", "3");
   line(deck, "boundary", "f f f");
   line(deck, "newton", "off");
   line(deck, "comm_modify", "vel yes  # granular pairs need ghost velocities");
 }
 
+/// The groups of mobile and of fixed atoms.
+void write_groups(std::string& deck, const AtomTypes& types) {
+  if (const std::string mobile = types_where(types, false); !mobile.empty()) {
+    line(deck, "group", "tr_mobile type " + mobile);
+  }
+  if (const std::string fixed = types_where(types, true); !fixed.empty()) {
+    line(deck, "group", "tr_fixed type " + fixed);
+  }
+}
+
 /// Box, atom types, atoms with diameter, density, velocities; mobile and fixed groups.
 void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
-                 double duration) {
+                 double duration, const DeckSettings& s) {
+  if (atoms_in_data_file(scene)) {
+    deck += fmt::format("# {} atoms (more than {}): box, types, diameters, densities, positions and velocities "
+                        "come from the data file\n",
+                        scene.particles.size(), kMaxInlineAtoms);
+    if (types.per_atom_diameter) {
+      deck += fmt::format("# more than {} (material, radius) classes: one atom type per material, diameter per atom\n",
+                          kMaxAtomTypes);
+    }
+    for (std::size_t t = 0; t < types.types.size(); ++t) {
+      deck += fmt::format("#   type {}: material '{}', {}\n", t + 1, ascii(scene.materials.at(types.types[t].material).name),
+                          types.types[t].fixed ? "fixed" : "mobile");
+    }
+    line(deck, "read_data", s.data_file);
+    write_groups(deck, types);
+    return;
+  }
   const Box box = simulation_box(scene, duration);
   deck += "# box: the bodies' bounding box widened by 2 v_max T + |g| T^2 + 2 r_max per side\n";
   line(deck, "region", fmt::format("tr_box block {} {} {} {} {} {} units box", num(box.low[0]),
@@ -109,12 +140,7 @@ void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& 
                      num(p.velocity[1]), num(p.velocity[2]), num(p.angular_velocity[0]),
                      num(p.angular_velocity[1]), num(p.angular_velocity[2])));
   }
-  if (const std::string mobile = types_where(types, false); !mobile.empty()) {
-    line(deck, "group", "tr_mobile type " + mobile);
-  }
-  if (const std::string fixed = types_where(types, true); !fixed.empty()) {
-    line(deck, "group", "tr_fixed type " + fixed);
-  }
+  write_groups(deck, types);
 }
 
 /// `pair_style granular`, one `pair_coeff` per type pair, neighbour settings.
@@ -155,6 +181,7 @@ void write_walls(std::string& deck, const cases::Scene& scene, const AtomTypes& 
       if (!plane) continue;  // supports() reports it
       PairContext context;
       context.reduced_mass = type.mass;
+      context.per_atom_masses = types.per_atom_diameter;
       context.poisson_ratio = written_poisson(scene, type.material, wall.material);
       context.wall = true;
       const GranularCoeff coeff =
@@ -174,10 +201,14 @@ void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& 
                  const DeckSettings& s) {
   const bool any_mobile = !types_where(types, false).empty();
   const bool any_fixed = !types_where(types, true).empty();
-  deck += "# the pair forces alone, stored before gravity is added and frozen atoms are zeroed\n";
-  line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
-  write_walls(deck, scene, types);
-  if (!scene.walls.empty()) {
+  if (s.timing_only) {
+    write_walls(deck, scene, types);
+  } else {
+    deck += "# the pair forces alone, stored before gravity is added and frozen atoms are zeroed\n";
+    line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
+    write_walls(deck, scene, types);
+  }
+  if (!s.timing_only && !scene.walls.empty()) {
     deck += "# pair + wall forces (the wall force is the difference of the two stores)\n";
     line(deck, "fix", fmt::format("{} all store/force", kContactForceFix));
   }
@@ -249,6 +280,7 @@ PairContext pair_context(const cases::Scene& scene, const AtomTypes& types, std:
                          std::size_t b) {
   PairContext c;
   c.reduced_mass = types.reduced_mass(a, b);
+  c.per_atom_masses = types.per_atom_diameter;
   c.poisson_ratio = written_poisson(scene, types.types[a].material, types.types[b].material);
   return c;
 }
@@ -261,16 +293,47 @@ std::string write_deck(const cases::Scene& scene, const DeckSettings& settings) 
   const AtomTypes types = classify_particles(scene);
   std::string deck;
   write_header(deck, scene, settings);
-  write_atoms(deck, scene, types, static_cast<double>(settings.steps) * settings.timestep);
+  write_atoms(deck, scene, types, static_cast<double>(settings.steps) * settings.timestep, settings);
   write_pairs(deck, scene, types);
   write_fixes(deck, scene, types, settings);
-  write_outputs(deck, scene, types, settings);
+  if (settings.timing_only) {
+    line(deck, "thermo", fmt::format("{}", std::max<std::uint64_t>(settings.steps, 1)));
+  } else {
+    write_outputs(deck, scene, types, settings);
+  }
   if (!settings.extra_commands.empty()) {
     deck += "# extra commands\n" + settings.extra_commands;
     if (deck.back() != '\n') deck += '\n';
   }
   line(deck, "run", fmt::format("{}", settings.steps));
   return deck;
+}
+
+std::string write_atom_data(const cases::Scene& scene, const DeckSettings& settings) {
+  const AtomTypes types = classify_particles(scene);
+  const Box box = simulation_box(scene, static_cast<double>(settings.steps) * settings.timestep);
+  std::string out = fmt::format("dem-workbench atoms of case '{}' (generated, do not edit)\n\n{} atoms\n{} atom types\n\n",
+                                ascii(scene.name), scene.particles.size(), types.types.size());
+  constexpr std::array<std::string_view, 3> kAxes{"x", "y", "z"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    out += fmt::format("{} {} {}lo {}hi\n", num(box.low[k]), num(box.high[k]), kAxes[k], kAxes[k]);
+  }
+  out += "\nAtoms # sphere\n\n";
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, types.lammps_type(i), num(2.0 * p.radius),
+                       num(scene.materials.at(p.material).density), num(p.position[0]), num(p.position[1]),
+                       num(p.position[2]));
+  }
+  out += "\nVelocities\n\n";
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    const cases::Vector3 zero{};
+    const cases::Vector3& v = p.fixed ? zero : p.velocity;
+    const cases::Vector3& w = p.fixed ? zero : p.angular_velocity;
+    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, num(v[0]), num(v[1]), num(v[2]), num(w[0]), num(w[1]), num(w[2]));
+  }
+  return out;
 }
 
 }  // namespace reference::lammps

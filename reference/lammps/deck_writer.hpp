@@ -16,7 +16,10 @@ struct DeckSettings {
   std::uint64_t steps = 0;                  ///< steps to run (reference::step_count)
   std::string trace_file = "trace.txt";     ///< `fix print` output, relative to the run dir
   std::string snapshot_file = "snapshots.dump";  ///< `dump custom` output
+  std::string data_file = "atoms.data";     ///< atoms of a large scene (atoms_in_data_file), read by `read_data`
   std::string extra_commands;               ///< inserted just before `run` (diagnostics, tests)
+  /// Physics only, for timing (`demwb bench`): no force stores, trace or snapshots.
+  bool timing_only = false;
 };
 
 /// ν written into Hertz-family coefficients of a contact between two materials: the first one's
@@ -40,5 +43,10 @@ std::string wall_fix_id(std::size_t wall, std::size_t lammps_type);
 /// prescribed motion by `fix move variable`; snapshots by `dump custom` at snapshot_steps().
 /// Throws std::invalid_argument when the model has a sub-model LAMMPS cannot express.
 std::string write_deck(const cases::Scene& scene, const DeckSettings& settings);
+
+/// The LAMMPS data file of a large scene (atoms_in_data_file): the box of simulation_box(), and
+/// per atom its type, diameter, density, position, velocity and spin (atom_style sphere), every
+/// number with 17 significant digits. Atom i + 1 is particle i.
+std::string write_atom_data(const cases::Scene& scene, const DeckSettings& settings);
 
 }  // namespace reference::lammps

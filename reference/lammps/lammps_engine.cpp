@@ -11,6 +11,7 @@
 #include "dem/contact/pair_table.hpp"
 #include "dem/core/model_error.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
+#include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/dump_parser.hpp"
 #include "reference/lammps/lammps_runner.hpp"
@@ -60,6 +61,22 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     for (auto& reason : lammps::unmapped_wall(scene.walls[w], w)) s.reasons.push_back(reason);
   }
+  if (scene.model.pair_lever_arm == dem::PairLeverArm::radius) {
+    s.reasons.emplace_back(
+        "LAMMPS driver: pair_lever_arm = 'radius' is gran/hooke/history's convention; the driver writes "
+        "pair granular, whose torque lever arm is r − δ/2 (its contact-point velocity uses r)");
+  }
+  if (scene.model.tangential_history == dem::TangentialHistory::increment_project) {
+    s.reasons.emplace_back(
+        "LAMMPS driver: tangential_history = 'increment_project' is gran/hooke/history's rule; the "
+        "driver writes pair granular, which rotates and rescales the slip (project_rescale)");
+  }
+  if (scene.domain.any_periodic()) {
+    s.reasons.emplace_back(
+        "LAMMPS driver: periodic boundaries are not mapped yet: the trace formulas read wrapped "
+        "positions x[i] and plain differences x[p] − x[q], which break across the box (a mapping "
+        "needs unwrapped xu and minimum-image pair formulas)");
+  }
   if (scene.fluid) {
     s.reasons.emplace_back(
         "LAMMPS driver: fluid forces (drag, buoyancy, plug flow) are not mapped (LAMMPS "
@@ -79,11 +96,12 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
     const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
     if (table.material_count() > 0) {
       // The model choice is global, so every material pair has the same sub-model types.
-      for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0))) {
+      const bool per_atom = lammps::classify_particles(scene).per_atom_diameter;
+      for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0), false, per_atom)) {
         s.reasons.push_back(std::move(reason));
       }
       if (!scene.walls.empty()) {
-        for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0), true)) {
+        for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0), true, per_atom)) {
           if (std::find(s.reasons.begin(), s.reasons.end(), reason) == s.reasons.end()) {
             s.reasons.push_back(std::move(reason));
           }
@@ -108,6 +126,9 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
 
   const std::filesystem::path dir = lammps::make_run_directory(options.work_dir);
   support::write_file(dir / lammps::kDeckFile, deck);
+  if (lammps::atoms_in_data_file(scene)) {
+    support::write_file(dir / settings.data_file, lammps::write_atom_data(scene, settings));
+  }
   const lammps::LammpsRunOutcome outcome =
       lammps::run_lammps(options_.program, dir, options.timeout_s);
   if (!outcome.ok) return failure(outcome.reason, outcome.log_tail);

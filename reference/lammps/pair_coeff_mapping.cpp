@@ -165,6 +165,12 @@ SlotProblem map_damping(const dem::PairLaw& law, const PairContext& c, GranularC
               return set_damping(out, "velocity", 0.0,
                                  "eta = 0 (both types fixed: the pair never moves)");
             }
+            if (hooke && c.per_atom_masses) {
+              return std::string(
+                  "LAMMPS driver: damping 'restitution' on a linear spring needs eta from each pair's m*; "
+                  "with more than 16 size classes the deck has one atom type per material, so no pair_coeff "
+                  "can carry it (use damping 'lammps_mass_velocity', 'lammps_velocity' or a Hertz normal)");
+            }
             if (hooke) {
               const double k = out.normal_elastic.at(0);
               const double eta =
@@ -279,11 +285,12 @@ std::vector<std::string> translate(const dem::PairLaw& law, const PairContext& c
 
 }  // namespace
 
-std::vector<std::string> unmapped_sub_models(const dem::PairLaw& law, bool wall) {
+std::vector<std::string> unmapped_sub_models(const dem::PairLaw& law, bool wall, bool per_atom_masses) {
   GranularCoeff ignored;
   PairContext c;
   c.reduced_mass = 1.0;
   c.wall = wall;
+  c.per_atom_masses = per_atom_masses;
   return translate(law, c, ignored);
 }
 

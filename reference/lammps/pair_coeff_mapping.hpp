@@ -35,11 +35,16 @@ struct PairContext {
   /// For `fix wall/gran granular`: E_in = 2(1 − ν)E* (this build's wall reads
   /// E* = E/(2(1 − ν)), lammps-notes B3); for pair_coeff E_in = 2(1 − ν²)E*.
   bool wall = false;
+  /// The types hold atoms of many masses (AtomTypes::per_atom_diameter): a coefficient that
+  /// depends on m* cannot be written, and the mapping says so instead of guessing.
+  bool per_atom_masses = false;
 };
 
 /// One reason per sub-model of `law` that the LAMMPS driver cannot express (for a wall when
-/// `wall`), e.g. "LAMMPS driver: rolling model 'constant_torque' ..."; empty when all are mapped.
-std::vector<std::string> unmapped_sub_models(const dem::PairLaw& law, bool wall = false);
+/// `wall`; with `per_atom_masses` when the types hold atoms of many masses), e.g. "LAMMPS driver:
+/// rolling model 'constant_torque' ..."; empty when all are mapped.
+std::vector<std::string> unmapped_sub_models(const dem::PairLaw& law, bool wall = false,
+                                             bool per_atom_masses = false);
 
 /// Translates the law of one type pair (or particle type against a wall). Throws
 /// std::invalid_argument with the reasons of unmapped_sub_models when a sub-model is not mapped.

@@ -10,6 +10,18 @@ std::vector<std::string> unsupported_scene_features(const cases::Scene& scene) {
   if (scene.fluid) {
     reasons.emplace_back("YADE driver: fluid forces (drag, buoyancy, pressure gradient) are not mapped");
   }
+  if (scene.model.pair_lever_arm != dem::PairLeverArm::contact_point ||
+      scene.model.tangential_history != dem::TangentialHistory::project_rescale) {
+    reasons.emplace_back(
+        "YADE driver: pair_lever_arm and tangential_history other than the defaults are LAMMPS "
+        "gran/hooke/history conventions, not mapped onto YADE's laws");
+  }
+  if (scene.domain.any_periodic()) {
+    reasons.emplace_back(
+        "YADE driver: periodic boundaries are not mapped: YADE's periodic cell (O.periodic) wraps all "
+        "three axes at once, so a box periodic along some axes only cannot be expressed, and the driver "
+        "does not map the fully periodic cell yet");
+  }
   const auto& ps = scene.particles;
   if (std::any_of(ps.begin(), ps.end(), [](const auto& p) { return p.charge != 0.0; })) {
     reasons.emplace_back("YADE driver: electric charges (Coulomb forces) are not mapped");

@@ -23,6 +23,14 @@ namespace dem::laws {
   return projected * (displacement.norm() / projected_norm);
 }
 
+/// The part of a stored displacement ς that lies in the tangent plane with unit normal n,
+/// ς − (ς·n) n, without rescaling (LAMMPS gran/hooke/history shear rule: |ς| shrinks by O(θ²)
+/// when the normal turns by θ).
+[[nodiscard]] inline Vec3 project_onto_tangent_plane(const Vec3& displacement,
+                                                     const Vec3& normal) noexcept {
+  return displacement - displacement.dot(normal) * normal;
+}
+
 /// Result of a spring–dashpot–slider: force, stored displacement and the dissipated work.
 struct SpringSliderResult {
   Vec3 force = Vec3::Zero();         ///< −k ς − γ v, or its Coulomb-capped value [N]

@@ -26,6 +26,7 @@ struct ContactPolicies {
   FrictionLimit friction_limit = FrictionLimit::total;
   JkrRupture jkr_rupture = JkrRupture::displacement;
   bool contact_at_zero_overlap = false;  ///< δ = 0 counts as contact (ModelChoice)
+  TangentialHistory tangential_history = TangentialHistory::project_rescale;
 };
 
 /// Everything a sub-model may read about one contact at one evaluation.

@@ -11,7 +11,8 @@
 namespace dem {
 
 /// The spring–dashpot–Coulomb tangential response shared by the history-based tangential
-/// sub-models: the committed slip carried into the current tangent plane plus u_t·elapsed
+/// sub-models: the committed slip carried into the current tangent plane (by the policy's
+/// TangentialHistory rule) plus u_t·elapsed
 /// (never accumulated in place, so trial evaluations leave the committed slip untouched),
 /// F = −k ς − η_t u_t capped at μ·basis, slip truncated when capped. Writes next.tangential_slip.
 [[nodiscard]] inline TangentialResponse spring_coulomb_response(double stiffness, double friction,
@@ -20,7 +21,10 @@ namespace dem {
                                                                 const TangentialInput& t_in,
                                                                 ContactHistory& next) noexcept {
   const Vec3& u_t = in.g.tangential_velocity;
-  const Vec3 carried = laws::carry_into_tangent_plane(in.committed.tangential_slip, in.g.normal);
+  const Vec3 carried =
+      in.policies.tangential_history == TangentialHistory::increment_project
+          ? laws::project_onto_tangent_plane(in.committed.tangential_slip, in.g.normal)
+          : laws::carry_into_tangent_plane(in.committed.tangential_slip, in.g.normal);
   const double eta_t = damping_ratio * t_in.damping_coefficient;
   const laws::SpringSliderResult r = laws::spring_slider(
       stiffness, eta_t, friction * t_in.limit_basis, carried, u_t, in.elapsed);

@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: MIT
+// `demwb bench`: the core and LAMMPS timed on the same physics, side by side in one run.
+#include <cstdio>
+#include <functional>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "app/cli.hpp"
+#include "app/options.hpp"
+#include "bench/bench_result.hpp"
+#include "bench/box_scene.hpp"
+#include "bench/chute_scene.hpp"
+#include "bench/core_run.hpp"
+#include "bench/lammps_run.hpp"
+#include "cases/case_loader.hpp"
+#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/lammps/deck_writer.hpp"
+#include "reports/case_outputs.hpp"
+#include "support/text_file.hpp"
+
+namespace app {
+namespace {
+
+namespace po = boost::program_options;
+
+/// What the command line asked for.
+struct BenchOptions {
+  std::string scene;
+  bool inhouse = true;
+  bool lammps = true;
+  int threads = 1;
+  int ranks = 1;
+  std::optional<std::uint64_t> steps;
+  std::size_t particles = 10000;
+  std::string chute_dir;
+  double timeout_s = 3600.0;
+  int repeat = 1;
+  std::filesystem::path out;
+};
+
+/// Runs LAMMPS and the core one after the other, `o.repeat` times (a LAMMPS failure ends it).
+void alternate(const BenchOptions& o, bench::BenchResult& r, const std::function<bench::LammpsRun()>& run_lammps,
+               const std::function<bench::CoreRun()>& run_core) {
+  for (int k = 0; k < o.repeat; ++k) {
+    if (run_lammps) {
+      r.lammps_runs.push_back(run_lammps());
+      if (r.lammps_runs.back().status != "ok") break;
+    }
+    if (run_core) r.core_runs.push_back(run_core());
+    if (o.repeat > 1) std::fprintf(stderr, "bench: repetition %d of %d done\n", k + 1, o.repeat);
+  }
+  if (run_core && r.core_runs.empty()) r.core_runs.push_back(run_core());
+  bench::choose_medians(r);
+}
+
+/// The in-house and LAMMPS runs of LAMMPS's chute benchmark, with the step-100 energy checks.
+bench::BenchResult bench_chute(const BenchOptions& o) {
+  const auto dir = bench::find_chute_dir(o.chute_dir);
+  if (!dir) {
+    throw std::invalid_argument(
+        "the chute benchmark needs in.chute and data.chute (LAMMPS's bench/ files, not shipped with "
+        "Debian's package): pass --chute-dir DIR or set DEMWB_CHUTE_DIR");
+  }
+  const std::uint64_t steps = o.steps.value_or(1000);
+  if (steps < 100) throw std::invalid_argument("--steps: the chute deck runs 100 steps itself; ask for 100 or more");
+  bench::BenchResult r;
+  r.scene = "chute";
+  r.description = fmt::format(
+      "LAMMPS's granular benchmark in.chute ({}): 32,000 spheres, gran/hooke/history, frozen rough base, "
+      "gravity tilted 26°, periodic in x and y. LAMMPS runs the deck unmodified (a wrapper includes it and "
+      "adds `run` for steps past its own 100); the core runs the same scene with LAMMPS's numerics.",
+      dir->string());
+  r.steps = steps;
+  const bench::LammpsData data = bench::read_lammps_data(*dir / "data.chute");
+  r.particles = data.atoms.size();
+  std::function<bench::LammpsRun()> run_lammps;
+  std::function<bench::CoreRun()> run_core;
+  if (o.lammps) {
+    std::string deck = fmt::format("# dem-workbench: LAMMPS's own chute benchmark, unmodified\ninclude {}\n",
+                                   (*dir / "in.chute").string());
+    if (steps > 100) deck += fmt::format("run {}\n", steps - 100);
+    run_lammps = [&o, deck, dir] {
+      return bench::run_lammps_bench("lmp", deck, o.out / "lammps", o.ranks, o.timeout_s, {*dir / "data.chute"});
+    };
+  }
+  if (o.inhouse) {
+    run_core = [&o, &data, steps] {
+      const std::vector<std::uint64_t> at{0, 100};
+      return bench::run_core(bench::chute_setup(data, o.threads), steps, at);
+    };
+  }
+  alternate(o, r, run_lammps, run_core);
+  if (o.inhouse) {
+    const bench::ChuteReference ref;
+    const auto lammps_value = [&](std::uint64_t step, const char* column) -> std::string {
+      if (!r.lammps || r.lammps->status != "ok") return "";
+      for (const auto& row : r.lammps->log.thermo) {
+        if (row.step == step && row.values.count(column) != 0) return bench::lammps_digits(row.values.at(column));
+      }
+      return "";
+    };
+    for (const auto& [step, e] : r.core->energies) {
+      if (step != 100) continue;
+      for (const auto& [name, column, value, expected] :
+           {std::tuple{"KinEng at step 100", "KinEng", e.translational, ref.kinetic_energy},
+            std::tuple{"c_1 (rotational energy) at step 100", "c_1", e.rotational, ref.rotational_energy}}) {
+        bench::EnergyCheck c{name, bench::lammps_digits(value), bench::lammps_digits(expected),
+                             lammps_value(step, column), false};
+        c.match = c.core == c.reference && (c.lammps.empty() || c.lammps == c.core);
+        r.checks.push_back(c);
+      }
+    }
+    r.notes.push_back(fmt::format("core: {} neighbour-list builds in {} steps, {} Morton reorders; at the end {} "
+                                  "listed pairs, {} interacting",
+                                  r.core->list_builds, steps, r.core->reorders, r.core->list_entries,
+                                  r.core->interacting_pairs));
+  }
+  return r;
+}
+
+/// The `box` scene (or a case file's scene) on the core and on LAMMPS through its driver.
+bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene, std::uint64_t steps) {
+  bench::BenchResult r;
+  r.scene = o.scene;
+  r.description = scene.description.empty() ? scene.name : scene.description;
+  r.steps = steps;
+  r.particles = scene.particles.size();
+  const reference::CoreSetup setup = reference::core_setup(scene, o.threads);
+  std::function<bench::LammpsRun()> run_lammps;
+  std::function<bench::CoreRun()> run_core;
+  if (o.lammps) {
+    reference::lammps::DeckSettings settings;
+    settings.timestep = setup.simulation.timestep;
+    settings.steps = steps;
+    settings.timing_only = true;
+    std::vector<bench::DeckFile> files;
+    try {
+      const std::string deck = reference::lammps::write_deck(scene, settings);
+      if (reference::lammps::atoms_in_data_file(scene)) {
+        files.push_back({settings.data_file, reference::lammps::write_atom_data(scene, settings)});
+      }
+      run_lammps = [&o, deck, files] {
+        return bench::run_lammps_bench("lmp", deck, o.out / "lammps", o.ranks, o.timeout_s, {}, files);
+      };
+    } catch (const std::invalid_argument& e) {
+      r.lammps = bench::LammpsRun{};
+      r.lammps->status = "n/a";
+      r.lammps->reason = e.what();
+    }
+  }
+  dem::SimulationSetup core = setup.simulation;
+  core.scheme_settings.orientation = false;  // LAMMPS' atom_style sphere keeps none either
+  core.track_energy = scene.output.trace_energy;
+  if (o.inhouse) run_core = [core, steps] { return bench::run_core(core, steps, {}); };
+  alternate(o, r, run_lammps, run_core);
+  if (o.inhouse) {
+    r.notes.push_back(fmt::format("core: {} neighbour-list builds in {} steps, {} Morton reorders; Δt = {:.3g} s",
+                                  r.core->list_builds, steps, r.core->reorders, setup.simulation.timestep));
+  }
+  return r;
+}
+
+}  // namespace
+
+int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
+  po::options_description opts("options");
+  opts.add_options()
+      ("engines", po::value<std::vector<std::string>>()->multitoken(), "engines to time (default inhouse,lammps)")
+      ("threads", po::value<int>()->default_value(1), "OpenMP threads of the core")
+      ("ranks", po::value<int>()->default_value(1), "MPI ranks of LAMMPS (mpirun -np N)")
+      ("steps", po::value<std::uint64_t>(), "time steps (chute: 1000, box: 200, a case: its duration)")
+      ("particles", po::value<std::size_t>()->default_value(10000), "spheres of the box scene")
+      ("chute-dir", po::value<std::string>(), "where in.chute and data.chute live")
+      ("timeout", po::value<double>()->default_value(3600.0), "seconds before a LAMMPS run is killed")
+      ("repeat", po::value<int>()->default_value(1), "run both engines this many times, alternating; report medians")
+      ("output,o", po::value<std::string>(), "output directory (default out/bench-<scene>)");
+  const auto vm = parse_command(
+      args,
+      "usage: demwb bench chute|box|CASE.toml [--engines inhouse,lammps] [--threads N] [--ranks N] [--steps S]\n"
+      "                   [--particles N] [-o DIR]",
+      opts, {"scene"});
+  if (!vm) return kExitOk;
+  BenchOptions o;
+  o.scene = (*vm)["scene"].as<std::string>();
+  if (vm->count("engines") != 0) {
+    const std::vector<std::string> names = split_names((*vm)["engines"].as<std::vector<std::string>>());
+    o.inhouse = o.lammps = false;
+    for (const std::string& n : names) {
+      if (n == "inhouse") {
+        o.inhouse = true;
+      } else if (n == "lammps") {
+        o.lammps = true;
+      } else {
+        throw std::invalid_argument(fmt::format("--engines: '{}' cannot be benchmarked (known: inhouse, lammps)", n));
+      }
+    }
+  }
+  o.threads = (*vm)["threads"].as<int>();
+  o.ranks = (*vm)["ranks"].as<int>();
+  if (o.threads < 1 || o.threads > 1024) throw std::invalid_argument("--threads must be between 1 and 1024");
+  if (o.ranks < 1 || o.ranks > 1024) throw std::invalid_argument("--ranks must be between 1 and 1024");
+  if (vm->count("steps") != 0) o.steps = (*vm)["steps"].as<std::uint64_t>();
+  o.particles = (*vm)["particles"].as<std::size_t>();
+  if (o.particles < 1 || o.particles > 100'000'000) throw std::invalid_argument("--particles must be between 1 and 1e8");
+  if (vm->count("chute-dir") != 0) o.chute_dir = (*vm)["chute-dir"].as<std::string>();
+  o.timeout_s = (*vm)["timeout"].as<double>();
+  o.repeat = (*vm)["repeat"].as<int>();
+  if (o.repeat < 1 || o.repeat > 100) throw std::invalid_argument("--repeat must be between 1 and 100");
+  o.out = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())
+                                   : std::filesystem::path("out/bench-" + std::filesystem::path(o.scene).stem().string());
+
+  bench::BenchResult result;
+  if (o.scene == "chute") {
+    result = bench_chute(o);
+  } else if (o.scene == "box") {
+    const std::uint64_t steps = o.steps.value_or(200);
+    result = bench_scene(o, bench::box_scene(o.particles, steps), steps);
+  } else if (o.scene.ends_with(".toml")) {
+    const cases::Scene scene = cases::load_case(o.scene);
+    const std::uint64_t steps =
+        o.steps.value_or(reference::step_count(scene.integration.duration, reference::core_setup(scene).simulation.timestep));
+    result = bench_scene(o, scene, steps);
+    result.scene = scene.name;
+  } else {
+    throw std::invalid_argument(fmt::format("unknown bench scene '{}' (known: chute, box, or a case file *.toml)", o.scene));
+  }
+  const std::string command = reports::reproduce_command(inv.argc, inv.argv);
+  std::filesystem::create_directories(o.out);
+  support::write_file(o.out / "bench.json", bench::bench_json(result).dump(2) + "\n");
+  support::write_file(o.out / "report.md", bench::bench_markdown(result, command));
+  support::write_file(o.out / "command.txt", command + "\n");
+  std::cout << bench::bench_table(result) << "wrote " << (o.out / "bench.json").string() << " and "
+            << (o.out / "report.md").string() << "\n";
+  return result.ok() ? kExitOk : kExitFailed;
+}
+
+}  // namespace app

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "bench/core_run.hpp"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace bench {
+
+double peak_rss_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) * 1024.0;
+}
+
+CoreRun run_core(const dem::SimulationSetup& setup, std::uint64_t steps,
+                 std::span<const std::uint64_t> energy_steps) {
+  dem::Simulation sim(setup);
+  CoreRun run;
+  run.threads = setup.threads;
+  run.particles = setup.particles.size();
+  run.steps = steps;
+  const auto sample = [&](std::uint64_t n) {
+    if (std::find(energy_steps.begin(), energy_steps.end(), n) != energy_steps.end()) {
+      run.energies.emplace_back(n, all_kinetic_energy(sim));
+    }
+  };
+  const dem::LoopTiming before = sim.force_field().timing();
+  const std::uint64_t builds = sim.force_field().list_builds();
+  sample(0);
+  const auto start = std::chrono::steady_clock::now();
+  for (std::uint64_t n = 1; n <= steps; ++n) {
+    sim.step();
+    sample(n);
+  }
+  run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.particle_steps_per_s = static_cast<double>(run.particles) * static_cast<double>(steps) / run.wall_s;
+  run.bytes = sim.bytes();
+  run.peak_rss_bytes = peak_rss_bytes();
+  const dem::LoopTiming& after = sim.force_field().timing();
+  run.timing = {after.neighbor_build - before.neighbor_build, after.pair_loop - before.pair_loop,
+                after.sphere_loop - before.sphere_loop, after.other - before.other};
+  run.list_builds = sim.force_field().list_builds() - builds;
+  run.list_entries = sim.force_field().neighbors().size();
+  run.interacting_pairs = sim.force_field().interacting_pairs();
+  run.reorders = sim.reorders();
+  return run;
+}
+
+}  // namespace bench

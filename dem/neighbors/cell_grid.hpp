@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dem/core/vector.hpp"
+#include "dem/domain/periodic_box.hpp"
+#include "dem/neighbors/packed_sphere.hpp"
+
+namespace dem {
+
+/// An axis-aligned grid of cubic-ish cells over the spheres of one size class (thesis appendix
+/// B.1, "spatial zoning"), as a CSR table cell → member spheres in increasing index order.
+/// Along a periodic axis the grid spans the box exactly; along the others it spans the spheres'
+/// bounding box, and coordinates outside it fall in the end cells.
+class CellGrid {
+ public:
+  /// Bins `members` (indices into `spheres`) into cells with edges ≥ `min_edge` over the region
+  /// [lo, hi] (the box along periodic axes). The cell count is capped near 2 per member plus 64
+  /// (edges grow instead), so sparse scenes do not allocate empty space.
+  void assign(std::span<const PackedSphere> spheres, std::span<const std::uint32_t> members,
+              const Vec3& lo, const Vec3& hi, const PeriodicBox& box, double min_edge);
+
+  /// Cell coordinates of a point (clamped into the grid).
+  [[nodiscard]] std::array<int, 3> coordinates(double x, double y, double z) const noexcept;
+  /// Linear index of cell coordinates.
+  [[nodiscard]] std::size_t index(int cx, int cy, int cz) const noexcept {
+    return (static_cast<std::size_t>(cz) * static_cast<std::size_t>(dims_[1]) +
+            static_cast<std::size_t>(cy)) * static_cast<std::size_t>(dims_[0]) +
+           static_cast<std::size_t>(cx);
+  }
+  /// The spheres in cell `c`.
+  [[nodiscard]] std::span<const std::uint32_t> cell(std::size_t c) const noexcept {
+    return {members_.data() + start_[c], members_.data() + start_[c + 1]};
+  }
+  /// Cells per axis.
+  [[nodiscard]] const std::array<int, 3>& dims() const noexcept { return dims_; }
+  /// Cell edge per axis [m].
+  [[nodiscard]] const Vec3& edge() const noexcept { return edge_; }
+  /// Bytes held.
+  [[nodiscard]] std::size_t bytes() const noexcept {
+    return (start_.capacity() + members_.capacity()) * sizeof(std::uint32_t);
+  }
+
+ private:
+  Vec3 origin_ = Vec3::Zero();
+  Vec3 edge_ = Vec3::Ones();
+  std::array<int, 3> dims_{1, 1, 1};
+  std::vector<std::uint32_t> start_;
+  std::vector<std::uint32_t> members_;
+  std::vector<std::uint32_t> cell_of_;  // scratch: cell of each member
+  std::vector<std::uint32_t> cursor_;   // scratch: next free slot per cell
+};
+
+}  // namespace dem

@@ -1,0 +1,295 @@
+// SPDX-License-Identifier: MIT
+#include "dem/neighbors/neighbor_list.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <omp.h>
+
+namespace dem {
+namespace {
+
+/// Owners per build chunk: chunks, not threads, split the work, so the list is the same for
+/// any thread count.
+constexpr std::uint32_t kChunk = 512;
+
+/// Index of the entry with partner j among `partners`, sorted by partner, or −1.
+std::int64_t find_partner(std::span<const PartnerCode> partners, std::uint32_t base, std::uint32_t j) {
+  const auto it = std::lower_bound(partners.begin(), partners.end(), j,
+                                   [](PartnerCode e, std::uint32_t v) { return (e & kPartnerMask) < v; });
+  if (it == partners.end() || (*it & kPartnerMask) != j) return -1;
+  return static_cast<std::int64_t>(base) + (it - partners.begin());
+}
+
+}  // namespace
+
+SizeClasses size_classes(std::span<const double> half_reach) {
+  constexpr int kMaxClasses = 8;
+  SizeClasses out;
+  out.of.resize(half_reach.size());
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const double h : half_reach) smallest = std::min(smallest, h);
+  int used = 1;
+  for (std::size_t i = 0; i < half_reach.size(); ++i) {
+    int c = 0;
+    double bound = 2.0 * smallest;
+    while (c + 1 < kMaxClasses && half_reach[i] >= bound) {
+      ++c;
+      bound *= 2.0;
+    }
+    out.of[i] = static_cast<std::uint8_t>(c);
+    used = std::max(used, c + 1);
+  }
+  out.max_half_reach.assign(static_cast<std::size_t>(used), 0.0);
+  for (std::size_t i = 0; i < half_reach.size(); ++i) {
+    double& m = out.max_half_reach[out.of[i]];
+    m = std::max(m, half_reach[i]);
+  }
+  return out;
+}
+
+void AxisCells::fill(int c, int dims, double edge, double reach, bool periodic) {
+  cell.clear();
+  gap.clear();
+  const int w = static_cast<int>(std::ceil(reach / edge));
+  if (periodic && 2 * w + 1 > dims) {
+    // The stencil wraps onto itself: visit every cell once, at its nearest periodic offset.
+    for (int t = 0; t < dims; ++t) {
+      int d = (t - c) % dims;
+      if (d < 0) d += dims;
+      if (2 * d > dims) d -= dims;
+      cell.push_back(t);
+      gap.push_back(std::max(std::abs(d) - 1, 0) * edge);
+    }
+    return;
+  }
+  for (int d = -w; d <= w; ++d) {
+    int t = c + d;
+    if (periodic) {
+      t %= dims;
+      if (t < 0) t += dims;
+    } else if (t < 0 || t >= dims) {
+      continue;
+    }
+    cell.push_back(t);
+    gap.push_back(std::max(std::abs(d) - 1, 0) * edge);
+  }
+}
+
+void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint32_t> new_of_old) {
+  const std::span<const PackedSphere> spheres = in.spheres;
+  const PeriodicBox& box = *in.box;
+  const auto n = static_cast<std::uint32_t>(spheres.size());
+  ++builds_;
+
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (const PackedSphere& s : spheres) {
+    lo = lo.cwiseMin(Vec3(s.x, s.y, s.z));
+    hi = hi.cwiseMax(Vec3(s.x, s.y, s.z));
+  }
+  if (n == 0) lo = hi = Vec3::Zero();
+
+  const std::size_t classes = in.class_half_reach.size();
+  class_members_.resize(classes);
+  for (auto& m : class_members_) m.clear();
+  for (std::uint32_t i = 0; i < n; ++i) class_members_[in.size_class[i]].push_back(i);
+  double largest = 0.0;
+  for (const double h : in.class_half_reach) largest = std::max(largest, h);
+  const double skin = in.skin;
+  slabs_.assign(spheres, lo, hi, box, 2.0 * largest + skin);
+  // Grid (b, c), c ≥ b, bins class b for the searches of class c (and, for c = b, of every
+  // smaller class) with cells as wide as the longest such search reach, h_b + h_c + skin: every
+  // search then visits at most 3 × 3 × 3 cells, whatever the size ratio. (Cells half as wide, as
+  // LAMMPS bins, test fewer candidates but visit 5 × 5 × 5 cells; on the chute that cost more:
+  // docs/performance.md.)
+  grids_.resize(classes * classes);
+  for (std::size_t b = 0; b < classes; ++b) {
+    if (class_members_[b].empty()) continue;
+    for (std::size_t c = b; c < classes; ++c) {
+      if (c != b && class_members_[c].empty()) continue;
+      const double edge = in.class_half_reach[b] + in.class_half_reach[c] + skin;
+      grids_[b * classes + c].assign(spheres, class_members_[b], lo, hi, box, edge);
+    }
+  }
+  const Vec3 length = box.length();
+  const Vec3 half_length = 0.5 * length;
+  for (std::uint32_t code = 0; code < 27; ++code) {
+    const int step[3] = {static_cast<int>(code % 3) - 1, static_cast<int>(code / 3 % 3) - 1,
+                         static_cast<int>(code / 9) - 1};
+    for (int k = 0; k < 3; ++k) shifts_[code][k] = box.periodic[k] ? step[k] * length[k] : 0.0;
+  }
+
+  const std::uint32_t old_n = sphere_count();
+  remember_interacting();
+
+  const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
+  chunk_partners_.resize(chunks);
+  chunk_candidates_.assign(chunks, 0);
+  chunk_cells_.assign(chunks, 0);
+  counts_.assign(n, 0);
+  const int threads = std::max(in.threads, 1);
+  if (stencils_.size() < static_cast<std::size_t>(threads)) stencils_.resize(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  {
+    Stencil& stencil = stencils_[static_cast<std::size_t>(omp_get_thread_num())];
+    AxisCells& ax = stencil.x;
+    AxisCells& ay = stencil.y;
+    AxisCells& az = stencil.z;
+#pragma omp for schedule(dynamic, 1)
+    for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
+      std::vector<std::uint32_t>& out = chunk_partners_[chunk];
+      out.clear();
+      const std::uint32_t end = std::min(n, (chunk + 1) * kChunk);
+      for (std::uint32_t i = chunk * kChunk; i < end; ++i) {
+        const PackedSphere& si = spheres[i];
+        const std::size_t first = out.size();
+        for (std::size_t b = 0; b < classes; ++b) {
+          if (class_members_[b].empty()) continue;
+          const CellGrid& grid = grids_[b * classes + std::max<std::size_t>(b, in.size_class[i])];
+          const double reach = si.half_reach + in.class_half_reach[b] + skin;
+          const auto c = grid.coordinates(si.x, si.y, si.z);
+          ax.fill(c[0], grid.dims()[0], grid.edge()[0], reach, box.periodic[0]);
+          ay.fill(c[1], grid.dims()[1], grid.edge()[1], reach, box.periodic[1]);
+          az.fill(c[2], grid.dims()[2], grid.edge()[2], reach, box.periodic[2]);
+          const double reach2 = reach * reach;
+          for (std::size_t kz = 0; kz < az.cell.size(); ++kz) {
+            const double gz = az.gap[kz] * az.gap[kz];
+            for (std::size_t ky = 0; ky < ay.cell.size(); ++ky) {
+              const double gyz = gz + ay.gap[ky] * ay.gap[ky];
+              if (gyz > reach2) continue;
+              for (std::size_t kx = 0; kx < ax.cell.size(); ++kx) {
+                if (gyz + ax.gap[kx] * ax.gap[kx] > reach2) continue;
+                ++chunk_cells_[chunk];
+                for (const std::uint32_t j : grid.cell(grid.index(ax.cell[kx], ay.cell[ky], az.cell[kz]))) {
+                  ++chunk_candidates_[chunk];
+                  if (j == i || !slabs_.owns(i, j) || (in.still[i] != 0 && in.still[j] != 0)) continue;
+                  const PackedSphere& sj = spheres[j];
+                  double d[3] = {si.x - sj.x, si.y - sj.y, si.z - sj.z};
+                  std::uint32_t code = kNoShift;
+                  if (box.any()) {
+                    // Centres are wrapped at the build, so |d| < L: the nearest image is at most
+                    // one box length away.
+                    int digit[3] = {1, 1, 1};
+                    for (int k = 0; k < 3; ++k) {
+                      if (!box.periodic[k]) continue;
+                      if (d[k] > half_length[k]) {
+                        d[k] -= length[k];
+                        digit[k] = 0;
+                      } else if (d[k] < -half_length[k]) {
+                        d[k] += length[k];
+                        digit[k] = 2;
+                      }
+                    }
+                    code = static_cast<std::uint32_t>(digit[0] + 3 * digit[1] + 9 * digit[2]);
+                  }
+                  const double cut = si.half_reach + sj.half_reach + skin;
+                  if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut * cut) {
+                    out.push_back(j | (code << kPartnerBits));
+                  }
+                }
+              }
+            }
+          }
+        }
+        std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+                  [](std::uint32_t a, std::uint32_t b) { return (a & kPartnerMask) < (b & kPartnerMask); });
+        counts_[i] = static_cast<std::uint32_t>(out.size() - first);
+      }
+    }
+  }
+
+  candidates_ = 0;
+  for (const std::uint64_t c : chunk_candidates_) candidates_ += c;
+  cells_visited_ = 0;
+  for (const std::uint64_t c : chunk_cells_) cells_visited_ += c;
+  offsets_.resize(n + 1);
+  offsets_[0] = 0;
+  for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
+  // Keep an eighth in hand when the list grows, so that rebuilds of a steady scene reuse it.
+  const std::size_t total = offsets_[n];
+  if (partners_.capacity() < total) {
+    partners_.reserve(total + total / 8);
+    active_.reserve(total + total / 8);
+    slips_.reserve(total + total / 8);
+  }
+  partners_.resize(total);
+  active_.assign(total, 0);
+  slips_.resize(total);
+  periodic_ = false;
+  for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
+    const std::vector<std::uint32_t>& part = chunk_partners_[chunk];
+    std::copy(part.begin(), part.end(), partners_.begin() + offsets_[chunk * kChunk]);
+    for (const PartnerCode p : part) periodic_ = periodic_ || (p >> kPartnerBits) != kNoShift;
+  }
+  if (in.extended_history) {
+    if (extended_.capacity() < total) extended_.reserve(partners_.capacity());
+    extended_.assign(total, ExtendedHistory{});
+  } else {
+    extended_.clear();
+  }
+  if (old_n == n) carry_history(new_of_old, threads);
+}
+
+void NeighborList::remember_interacting() {
+  carried_.clear();
+  const std::uint32_t n = sphere_count();
+  for (std::uint32_t a = 0; a < n; ++a) {
+    for (std::uint32_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
+      if (active_[k] == 0) continue;
+      carried_.push_back({a, partners_[k] & kPartnerMask, slips_[k],
+                          extended_.empty() ? ExtendedHistory{} : extended_[k]});
+    }
+  }
+}
+
+void NeighborList::carry_history(std::span<const std::uint32_t> new_of_old, int threads) {
+  const bool mapped = !new_of_old.empty();
+  const auto count = static_cast<std::int64_t>(carried_.size());
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
+  for (std::int64_t c = 0; c < count; ++c) {
+    const Carried& old = carried_[static_cast<std::size_t>(c)];
+    const std::uint32_t i = mapped ? new_of_old[old.owner] : old.owner;
+    const std::uint32_t j = mapped ? new_of_old[old.partner] : old.partner;
+    bool i_owns = true;
+    const std::int64_t e = find(i, j, i_owns);
+    if (e < 0) continue;  // no longer listed: beyond reach, so its history would reset anyway
+    const auto at = static_cast<std::size_t>(e);
+    active_[at] = 1;
+    slips_[at] = i_owns ? old.slip : Vec3(-old.slip);
+    if (!extended_.empty()) extended_[static_cast<std::size_t>(e)] = old.extended;
+  }
+}
+
+std::int64_t NeighborList::find(std::uint32_t i, std::uint32_t j, bool& i_owns) const noexcept {
+  if (i >= sphere_count() || j >= sphere_count()) return -1;
+  const std::span<const PartnerCode> all = partners_;
+  std::int64_t k = find_partner(all.subspan(offsets_[i], offsets_[i + 1] - offsets_[i]), offsets_[i], j);
+  i_owns = true;
+  if (k >= 0) return k;
+  k = find_partner(all.subspan(offsets_[j], offsets_[j + 1] - offsets_[j]), offsets_[j], i);
+  i_owns = false;
+  return k;
+}
+
+ContactHistory NeighborList::history(std::size_t k) const noexcept {
+  if (active_[k] == 0) return {};
+  if (extended_.empty()) return {slips_[k], Vec3::Zero(), 0.0, false};
+  const ExtendedHistory& x = extended_[k];
+  return {slips_[k], x.rolling_slip, x.max_overlap, x.attached != 0};
+}
+
+std::size_t NeighborList::bytes() const noexcept {
+  std::size_t total = (offsets_.capacity() + counts_.capacity()) * sizeof(std::uint32_t) +
+                      partners_.capacity() * sizeof(PartnerCode) + active_.capacity() +
+                      slips_.capacity() * sizeof(Vec3) +
+                      extended_.capacity() * sizeof(ExtendedHistory) +
+                      carried_.capacity() * sizeof(Carried) + slabs_.bytes();
+  for (const auto& g : grids_) total += g.bytes();
+  for (const auto& m : class_members_) total += m.capacity() * sizeof(std::uint32_t);
+  for (const auto& c : chunk_partners_) total += c.capacity() * sizeof(std::uint32_t);
+  return total;
+}
+
+}  // namespace dem

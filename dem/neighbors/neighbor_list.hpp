@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "dem/contact/contact_history.hpp"
+#include "dem/core/vector.hpp"
+#include "dem/domain/periodic_box.hpp"
+#include "dem/neighbors/cell_grid.hpp"
+#include "dem/neighbors/packed_sphere.hpp"
+#include "dem/neighbors/slab_partition.hpp"
+
+namespace dem {
+
+/// How the neighbour list is kept (thesis appendix B.2).
+struct NeighborSettings {
+  double skin = 0.0;  ///< Verlet skin [m]: the list holds pairs within h_i + h_j + skin; > 0
+  /// Reorder the spheres along a Morton curve every this many list builds (0: never). Scenes of
+  /// fewer than kMinSpheresToReorder spheres are never reordered.
+  std::uint32_t sort_every = 8;
+};
+
+/// Scenes smaller than this fit in cache; reordering them cannot pay.
+inline constexpr std::size_t kMinSpheresToReorder = 256;
+
+/// A pair's partner as the list stores it: the partner's index in the low kPartnerBits bits, the
+/// periodic shift code in the five above.
+using PartnerCode = std::uint32_t;
+
+/// The rest of a pair's history, beside the list (touched only for interacting pairs).
+struct ExtendedHistory {
+  Vec3 rolling_slip = Vec3::Zero();
+  double max_overlap = 0.0;
+  std::uint8_t attached = 0;
+};
+
+/// What a build reads.
+struct NeighborBuildInput {
+  std::span<const PackedSphere> spheres;   ///< wrapped centres and half reaches
+  std::span<const std::uint8_t> still;     ///< 1: the sphere never moves (pairs of two are skipped)
+  std::span<const std::uint8_t> size_class;  ///< class of each sphere (size_classes())
+  std::span<const double> class_half_reach;  ///< largest half reach per class [m]
+  const PeriodicBox* box;
+  double skin;
+  int threads;
+  bool extended_history;  ///< keep ExtendedHistory (rolling slip, largest overlap, JKR neck)
+};
+
+/// Size classes for a polydisperse population: class c holds the spheres with
+/// h_min·2^c ≤ h < h_min·2^(c+1) (at most 8 classes, the last open-ended). Each class gets its
+/// own cell grid so that small spheres are not binned in cells sized for the largest (thesis
+/// B.1's over-reporting with polydispersity).
+struct SizeClasses {
+  std::vector<std::uint8_t> of;        ///< class of each sphere
+  std::vector<double> max_half_reach;  ///< largest h in each class [m]
+};
+/// Classes of the half reaches h.
+[[nodiscard]] SizeClasses size_classes(std::span<const double> half_reach);
+
+/// The cells a search visits along one axis around a sphere's cell, and each one's gap (the
+/// smallest distance between the sphere's cell and that cell along the axis) [m].
+struct AxisCells {
+  std::vector<int> cell;
+  std::vector<double> gap;
+  /// Cells within `reach` of cell `c` of a row of `dims` cells of edge `edge`.
+  void fill(int c, int dims, double edge, double reach, bool periodic);
+};
+
+/// A half Verlet list in CSR form (offsets + partner codes) built from per-class cell grids, with
+/// contact history stored in arrays parallel to its entries and carried over when the list is rebuilt or the
+/// spheres are reordered. Every pair within h_i + h_j + skin at the build is listed exactly
+/// once, under its owner (SlabPartition::owns), with the periodic image of the partner nearest
+/// the owner; partners of an owner are sorted by index.
+class NeighborList {
+ public:
+  /// Rebuilds the list for `in`. `new_of_old` maps the spheres' indices at the previous build to
+  /// the current ones (empty: unchanged); the history of every pair that interacted is carried
+  /// to its new entry (its slip negated when the owner changed), or dropped when the pair is no
+  /// longer listed (it is then beyond reach).
+  void build(const NeighborBuildInput& in, std::span<const std::uint32_t> new_of_old = {});
+
+  /// Number of spheres at the last build.
+  [[nodiscard]] std::uint32_t sphere_count() const noexcept {
+    return offsets_.empty() ? 0 : static_cast<std::uint32_t>(offsets_.size() - 1);
+  }
+  /// First entry of owner i; entries of i are [begin(i), begin(i + 1)).
+  [[nodiscard]] std::uint32_t begin(std::uint32_t i) const noexcept { return offsets_[i]; }
+  /// Number of listed pairs.
+  [[nodiscard]] std::size_t size() const noexcept { return partners_.size(); }
+  /// Partner and shift code of every entry (the only array the pair loop's distance test reads
+  /// besides `active`; the history arrays are touched only for pairs in reach).
+  [[nodiscard]] std::span<const PartnerCode> partners() const noexcept { return partners_; }
+  /// 1 while the entry's pair interacted at the last commit.
+  [[nodiscard]] std::span<std::uint8_t> active() noexcept { return active_; }
+  [[nodiscard]] std::span<const std::uint8_t> active() const noexcept { return active_; }
+  /// The tangential slip of every entry, oriented owner → partner (meaningful when active).
+  [[nodiscard]] std::span<Vec3> slips() noexcept { return slips_; }
+  [[nodiscard]] std::span<const Vec3> slips() const noexcept { return slips_; }
+  /// Extended history, parallel to the entries (empty unless the build asked for it).
+  [[nodiscard]] std::span<ExtendedHistory> extended() noexcept { return extended_; }
+  [[nodiscard]] std::span<const ExtendedHistory> extended() const noexcept { return extended_; }
+  /// The shift (a whole number of box lengths per axis) to subtract from the partner's wrapped
+  /// centre to get its image nearest the owner, by shift code.
+  [[nodiscard]] const Vec3& shift(std::uint32_t code) const noexcept { return shifts_[code]; }
+  /// True when some entry has a non-zero shift.
+  [[nodiscard]] bool periodic() const noexcept { return periodic_; }
+  /// The slabs the pair loop runs over.
+  [[nodiscard]] const SlabPartition& slabs() const noexcept { return slabs_; }
+  /// Entry index of the pair (i, j) in either orientation and whether i is its owner, or −1.
+  [[nodiscard]] std::int64_t find(std::uint32_t i, std::uint32_t j, bool& i_owns) const noexcept;
+  /// The committed history of entry k, oriented owner → partner (fresh when not active).
+  [[nodiscard]] ContactHistory history(std::size_t k) const noexcept;
+  /// Builds so far.
+  [[nodiscard]] std::uint64_t builds() const noexcept { return builds_; }
+  /// Distance tests the last build made (the search's cost; compare with size()).
+  [[nodiscard]] std::uint64_t last_build_candidates() const noexcept { return candidates_; }
+  /// Cells the last build visited.
+  [[nodiscard]] std::uint64_t last_build_cells() const noexcept { return cells_visited_; }
+  /// Bytes held (list, history, grids, slabs, scratch).
+  [[nodiscard]] std::size_t bytes() const noexcept;
+
+ private:
+  /// A pair that interacted at the last commit, remembered across a build.
+  struct Carried {
+    std::uint32_t owner;
+    std::uint32_t partner;
+    Vec3 slip;
+    ExtendedHistory extended;
+  };
+  void remember_interacting();
+  void carry_history(std::span<const std::uint32_t> new_of_old, int threads);
+
+  std::vector<std::uint32_t> offsets_;
+  std::vector<PartnerCode> partners_;
+  std::vector<std::uint8_t> active_;
+  std::vector<Vec3> slips_;
+  std::vector<ExtendedHistory> extended_;
+  std::array<Vec3, 27> shifts_{};
+  bool periodic_ = false;
+  SlabPartition slabs_;
+  std::vector<CellGrid> grids_;
+  std::vector<std::vector<std::uint32_t>> class_members_;
+  std::uint64_t builds_ = 0;
+  std::uint64_t candidates_ = 0;
+  std::uint64_t cells_visited_ = 0;
+  std::vector<Carried> carried_;  // interacting pairs of the previous build
+  // Per-chunk scratch of the build (chunks of owners, independent of the thread count): the
+  // partners found, with their shift codes.
+  std::vector<std::vector<std::uint32_t>> chunk_partners_;
+  std::vector<std::uint32_t> counts_;
+  std::vector<std::uint64_t> chunk_candidates_;
+  std::vector<std::uint64_t> chunk_cells_;
+  struct Stencil {
+    AxisCells x, y, z;
+  };
+  std::vector<Stencil> stencils_;  // per thread
+};
+
+}  // namespace dem

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#include "dem/neighbors/wall_list.hpp"
+
+namespace dem {
+
+void WallList::build(std::span<const PackedSphere> spheres, std::span<const std::uint8_t> still,
+                     const std::vector<PlaneWall>& walls, double t, double skin,
+                     const std::function<double(std::uint32_t, std::uint32_t)>& reach,
+                     bool extended_history, std::span<const std::uint32_t> new_of_old) {
+  carried_.clear();
+  const auto old_n = static_cast<std::uint32_t>(offsets_.empty() ? 0 : offsets_.size() - 1);
+  for (std::uint32_t i = 0; i < old_n; ++i) {
+    for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+      if (entries_[k].active == 0) continue;
+      carried_.push_back({i, entries_[k].wall, entries_[k].slip,
+                          extended_.empty() ? ExtendedHistory{} : extended_[k]});
+    }
+  }
+
+  const auto n = static_cast<std::uint32_t>(spheres.size());
+  offsets_.resize(n + 1);
+  entries_.clear();
+  offsets_[0] = 0;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (still[i] == 0) {
+      const Vec3 x(spheres[i].x, spheres[i].y, spheres[i].z);
+      for (std::uint32_t w = 0; w < walls.size(); ++w) {
+        const PlaneWall& wall = walls[w];
+        const double distance = (x - (wall.point + t * wall.velocity)).dot(wall.normal);
+        if (distance < reach(i, w) + skin) entries_.push_back({w, 0, Vec3::Zero()});
+      }
+    }
+    offsets_[i + 1] = static_cast<std::uint32_t>(entries_.size());
+  }
+  if (extended_history) {
+    extended_.assign(entries_.size(), ExtendedHistory{});
+  } else {
+    extended_.clear();
+  }
+
+  if (old_n != n || (!new_of_old.empty() && new_of_old.size() != n)) return;
+  for (const Carried& c : carried_) {
+    const std::uint32_t i = new_of_old.empty() ? c.sphere : new_of_old[c.sphere];
+    const std::int64_t k = find(i, c.wall);
+    if (k < 0) continue;  // out of reach now: its history would reset anyway
+    entries_[static_cast<std::size_t>(k)].active = 1;
+    entries_[static_cast<std::size_t>(k)].slip = c.slip;
+    if (!extended_.empty()) extended_[static_cast<std::size_t>(k)] = c.extended;
+  }
+}
+
+std::int64_t WallList::find(std::uint32_t i, std::uint32_t w) const noexcept {
+  if (i + 1 >= offsets_.size()) return -1;
+  for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+    if (entries_[k].wall == w) return k;
+  }
+  return -1;
+}
+
+ContactHistory WallList::history(std::size_t k) const noexcept {
+  if (entries_[k].active == 0) return {};
+  if (extended_.empty()) return {entries_[k].slip, Vec3::Zero(), 0.0, false};
+  const ExtendedHistory& x = extended_[k];
+  return {entries_[k].slip, x.rolling_slip, x.max_overlap, x.attached != 0};
+}
+
+std::size_t WallList::bytes() const noexcept {
+  return offsets_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(WallEntry) +
+         extended_.capacity() * sizeof(ExtendedHistory) + carried_.capacity() * sizeof(Carried);
+}
+
+}  // namespace dem
