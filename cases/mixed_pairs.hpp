@@ -15,7 +15,8 @@ struct MixedValue {
   std::string origin;  ///< e.g. "harmonic mix" or "[[pairs]] override"
 };
 
-/// The mixed properties of one material pair (a ≤ b), for reports (STYLE.md §4).
+/// The mixed properties of one material pair (a ≤ b), for reports (docs/architecture.md, "Materials
+/// and mixing").
 struct MixedPair {
   std::string material_a;
   std::string material_b;

@@ -12,6 +12,7 @@
 #include "cases/catalogue.hpp"
 #include "cases/loader_sections.hpp"
 #include "cases/suggestion.hpp"
+#include "cases/trace.hpp"
 
 namespace cases::loader {
 namespace {
@@ -22,7 +23,11 @@ constexpr auto kCompareKeys = std::to_array<std::string_view>(
 
 constexpr auto kOutputKeys = std::to_array<std::string_view>(
     {"trace_every", "trace_particles", "trace_pairs", "trace_walls", "trace_energy",
-     "snapshot_times"});
+     "snapshot_times", "snapshot_every", "trace_aggregates"});
+
+/// Scenes with more mobile particles than this trace none by default (10⁶ rows of 12 columns a
+/// step would swamp memory); list output.trace_particles or use output.trace_aggregates.
+constexpr std::size_t kDefaultTracedParticles = 16;
 
 constexpr auto kToleranceKeys = std::to_array<std::string_view>({"rel", "abs"});
 
@@ -173,6 +178,7 @@ std::vector<std::size_t> read_trace_particles(const Table& table,
     for (std::size_t i = 0; i < particles.size(); ++i) {
       if (!particles[i].fixed) out.push_back(i);
     }
+    if (out.size() > kDefaultTracedParticles) out.clear();
     return out;
   }
   for (const Value& item : value->elements()) {
@@ -284,6 +290,28 @@ void read_output(const Table& root, Scene& scene) {
   spec.trace_walls = read_trace_walls(table, scene);
   if (const auto v = table.find("trace_energy")) spec.trace_energy = v->boolean();
   spec.snapshot_times = read_snapshot_times(table, scene.integration.duration);
+  if (const auto v = table.find("snapshot_every")) {
+    const double every = v->number(positive_range());
+    const double duration = scene.integration.duration;
+    if (duration / every > 1e5) {
+      v->fail(fmt::format("gives {:.3g} snapshots over the duration {} s, more than the limit of 100000",
+                          duration / every, duration));
+    }
+    for (std::size_t k = 0; static_cast<double>(k) * every <= duration * (1.0 + 1e-12); ++k) {
+      spec.snapshot_times.push_back(std::min(static_cast<double>(k) * every, duration));
+    }
+    std::sort(spec.snapshot_times.begin(), spec.snapshot_times.end());
+    spec.snapshot_times.erase(std::unique(spec.snapshot_times.begin(), spec.snapshot_times.end()),
+                              spec.snapshot_times.end());
+  }
+  if (const auto v = table.find("trace_aggregates")) {
+    std::vector<std::string_view> known(std::begin(kAggregateQuantities), std::end(kAggregateQuantities));
+    for (const Value& item : v->elements()) {
+      const std::string name = item.keyword(known, "aggregate quantity");
+      if (contains(spec.trace_aggregates, name)) item.fail(fmt::format("'{}' is listed twice", name));
+      spec.trace_aggregates.push_back(name);
+    }
+  }
 }
 
 }  // namespace cases::loader

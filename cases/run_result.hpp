@@ -11,7 +11,8 @@
 
 namespace cases {
 
-/// Outcome of asking one engine to run one scene (DESIGN.md step 2 and 4).
+/// Outcome of asking one engine to run one scene (docs/architecture.md, "The flow of one
+/// comparison", step 3).
 enum class RunStatus {
   ok,              ///< ran; traces are valid
   error,           ///< crashed, timed out, produced NaN or unparsable output
@@ -31,7 +32,8 @@ struct Snapshot {
 };
 
 /// How an engine's damping input was calibrated so that its two-body rebound gives the case's
-/// restitution (PHYSICS.md §10): the engine's own runs, input against measured restitution.
+/// restitution (docs/engines.md, "Restitution calibration"): the engine's own runs, input against
+/// measured restitution.
 struct Calibration {
   std::string parameter;                           ///< e.g. "LAMMPS tsuji e_in (pair 0–0)"
   double target = 0.0;                             ///< restitution the case asks for

@@ -110,6 +110,7 @@ struct OutputSpec {
   std::vector<ParticlePair> trace_pairs;      ///< contacts whose overlap/force are traced
   std::vector<double> snapshot_times;         ///< [s] times of full particle snapshots
   std::vector<ParticlePair> trace_walls;      ///< (particle, wall) contacts traced
+  std::vector<std::string> trace_aggregates;  ///< whole-scene quantities traced (kAggregateQuantities)
   bool trace_energy = false;                  ///< record the energy ledger (in-house engine)
 };
 
@@ -134,8 +135,8 @@ struct CompareSpec {
   std::map<std::string, Tolerance> matched_tolerances;  ///< per metric, for matched rows
 };
 
-/// A fully explicit scene: every engine receives the same one (DESIGN.md "the flow of one
-/// comparison"). Produced by the case loader; never modified by an engine.
+/// A fully explicit scene: every engine receives the same one (docs/architecture.md, "The flow of
+/// one comparison"). Produced by the case loader; never modified by an engine.
 struct Scene {
   std::string name;
   std::string description;

@@ -52,8 +52,11 @@ Trace trace_layout(const Scene& scene) {
   for (const auto& [p, w] : scene.output.trace_walls) {
     for (const auto name : kPairQuantities) trace.add_column(wall_column(p, w, name));
   }
+  for (const std::string& a : scene.output.trace_aggregates) trace.add_column(aggregate_column(a));
   return trace;
 }
+
+std::string aggregate_column(std::string_view quantity) { return fmt::format("all.{}", quantity); }
 
 std::string wall_column(std::size_t p, std::size_t wall, std::string_view quantity) {
   return fmt::format("c{}-w{}.{}", p, wall, quantity);

@@ -49,12 +49,20 @@ struct Scene;
 
 /// An empty trace with the columns every engine records for `scene`, in order: time; the 12
 /// quantities of each output.trace_particles; overlap and fn of each output.trace_pairs; overlap
-/// and fn of each output.trace_walls.
+/// and fn of each output.trace_walls; each output.trace_aggregates.
 Trace trace_layout(const Scene& scene);
 
 /// The quantities traced per particle, in column order.
 inline constexpr std::string_view kParticleQuantities[] = {"x",  "y",  "z",  "vx", "vy", "vz",
                                                            "wx", "wy", "wz", "fx", "fy", "fz"};
+/// Whole-scene quantities a trace may carry (output.trace_aggregates): translational and
+/// rotational kinetic energy of the mobile spheres [J], and the coordination number (mean
+/// sphere–sphere contacts per sphere, 2 × pairs whose bodies touch / spheres) [-].
+inline constexpr std::string_view kAggregateQuantities[] = {"kinetic_energy", "rotational_energy",
+                                                            "coordination_number"};
+/// Column name of an aggregate quantity, e.g. aggregate_column("kinetic_energy") = "all.kinetic_energy".
+std::string aggregate_column(std::string_view quantity);
+
 /// The quantities traced per contact, in column order.
 inline constexpr std::string_view kPairQuantities[] = {"overlap", "fn"};
 /// Columns of the energy trace (RunResult::energy), after "time".

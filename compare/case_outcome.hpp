@@ -13,7 +13,8 @@
 namespace comparison {
 
 /// Everything one comparison of one case produced: the scene, each engine's run, the metrics
-/// computed from each run and the discrepancy rows (DESIGN.md steps 1-4).
+/// computed from each run and the discrepancy rows (docs/architecture.md, "The flow of one
+/// comparison", steps 1–4).
 struct CaseOutcome {
   cases::Scene scene;
   std::vector<cases::RunResult> runs;

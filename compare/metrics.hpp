@@ -23,7 +23,7 @@ struct MetricValue {
 using MetricSet = std::map<std::string, MetricValue>;
 
 /// Computes every metric the scene lists (scene.compare.metrics) from one engine's result,
-/// with one implementation shared by all engines (DESIGN.md step 3). Closed-form values an
+/// with one implementation shared by all engines (docs/metrics.md). Closed-form values an
 /// engine supplies in exact_metrics take precedence. `analytic` (may be null) is the analytic
 /// engine's result, needed by amplitude_error. A run that is not ok yields no values.
 MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run,
@@ -35,8 +35,8 @@ std::optional<std::vector<double>> axis_displacement(const cases::Scene& scene,
                                                      const cases::Trace& trace);
 
 /// Largest difference between two engines' traced positions, over every traced particle and
-/// row, divided by the compared contact's largest overlap in `reference` (PHYSICS.md / issue
-/// "matched numerics": the position trace relative to the max overlap). Empty with `problem`
+/// row, divided by the compared contact's largest overlap in `reference` (docs/metrics.md,
+/// "Matched-numerics metric": the position trace relative to the max overlap). Empty with `problem`
 /// set when the traces are not sampled at the same times or have nothing to compare.
 std::optional<double> trace_deviation(const cases::Scene& scene, const cases::RunResult& run,
                                       const cases::RunResult& reference, std::string& problem);

@@ -6,7 +6,7 @@
 
 namespace comparison {
 
-/// Verdict on one (case, engine, metric) comparison (DESIGN.md step 4).
+/// Verdict on one (case, engine, metric) comparison (docs/metrics.md, "Statuses").
 enum class Status {
   pass,            ///< within tolerance
   fail,            ///< outside tolerance

@@ -7,9 +7,9 @@
 
 namespace reference {
 
-/// A copy of `scene` that the in-house core runs to reproduce the numerics of the reference
-/// engine `engine` (DESIGN.md "Matched numerics"), so that a comparison of the two isolates the
-/// force model down to round-off:
+/// A copy of `scene` that the in-house core runs to reproduce the numerics of the reference engine
+/// `engine` (docs/engines.md, "Native and matched comparisons"), so that a comparison of the two
+/// isolates the force model down to round-off:
 /// - "lammps": velocity Verlet as `fix nve/sphere` performs it (half kick, drift, forces with
 ///   the half-step velocities, half kick; dem/integrators/verlet_schemes.cpp), with the time step
 ///   pinned to the one the original scene resolves to. Damping, m* against fixed partners and

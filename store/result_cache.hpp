@@ -12,7 +12,7 @@
 namespace store {
 
 /// Reference-code results kept on disk, keyed by the scene's fingerprint, the engine and its
-/// version (DESIGN.md "reference results are artifacts"). Only successful runs are kept. A
+/// version (docs/architecture.md, "The store module"). Only successful runs are kept. A
 /// stored file that cannot be read is treated as absent.
 class ResultCache {
  public:

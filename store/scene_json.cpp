@@ -136,6 +136,7 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
                  {"trace_walls", pairs_json(s.output.trace_walls)},
                  {"trace_energy", s.output.trace_energy},
                  {"snapshot_times", s.output.snapshot_times}};
+  if (!s.output.trace_aggregates.empty()) j["output"]["trace_aggregates"] = s.output.trace_aggregates;
   return j;
 }
 

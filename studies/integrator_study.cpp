@@ -71,7 +71,7 @@ cases::Scene configured(const cases::Scene& base, dem::SchemeId scheme, double d
   return s;
 }
 
-/// Single collision with N_FM steps of free motion before contact (PHYSICS.md §8): the
+/// Single collision with N_FM steps of free motion before contact (docs/integrator-study.md): the
 /// partner is placed at x_q = x_p + |u| N_FM Δt + r_p + r_q along the velocity, and the run
 /// lasts until the subject is back at its start.
 cases::Scene collision_scene(const cases::Scene& base, dem::SchemeId scheme, double dt, double nfm,

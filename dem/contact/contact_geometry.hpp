@@ -7,7 +7,7 @@
 
 namespace dem {
 
-/// Kinematics of one sphere pair p–q at one instant (thesis eq 3.2–3.8, PHYSICS.md §2).
+/// Kinematics of one sphere pair p–q at one instant (thesis eq 3.2–3.8; docs/physics.md).
 /// The normal points from q to p; a positive overlap means the bodies interpenetrate.
 struct ContactGeometry {
   Vec3 normal;              ///< n = x_pq / |x_pq|

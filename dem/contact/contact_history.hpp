@@ -8,8 +8,8 @@
 
 namespace dem {
 
-/// State a contact carries from step to step. A law receives the committed value and returns
-/// the new one; the integrator decides when to commit it (STYLE.md "laws are pure functions").
+/// State a contact carries from step to step. A law receives the committed value and returns the
+/// new one; the integrator decides when to commit it (docs/architecture.md, "The contact model").
 struct ContactHistory {
   Vec3 tangential_slip = Vec3::Zero();  ///< ς, integrated tangential displacement [m] (eq 3.9)
   Vec3 rolling_slip = Vec3::Zero();     ///< integrated rolling displacement [m]

@@ -53,7 +53,7 @@ using CohesionModel =
 using RollingModel = std::variant<NoRolling, ConstantTorqueRolling, SpringDashpotSliderRolling>;
 
 /// The contact law of one material pair: one sub-model per slot, each holding its mixed
-/// parameters, plus the model's policies (STYLE.md "a composition of named slots").
+/// parameters, plus the model's policies (docs/architecture.md, "The contact model").
 struct PairLaw {
   NormalModel normal;
   DampingModel damping;
@@ -78,7 +78,7 @@ struct ContactOutcome {
   ContactHistory history;            ///< history after this evaluation
 };
 
-/// The normal force the Coulomb limit is based on, per policy (STYLE.md table).
+/// The normal force the Coulomb limit is based on, per policy (docs/physics-tangential.md, friction-limit basis).
 [[nodiscard]] inline double friction_limit_basis(FrictionLimit policy, double elastic,
                                                  double damping, double cohesion,
                                                  double pulloff) noexcept {

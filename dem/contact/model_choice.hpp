@@ -7,7 +7,7 @@
 
 namespace dem {
 
-/// What the Coulomb limit μ·basis of the tangential force is based on (STYLE.md table).
+/// What the Coulomb limit μ·basis of the tangential force is based on (docs/physics-tangential.md).
 enum class FrictionLimit {
   total,            ///< |F_n| of the whole normal force (default; thesis eq 3.23)
   elastic,          ///< |F_elastic| (YADE)
@@ -15,7 +15,7 @@ enum class FrictionLimit {
   jkr_shifted,      ///< |F_n + 2 F_pulloff| (Thornton; LAMMPS JKR/DMT)
 };
 
-/// Where a JKR contact breaks on separation (PHYSICS.md §5).
+/// Where a JKR contact breaks on separation (docs/physics-cohesion.md).
 enum class JkrRupture {
   displacement,  ///< at δ_c = −¾ (π² Γ² R*/E*²)^{1/3}, force −5/9 F_po (default)
   load,          ///< at the load-controlled pull-off point, the maximum tension (as LAMMPS)

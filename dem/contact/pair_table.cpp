@@ -47,7 +47,8 @@ void check_keywords(const ModelChoice& choice) {
                            "' (known: " + sub_model_keywords(slot) + ")");
     }
   }
-  // JKR and DMT are adhesive corrections of Hertz contact mechanics (eq 3.34, PHYSICS.md §5).
+  // JKR and DMT are adhesive corrections of Hertz contact mechanics (eq 3.34;
+  // docs/physics-cohesion.md).
   if ((choice.cohesion == "jkr" || choice.cohesion == "dmt") && choice.normal != "hertz") {
     throw ModelError("model.cohesion", "cohesion = '" + choice.cohesion +
                                            "' extends Hertz contact mechanics and needs normal = "

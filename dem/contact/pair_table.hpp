@@ -11,7 +11,7 @@
 namespace dem {
 
 /// The mixed parameters and the contact law of every material pair, built once before a run
-/// (STYLE.md "mixing is a named, reported step"). Symmetric: (a, b) and (b, a) are one entry.
+/// (docs/architecture.md, "Materials and mixing"). Symmetric: (a, b) and (b, a) are one entry.
 class PairTable {
  public:
   /// Mixes every material pair with `rules`, applies `overrides`, and builds each pair's law

@@ -410,6 +410,28 @@ std::size_t ContactForceField::interacting_pairs() const noexcept {
   return count;
 }
 
+std::size_t ContactForceField::touching_pairs() const noexcept {
+  std::size_t count = 0;
+  const std::span<const std::uint8_t> active = list_.active();
+  const std::span<const PartnerCode> partners = list_.partners();
+  const std::span<const ExtendedHistory> ext = list_.extended();
+  for (std::uint32_t i = 0; i < list_.sphere_count(); ++i) {
+    for (std::uint32_t k = list_.begin(i); k < list_.begin(i + 1); ++k) {
+      if (active[k] == 0) continue;
+      if (!ext.empty() && ext[k].attached != 0) {
+        ++count;
+        continue;
+      }
+      const std::uint32_t j = partners[k] & kPartnerMask;
+      const Vec3& shift = list_.shift(partners[k] >> kPartnerBits);
+      const Vec3 d(packed_[i].x - (packed_[j].x - shift[0]), packed_[i].y - (packed_[j].y - shift[1]),
+                   packed_[i].z - (packed_[j].z - shift[2]));
+      if (contact_spheres_[i].radius + contact_spheres_[j].radius - d.norm() > 0.0) ++count;
+    }
+  }
+  return count;
+}
+
 std::vector<std::uint32_t> ContactForceField::spatial_order(const KinematicState& state) const {
   const double cell = 2.0 * classes_.max_half_reach.front() + setup_.neighbors.skin;
   const std::span<const std::uint32_t> slabs = list_.slabs().all();

@@ -77,6 +77,9 @@ class ContactForceField final : public ForceEvaluator {
   [[nodiscard]] ContactHistory pair_history(std::uint32_t i, std::uint32_t j) const noexcept;
   /// Sphere pairs interacting at the last commit.
   [[nodiscard]] std::size_t interacting_pairs() const noexcept;
+  /// Sphere pairs whose bodies touch at the last commit (overlap > 0, or a JKR neck holds):
+  /// the contacts a coordination number counts.
+  [[nodiscard]] std::size_t touching_pairs() const noexcept;
   /// Elastic energy stored in all contacts at the last commit [J].
   [[nodiscard]] double elastic_energy() const noexcept { return ledger_.elastic; }
   /// Contact energies at the last commit and work accumulated so far; kinetic and gravitational

@@ -24,21 +24,21 @@ inline SphereState sphere_at(const PairLoopInput& in, std::uint32_t i, double x,
   return s;
 }
 
-/// One gathered pair: its owner and its list entry.
-struct Gathered {
-  std::uint32_t owner;
-  std::uint32_t entry;
+/// The list's arrays, as raw pointers for the loop (none of them aliases the force arrays).
+struct ListView {
+  const PartnerCode* partners;
+  std::uint8_t* active;
+  Vec3* slips;
+  ExtendedHistory* extended;  ///< null when the model keeps no extended history
+  const Vec3* shifts;         ///< 27 periodic shifts by code
 };
 
-/// Evaluates one gathered pair and applies its forces, energies (when `Energies`) and (on
-/// commit) history.
+/// Evaluates the pair of entry k (owner i) and applies its forces, energies (when `Energies`)
+/// and, on commit, its history.
 template <class Slots, bool Energies>
-inline void evaluate_pair(const PairLoopInput& in, NeighborList& list, std::uint32_t i, std::uint32_t k,
-                          double* force, double* torque, EnergyTotals& t) noexcept {
-  std::uint8_t& active = list.active()[k];
-  Vec3& slip = list.slips()[k];
-  const std::span<ExtendedHistory> ext = list.extended();
-  const PartnerCode partner = list.partners()[k];
+inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::uint32_t i, std::uint32_t k,
+                          double* __restrict force, double* __restrict torque, EnergyTotals& t) noexcept {
+  const PartnerCode partner = list.partners[k];
   const std::uint32_t j = partner & kPartnerMask;
   const std::uint32_t code = partner >> kPartnerBits;
   const PackedSphere& pi = in.packed[i];
@@ -47,7 +47,7 @@ inline void evaluate_pair(const PairLoopInput& in, NeighborList& list, std::uint
   double qy = pj.y;
   double qz = pj.z;
   if (code != kNoShift) {
-    const Vec3& shift = list.shift(code);
+    const Vec3& shift = list.shifts[code];
     qx -= shift[0];
     qy -= shift[1];
     qz -= shift[2];
@@ -55,30 +55,37 @@ inline void evaluate_pair(const PairLoopInput& in, NeighborList& list, std::uint
   const ContactGeometry g = pair_geometry(sphere_at(in, i, pi.x, pi.y, pi.z), sphere_at(in, j, qx, qy, qz),
                                           in.lever_arm_is_radius);
   ContactHistory committed;
-  if (active != 0) {
-    committed.tangential_slip = slip;
-    if (!ext.empty()) {
-      committed.rolling_slip = ext[k].rolling_slip;
-      committed.max_overlap = ext[k].max_overlap;
-      committed.attached = ext[k].attached != 0;
+  const bool was_active = list.active[k] != 0;
+  if (was_active) {
+    committed.tangential_slip = list.slips[k];
+    if (list.extended != nullptr) {
+      committed.rolling_slip = list.extended[k].rolling_slip;
+      committed.max_overlap = list.extended[k].max_overlap;
+      committed.attached = list.extended[k].attached != 0;
     }
   }
   const ContactOutcome c =
       evaluate_contact_in(Slots{in.table->law(in.material[i], in.material[j])}, g, committed, in.elapsed);
   if (!c.interacting) {
-    if (in.commit) active = 0;
+    if (in.commit && was_active) list.active[k] = 0;
     return;
   }
-  double* fi = force + 3 * static_cast<std::size_t>(i);
-  double* fj = force + 3 * static_cast<std::size_t>(j);
-  double* ti = torque + 3 * static_cast<std::size_t>(i);
-  double* tj = torque + 3 * static_cast<std::size_t>(j);
-  for (int a = 0; a < 3; ++a) {
-    fi[a] += c.force_on_p[a];
-    fj[a] -= c.force_on_p[a];
-    ti[a] += c.torque_on_p[a];
-    tj[a] += c.torque_on_q[a];
-  }
+  double* __restrict fi = force + 3 * static_cast<std::size_t>(i);
+  double* __restrict fj = force + 3 * static_cast<std::size_t>(j);
+  double* __restrict ti = torque + 3 * static_cast<std::size_t>(i);
+  double* __restrict tj = torque + 3 * static_cast<std::size_t>(j);
+  fi[0] += c.force_on_p[0];
+  fi[1] += c.force_on_p[1];
+  fi[2] += c.force_on_p[2];
+  fj[0] -= c.force_on_p[0];
+  fj[1] -= c.force_on_p[1];
+  fj[2] -= c.force_on_p[2];
+  ti[0] += c.torque_on_p[0];
+  ti[1] += c.torque_on_p[1];
+  ti[2] += c.torque_on_p[2];
+  tj[0] += c.torque_on_q[0];
+  tj[1] += c.torque_on_q[1];
+  tj[2] += c.torque_on_q[2];
   if constexpr (Energies) {
     t.elastic += c.elastic_energy;
     t.cohesive += c.cohesive_energy;
@@ -86,47 +93,60 @@ inline void evaluate_pair(const PairLoopInput& in, NeighborList& list, std::uint
     t.friction += c.dissipated_friction;
   }
   if (in.commit) {
-    active = 1;
-    slip = c.history.tangential_slip;
-    if (!ext.empty()) {
-      ext[k] = {c.history.rolling_slip, c.history.max_overlap, static_cast<std::uint8_t>(c.history.attached ? 1 : 0)};
+    list.active[k] = 1;
+    list.slips[k] = c.history.tangential_slip;
+    if (list.extended != nullptr) {
+      list.extended[k] = {c.history.rolling_slip, c.history.max_overlap,
+                          static_cast<std::uint8_t>(c.history.attached ? 1 : 0)};
     }
   }
 }
 
-/// The loop for one kind of law (DynamicSlots: any law, dispatching per slot).
-template <class Slots, bool Energies>
+/// The loop for one kind of law (DynamicSlots: any law, dispatching per slot); `Periodic`: some
+/// entry carries a periodic shift.
+template <class Slots, bool Energies, bool Periodic>
 [[gnu::flatten]] EnergyTotals pair_loop_as(const PairLoopInput& in, NeighborList& list,
                                            std::span<const std::uint32_t> owners, double* force, double* torque) {
   EnergyTotals t;
-  const std::span<const PartnerCode> partners = list.partners();
-  const std::span<const std::uint8_t> active = list.active();
-  std::array<Gathered, kChunk> gathered;
-  std::size_t count = 0;
+  const ListView view{list.partners().data(), list.active().data(), list.slips().data(),
+                      list.extended().empty() ? nullptr : list.extended().data(), &list.shift(0)};
+  const PackedSphere* packed = in.packed;
+  std::array<std::uint32_t, kChunk> gathered_owner;
+  std::array<std::uint32_t, kChunk> gathered_entry;
+  std::uint32_t count = 0;
   const auto flush = [&] {
-    for (std::size_t g = 0; g < count; ++g) {
-      evaluate_pair<Slots, Energies>(in, list, gathered[g].owner, gathered[g].entry, force, torque, t);
+    for (std::uint32_t g = 0; g < count; ++g) {
+      evaluate_pair<Slots, Energies>(in, view, gathered_owner[g], gathered_entry[g], force, torque, t);
     }
     count = 0;
   };
   for (const std::uint32_t i : owners) {
-    const PackedSphere pi = in.packed[i];
+    const double xi = packed[i].x;
+    const double yi = packed[i].y;
+    const double zi = packed[i].z;
+    const double hi = packed[i].half_reach;
     std::uint32_t k = list.begin(i);
     const std::uint32_t end = list.begin(i + 1);
     while (k < end) {
       if (count == kChunk) flush();
       // Branch-free distance test over as many entries as fit in the gather buffer.
-      const std::uint32_t stop = std::min<std::uint32_t>(end, k + static_cast<std::uint32_t>(kChunk - count));
+      const std::uint32_t stop = std::min<std::uint32_t>(end, k + (static_cast<std::uint32_t>(kChunk) - count));
       for (; k < stop; ++k) {
-        const PartnerCode partner = partners[k];
-        const PackedSphere& pj = in.packed[partner & kPartnerMask];
-        const Vec3& shift = list.shift(partner >> kPartnerBits);
-        const double dx = pi.x - (pj.x - shift[0]);
-        const double dy = pi.y - (pj.y - shift[1]);
-        const double dz = pi.z - (pj.z - shift[2]);
-        const double reach = pi.half_reach + pj.half_reach;
-        gathered[count] = {i, k};
-        count += static_cast<std::size_t>((dx * dx + dy * dy + dz * dz <= reach * reach) | (active[k] != 0));
+        const PartnerCode partner = view.partners[k];
+        const PackedSphere& pj = packed[partner & kPartnerMask];
+        double dx = xi - pj.x;
+        double dy = yi - pj.y;
+        double dz = zi - pj.z;
+        if constexpr (Periodic) {
+          const Vec3& shift = view.shifts[partner >> kPartnerBits];
+          dx = xi - (pj.x - shift[0]);
+          dy = yi - (pj.y - shift[1]);
+          dz = zi - (pj.z - shift[2]);
+        }
+        const double reach = hi + pj.half_reach;
+        gathered_owner[count] = i;
+        gathered_entry[count] = k;
+        count += static_cast<std::uint32_t>((dx * dx + dy * dy + dz * dz <= reach * reach) | (view.active[k] != 0));
       }
     }
   }
@@ -142,12 +162,16 @@ using HertzMindlinLaw = StaticSlots<HertzNormal, TsujiDamping, Mindlin8GTangenti
 using LinearCohesiveLaw = StaticSlots<LinearNormal, RestitutionDamping, SpringCoulombTangential, LinearCohesion, NoRolling>;
 using JkrLaw = StaticSlots<HertzNormal, TsujiDamping, SpringCoulombTangential, JkrCohesion, NoRolling>;
 
-/// The loop for the law kind `Slots`, with or without energy sums.
+/// The loop for the law kind `Slots`, with or without energy sums and periodic shifts.
 template <class Slots>
 EnergyTotals pair_loop_for(const PairLoopInput& in, NeighborList& list, std::span<const std::uint32_t> owners,
                            double* force, double* torque) {
-  return in.energies ? pair_loop_as<Slots, true>(in, list, owners, force, torque)
-                     : pair_loop_as<Slots, false>(in, list, owners, force, torque);
+  if (list.periodic()) {
+    return in.energies ? pair_loop_as<Slots, true, true>(in, list, owners, force, torque)
+                       : pair_loop_as<Slots, false, true>(in, list, owners, force, torque);
+  }
+  return in.energies ? pair_loop_as<Slots, true, false>(in, list, owners, force, torque)
+                     : pair_loop_as<Slots, false, false>(in, list, owners, force, torque);
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ const SchemeInfo& scheme_info(SchemeId id) noexcept;
 /// Scheme named `keyword`, or empty.
 std::optional<SchemeId> parse_scheme(std::string_view keyword) noexcept;
 
-/// How multi-step schemes obtain the data they need before the first step (PHYSICS.md §7).
+/// How multi-step schemes obtain the data they need before the first step (docs/integrators.md).
 enum class StartupPolicy {
   rk4,    ///< take the first steps with RK4 sub-steps (default)
   exact,  ///< the caller supplies exact states at t = −Δt, −2Δt, … (thesis §4.2.2)

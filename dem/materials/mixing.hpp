@@ -37,7 +37,7 @@ MixingRule rule_for(const MixingRules& rules, const PropertySpec& spec) noexcept
 [[nodiscard]] double effective_modulus(double e_p, double nu_p, double e_q, double nu_q) noexcept;
 
 /// Reduced shear modulus G* = [(2 − ν_p)/G_p + (2 − ν_q)/G_q]⁻¹ with G = E/(2(1 + ν)) [Pa]; the
-/// factor of thesis eq 3.25 and of Mindlin's k_t = 8 G* a (PHYSICS.md §4).
+/// factor of thesis eq 3.25 and of Mindlin's k_t = 8 G* a (docs/physics-tangential.md).
 [[nodiscard]] double effective_shear_modulus(double e_p, double nu_p, double e_q,
                                              double nu_q) noexcept;
 

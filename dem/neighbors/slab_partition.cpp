@@ -30,6 +30,7 @@ void SlabPartition::assign(std::span<const PackedSphere> spheres, const Vec3& lo
     count = 1;
   }
   count_ = count;
+  ring_ = ring && count_ > 1;
   const double width = best / count_;
 
   const auto n = static_cast<std::uint32_t>(spheres.size());

@@ -41,7 +41,8 @@ class SlabPartition {
     const std::uint32_t si = slab_of_[i];
     const std::uint32_t sj = slab_of_[j];
     if (si == sj) return i < j;
-    return sj == (si + 1 == count_ ? 0 : si + 1);
+    const std::uint32_t next = si + 1;
+    return sj == (ring_ && next == count_ ? 0 : next);
   }
   /// Bytes held.
   [[nodiscard]] std::size_t bytes() const noexcept {
@@ -50,6 +51,7 @@ class SlabPartition {
 
  private:
   std::uint32_t count_ = 1;
+  bool ring_ = false;  // periodic along the slab axis: the last slab's next is the first
   std::vector<std::uint32_t> slab_of_;
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> members_;

@@ -10,7 +10,8 @@
 
 namespace dem {
 
-/// Time-step limits of a scene (PHYSICS.md §7). Each limit is +∞ when no contact can occur.
+/// Time-step limits of a scene (docs/physics.md, "Time-step control"). Each limit is +∞ when no
+/// contact can occur.
 struct TimestepLimits {
   double cundall_strack;         ///< √(m/k) (thesis eq 4.6) [s]
   double osullivan_bray;         ///< 0.22√(m/k) with rotation, 0.34√(m/k) without (eq 4.7) [s]
@@ -24,7 +25,7 @@ struct TimestepLimits {
 /// smallest mobile mass and k the stiffest pair it can meet; t_c uses the smallest reduced mass
 /// of each material pair that can actually touch (mobile–mobile, or mobile–fixed with m* = m).
 /// Stiffness that grows with overlap (Hertz) is taken at the overlap of an impact at twice the
-/// fastest initial speed, or of a fall through the largest diameter (PHYSICS.md §7).
+/// fastest initial speed, or of a fall through the largest diameter (docs/physics.md).
 /// Plane walls of the materials `wall_materials` are infinite-mass partners with R* = r, m* = m.
 TimestepLimits timestep_limits(const ParticleProperties& props, const KinematicState& state,
                                const PairTable& table, const Vec3& gravity, bool rotation,

@@ -17,6 +17,12 @@ Support AnalyticEngine::supports(const cases::Scene& scene) const {
         "analytic: the closed-form solutions are for bodies in open space; a periodic box is not one");
     return support;
   }
+  if (!scene.output.trace_aggregates.empty()) {
+    support.reasons.emplace_back(
+        "analytic: the solvers trace particles and contacts, not whole-scene aggregates "
+        "(output.trace_aggregates)");
+    return support;
+  }
   for (const auto& solver : analytic::all_solvers()) {
     auto reasons = solver->unsupported_reasons(scene);
     if (reasons.empty()) return {};
@@ -26,7 +32,9 @@ Support AnalyticEngine::supports(const cases::Scene& scene) const {
 }
 
 cases::RunResult AnalyticEngine::run(const cases::Scene& scene, const RunOptions&) const {
-  if (scene.domain.any_periodic()) throw std::invalid_argument(supports(scene).reasons.front());
+  if (const Support s = supports(scene); scene.domain.any_periodic() || !scene.output.trace_aggregates.empty()) {
+    throw std::invalid_argument(s.reasons.front());
+  }
   for (const auto& solver : analytic::all_solvers()) {
     if (!solver->unsupported_reasons(scene).empty()) continue;
     cases::RunResult result = solver->run(scene);

@@ -5,12 +5,12 @@
 
 namespace reference {
 
-/// Closed-form solutions (DESIGN.md `reference/analytic`). Supports the collinear scenes of
-/// linear spring–dashpot contacts: one mobile sphere among fixed spheres on the line of its
-/// velocity (single collision, sandwich), or two mobile spheres in a head-on collision. Its
-/// trace is sampled at exactly the time points the in-house core uses, so amplitude errors
-/// compare like with like (thesis §4.3.3). It also reports the exact contact duration,
-/// restitution, maximum overlap and maximum force of the compared pair.
+/// Closed-form solutions (engine `analytic`, docs/architecture.md "Engines"). Supports the
+/// collinear scenes of linear spring–dashpot contacts: one mobile sphere among fixed spheres on the
+/// line of its velocity (single collision, sandwich), or two mobile spheres in a head-on collision.
+/// Its trace is sampled at exactly the time points the in-house core uses, so amplitude errors
+/// compare like with like (thesis §4.3.3). It also reports the exact contact duration, restitution,
+/// maximum overlap and maximum force of the compared pair.
 class AnalyticEngine final : public Engine {
  public:
   [[nodiscard]] std::string_view name() const noexcept override { return "analytic"; }

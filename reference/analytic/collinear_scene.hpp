@@ -26,7 +26,8 @@ ParticleRoles particle_roles(const cases::Scene& scene);
 std::optional<cases::Vector3> line_of_motion(const cases::Scene& scene, std::size_t mobile,
                                              const std::vector<std::size_t>& fixed);
 
-/// A supported scene reduced to motion along one line (PHYSICS.md §2 geometry on one axis).
+/// A supported scene reduced to motion along one line (the pair geometry of docs/physics.md on one
+/// axis).
 struct CollinearScene {
   bool two_mobile = false;   ///< true: s is the centre separation of `first` and `second`
   AxisProblem problem;       ///< the 1-D problem (m, or m* for two mobile spheres)

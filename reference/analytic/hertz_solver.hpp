@@ -9,7 +9,7 @@
 
 namespace reference::analytic {
 
-/// Head-on Hertz collisions of two bodies (thesis eq 3.12–3.14, PHYSICS.md §3): one mobile
+/// Head-on Hertz collisions of two bodies (thesis eq 3.12–3.14; docs/physics-normal.md): one mobile
 /// sphere against a fixed sphere or a plane wall at rest, or two mobile spheres. Elastic
 /// contacts use the closed form (HertzElasticContact); damped ones (any damping sub-model, with
 /// or without clamp_tensile) a Dormand–Prince integration to 1e-12 (solve_normal_contact).

@@ -115,7 +115,8 @@ class History {
       attached = rig.attached_after(attached, rig.overlap(times_[k + 1]));
     }
   }
-  /// Attached at time t (the rule of PHYSICS.md §5 applied to the exact, piecewise-monotone δ).
+  /// Attached at time t (the JKR hysteresis rule of docs/physics-cohesion.md applied to the exact,
+  /// piecewise-monotone δ).
   [[nodiscard]] bool attached(double t) const {
     const auto it = std::upper_bound(times_.begin(), times_.end() - 1, t);
     const std::size_t piece = it == times_.begin() ? 0 : static_cast<std::size_t>(it - times_.begin()) - 1;

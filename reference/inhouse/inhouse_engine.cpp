@@ -41,6 +41,24 @@ std::vector<dem::ContactObservation> watched_contacts(const cases::Scene& scene)
   return out;
 }
 
+/// A whole-scene quantity of cases::kAggregateQuantities at the simulation's current state.
+double aggregate(const dem::Simulation& sim, std::string_view quantity) {
+  const dem::ParticleProperties& props = sim.particles();
+  const dem::KinematicState& s = sim.state();
+  if (quantity == "coordination_number") {
+    const auto n = static_cast<double>(props.size());
+    return n > 0.0 ? 2.0 * static_cast<double>(sim.force_field().touching_pairs()) / n : 0.0;
+  }
+  const bool rotational = quantity == "rotational_energy";
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props.size()); ++i) {
+    if (props.fixed[static_cast<std::size_t>(i)] != 0) continue;
+    sum += rotational ? 0.5 * props.inertia[i] * s.angular_velocity.col(i).squaredNorm()
+                      : 0.5 * props.mass[i] * s.velocity.col(i).squaredNorm();
+  }
+  return sum;
+}
+
 /// Appends the simulation's current state as one trace row.
 void record(const cases::Scene& scene, const dem::Simulation& sim, cases::Trace& trace) {
   std::vector<double> row;
@@ -58,6 +76,7 @@ void record(const cases::Scene& scene, const dem::Simulation& sim, cases::Trace&
     row.push_back(o.overlap);
     row.push_back(o.normal_force);
   }
+  for (const std::string& a : scene.output.trace_aggregates) row.push_back(aggregate(sim, a));
   trace.append_row(row);
 }
 

@@ -7,10 +7,10 @@
 
 namespace reference {
 
-/// The in-house core run with a reference code's own numerics ("inhouse@lammps",
-/// "inhouse@yade"): integrator, velocity convention, damping formula, friction-limit basis and
-/// tangential-history rule of that code (reference::matched_scene), so that comparing it with
-/// the code isolates the force model down to round-off (DESIGN.md "Matched numerics").
+/// The in-house core run with a reference code's own numerics ("inhouse@lammps", "inhouse@yade"):
+/// integrator, velocity convention, damping formula, friction-limit basis and tangential-history
+/// rule of that code (reference::matched_scene), so that comparing it with the code isolates the
+/// force model down to round-off (docs/engines.md, "Native and matched comparisons").
 class MatchedInhouseEngine final : public Engine {
  public:
   /// The core matched to reference code `code` ("lammps" or "yade").

@@ -11,7 +11,7 @@ namespace reference::lammps {
 
 /// One LAMMPS atom type: every particle of one (material, radius, fixed) class. Splitting types
 /// this finely makes the reduced mass m* — and hence the dashpot η — exact per type pair
-/// (PHYSICS.md §10), and lets groups and `set type` address a class at once.
+/// (docs/engines.md), and lets groups and `set type` address a class at once.
 struct AtomType {
   std::size_t material = 0;  ///< index into Scene::materials
   double radius = 0.0;       ///< body radius r [m]
@@ -39,7 +39,7 @@ struct AtomTypes {
     return type_of.at(particle) + 1;
   }
   /// Reduced mass m* of a contact between types a and b (0-based; meaningless when
-  /// per_atom_diameter, see PairContext::per_atom_masses) as PHYSICS.md §2 defines it,
+  /// per_atom_diameter, see PairContext::per_atom_masses) as docs/physics.md defines it,
   /// 1/(1/m_a + 1/m_b) with 1/m = 0 for a fixed type (so m* = the mobile mass against a fixed
   /// partner, which is also what `fix freeze` makes LAMMPS use). Empty when both are fixed.
   [[nodiscard]] std::optional<double> reduced_mass(std::size_t a, std::size_t b) const;

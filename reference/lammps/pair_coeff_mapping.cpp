@@ -33,7 +33,8 @@ std::string not_mapped(dem::Slot slot, std::string_view why) {
 }
 
 /// E to write so that LAMMPS' E* equals `modulus`: pair_coeff reads E* = E/(2(1 − ν²)) for
-/// every pair (lammps-notes §5), this build's fix wall/gran E* = E/(2(1 − ν)) (B3).
+/// every pair (measured: hertz/material E = 1e7, ν = 0.3 gives E* = 5.4945e6), this build's fix
+/// wall/gran E* = E/(2(1 − ν)) (B3, docs/engines.md).
 double lammps_youngs_modulus(double modulus, const PairContext& c) {
   const double nu = c.poisson_ratio;
   return c.wall ? 2.0 * (1.0 - nu) * modulus : 2.0 * (1.0 - nu * nu) * modulus;
@@ -96,7 +97,7 @@ SlotProblem map_cohesion(const dem::PairLaw& law, const PairContext& c, Granular
             if (c.wall) {
               return std::string(
                   "LAMMPS driver: cohesion 'jkr' on a wall is not mapped (fix wall/gran jkr in "
-                  "this build never releases the contact and produces NaN, lammps-notes B5)");
+                  "this build never releases the contact and produces NaN)");
             }
             return adhesive("jkr", m.modulus, m.surface_energy, m.kKeyword);
           },
@@ -215,13 +216,15 @@ SlotProblem map_damping(const dem::PairLaw& law, const PairContext& c, GranularC
 }
 
 /// Tangential slot → linear_nohistory 0 0 (none), linear_history (spring_coulomb) or mindlin
-/// with the stiffness prefactor written explicitly (NULL is wrong for walls, B4).
+/// with the stiffness prefactor written explicitly (NULL is wrong for walls, B4,
+/// docs/engines.md).
 SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
   const bool adhesive = adhesive_normal(law.cohesion);
   return std::visit(
       Overloaded{
           [&](const dem::NoTangential&) -> SlotProblem {
-            // jkr/dmt with linear_nohistory crash with "Neighbor history overflow" (B2).
+            // jkr/dmt with linear_nohistory crash with "Neighbor history overflow" (B2,
+            // docs/engines.md).
             out.tangential = adhesive ? "linear_history 0 0 0" : "linear_nohistory 0 0";
             return std::nullopt;
           },

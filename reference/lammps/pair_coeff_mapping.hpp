@@ -33,7 +33,7 @@ struct PairContext {
   /// converted so that LAMMPS' E* equals the core's (see `wall`); the material's ν is used.
   double poisson_ratio = 0.0;
   /// For `fix wall/gran granular`: E_in = 2(1 − ν)E* (this build's wall reads
-  /// E* = E/(2(1 − ν)), lammps-notes B3); for pair_coeff E_in = 2(1 − ν²)E*.
+  /// E* = E/(2(1 − ν)), B3 in docs/engines.md); for pair_coeff E_in = 2(1 − ν²)E*.
   bool wall = false;
   /// The types hold atoms of many masses (AtomTypes::per_atom_diameter): a coefficient that
   /// depends on m* cannot be written, and the mapping says so instead of guessing.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reference/lammps/trace_columns.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -136,6 +137,23 @@ TracePrintPlan trace_print_plan(const cases::Scene& scene, const AtomTypes& type
                     id, plane->axis + 1, kPairForceFix, id, plane->axis + 1));
   }
   for (auto& c : exact_columns) plan.columns.push_back(std::move(c));
+  const bool any_mobile = std::any_of(scene.particles.begin(), scene.particles.end(),
+                                      [](const cases::ParticleSpec& p) { return !p.fixed; });
+  for (const std::string& a : scene.output.trace_aggregates) {
+    if (a == "kinetic_energy") {
+      if (any_mobile) plan.computes.emplace_back("compute tr_ke tr_mobile ke");
+      add(cases::aggregate_column(a), any_mobile ? "c_tr_ke" : "0");
+    } else if (a == "rotational_energy") {
+      if (any_mobile) plan.computes.emplace_back("compute tr_erot tr_mobile erotate/sphere");
+      add(cases::aggregate_column(a), any_mobile ? "c_tr_erot" : "0");
+    } else if (a == "coordination_number") {
+      if (scene.output.trace_pairs.empty()) {
+        plan.computes.push_back(fmt::format("compute {} all contact/atom", kContactCompute));
+      }
+      plan.computes.push_back(fmt::format("compute tr_coordination all reduce ave c_{}", kContactCompute));
+      add(cases::aggregate_column(a), "c_tr_coordination");
+    }
+  }
 
   plan.sources = {
       "time: LAMMPS `time` (step·Δt)",
@@ -148,7 +166,10 @@ TracePrintPlan trace_print_plan(const cases::Scene& scene, const AtomTypes& type
       "partner whose only contact (`compute contact/atom`) is this pair, projected on n; 0 "
       "while δ ≤ 0 (two-sphere scenes: never gated, so a JKR neck's tension shows)",
       "wall overlap: r − distance of the centre from the plane; wall fn: (stored pair + wall "
-      "force − stored pair force)·n, i.e. the walls' force on the sphere along the normal"};
+      "force − stored pair force)·n, i.e. the walls' force on the sphere along the normal",
+      "all.kinetic_energy, all.rotational_energy: `compute ke` and `compute erotate/sphere` of the "
+      "mobile atoms; all.coordination_number: the mean of `compute contact/atom` (pairs with "
+      "δ ≥ 0) over all atoms"};
   return plan;
 }
 

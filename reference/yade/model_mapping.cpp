@@ -15,7 +15,6 @@ namespace reference::yade {
 namespace {
 
 /// Largest scene for the O(N²) per-step Python cohesion force.
-constexpr std::size_t kMaxPythonCohesionParticles = 50;
 
 /// std::visit helper: one lambda per alternative.
 template <class... F>
@@ -343,16 +342,13 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
       out.reasons.push_back("YADE driver: linear cohesion against plane walls is not mapped (the "
                             "per-step Python force handles sphere pairs only)");
     }
-    if (scene.particles.size() > kMaxPythonCohesionParticles) {
-      out.reasons.push_back(fmt::format(
-          "YADE driver: linear cohesion is a per-step Python force over all particle pairs, "
-          "mapped for at most {} particles (the scene has {})",
-          kMaxPythonCohesionParticles, scene.particles.size()));
-    }
+    for (const auto& p : scene.particles) out.aabb_enlarge = std::max(out.aabb_enlarge, p.effect_radius / p.radius);
     out.warnings.push_back(
         "cohesion 'linear': not built into YADE; the script adds F = k_c (r̂_p + r̂_q − d) along "
         "the line of centres with O.forces.addF in a PyRunner between InteractionLoop and "
-        "NewtonIntegrator (exact, ~10× slower per step); YADE's Coulomb cap does not see it");
+        "NewtonIntegrator, over the collider's potential interactions (sphere boxes enlarged by the "
+        "largest r̂/r): exact, O(N), but Python — several times slower per step than YADE's own "
+        "laws; YADE's Coulomb cap does not see it");
   }
   if (out.law == YadeLaw::mindlin) {
     for (std::size_t k = 0; k < n; ++k) {

@@ -10,7 +10,8 @@
 
 namespace reference::yade {
 
-/// The YADE 2023.02a contact-law family a scene is expressed with (yade-notes §3–§5).
+/// The YADE 2023.02a contact-law family a scene is expressed with (laws and conversions:
+/// docs/engines.md, section YADE).
 enum class YadeLaw {
   frict,        ///< FrictMat + Ip2_…_FrictPhys(kn, ks, frictAngle) + Law2_ScGeom_FrictPhys_CundallStrack
   frict_visco,  ///< FrictViscoMat(betan) + Ip2_…_FrictViscoPhys(kn, kRatio, frictAngle) + Law2_…_CundallStrackVisco
@@ -38,6 +39,7 @@ struct YadeModelMapping {
   std::vector<double> material_poisson;        ///< FrictMat.poisson per material (Mindlin; else 0.25)
   double surface_energy = 0.0;                 ///< Mindlin DMT gamma (one value for every pair); 0: none
   bool python_cohesion = false;                ///< linear cohesion as a per-step Python force
+  double aabb_enlarge = 1.0;                   ///< largest r̂/r: the collider's box enlargement for it
   std::vector<YadePairParameters> pairs;       ///< every material pair a ≤ b
   std::vector<std::string> reasons;            ///< why the model cannot be expressed (empty: it can)
   std::vector<std::string> warnings;           ///< where YADE's law differs from the workbench's

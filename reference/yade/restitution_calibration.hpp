@@ -16,7 +16,7 @@
 namespace reference::yade {
 
 /// The two-body YADE run that calibrates FrictViscoMat.betan so that YADE's rebound has the
-/// case's restitution ε (issue 4 §4, PHYSICS.md §10): the compared contact of the case (its
+/// case's restitution ε (issue 4 §4; docs/engines.md): the compared contact of the case (its
 /// particle, its partner sphere or wall, their radii, masses, velocities and Δt) alone, without
 /// gravity, friction or rotation. YADE's dashpot sees α·u_n (model_mapping.cpp), so the textbook
 /// betan = β(ε)/2 rebounds below ε; the calibration absorbs α and the leapfrog's O(Δt) error.

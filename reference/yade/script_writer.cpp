@@ -123,7 +123,9 @@ void write_materials(std::string& s, const cases::Scene& scene, const YadeRunPla
 
 /// Linear cohesion (eq 3.33) as an exact per-step force: F = k_c (r̂_p + r̂_q − d) attracting
 /// along the line of centres while the effect spheres overlap, added with O.forces.addF by a
-/// PyRunner between InteractionLoop and NewtonIntegrator (yade-notes §8).
+/// PyRunner between InteractionLoop and NewtonIntegrator (YADE has no such law; measured exact
+/// against a replica, docs/engines.md). Candidate pairs are the collider's potential
+/// interactions with sphere boxes enlarged by the largest r̂/r, in ascending (i, j) order.
 void write_python_cohesion(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   auto out = std::back_inserter(s);
   s += "# Linear cohesion (not built into YADE): k_c per material pair, effect radius per particle.\n"
@@ -137,24 +139,30 @@ void write_python_cohesion(std::string& s, const cases::Scene& scene, const Yade
   fmt::format_to(out, "EFFECT_RADII = [{}]\n", joined(scene.particles, [](const auto& p) {
                    return py_float(p.effect_radius);
                  }));
+  fmt::format_to(out, "# The collider keeps every pair whose boxes, enlarged by the largest r_hat/r, overlap as a\n"
+                      "# potential interaction: the candidates of the cohesive force (O(N), not all pairs).\n"
+                      "AABB_ENLARGE = {}\n",
+                 py_float(plan.model.aabb_enlarge));
   s += "def apply_cohesion():\n"
-       "    \"\"\"Adds -k_c * effect overlap along the line of centres for every particle pair (x(n)).\"\"\"\n"
+       "    \"\"\"Adds -k_c * effect overlap along the line of centres for every candidate pair (x(n)).\"\"\"\n"
        "    COHESIVE_FN.clear()\n"
-       "    for i in range(len(PARTICLES)):\n"
-       "        for j in range(i + 1, len(PARTICLES)):\n"
-       "            kc = COHESIVE_STIFFNESS[(PARTICLES[i][1], PARTICLES[j][1])]\n"
-       "            if kc == 0.0:\n"
-       "                continue\n"
-       "            dv = O.bodies[i].state.pos - O.bodies[j].state.pos\n"
-       "            d = dv.norm()\n"
-       "            overlap = EFFECT_RADII[i] + EFFECT_RADII[j] - d\n"
-       "            if not overlap > 0.0:\n"
-       "                continue\n"
-       "            fn = -kc * overlap  # repulsive positive, on i along (x_i - x_j)/d\n"
-       "            f = (dv / d) * fn\n"
-       "            O.forces.addF(i, f)\n"
-       "            O.forces.addF(j, -f)\n"
-       "            COHESIVE_FN[(i, j)] = fn\n\n";
+       "    n = len(PARTICLES)\n"
+       "    pairs = sorted((min(c.id1, c.id2), max(c.id1, c.id2)) for c in O.interactions.all(False)\n"
+       "                   if c.id1 < n and c.id2 < n)\n"
+       "    for i, j in pairs:\n"
+       "        kc = COHESIVE_STIFFNESS[(PARTICLES[i][1], PARTICLES[j][1])]\n"
+       "        if kc == 0.0:\n"
+       "            continue\n"
+       "        dv = O.bodies[i].state.pos - O.bodies[j].state.pos\n"
+       "        d = dv.norm()\n"
+       "        overlap = EFFECT_RADII[i] + EFFECT_RADII[j] - d\n"
+       "        if not overlap > 0.0:\n"
+       "            continue\n"
+       "        fn = -kc * overlap  # repulsive positive, on i along (x_i - x_j)/d\n"
+       "        f = (dv / d) * fn\n"
+       "        O.forces.addF(i, f)\n"
+       "        O.forces.addF(j, -f)\n"
+       "        COHESIVE_FN[(i, j)] = fn\n\n";
 }
 
 /// Plane walls as utils.wall bodies after the particles (body id = particle count + wall index).
@@ -270,8 +278,11 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
 
 void write_engines_and_run(std::string& s, const YadeRunPlan& plan) {
   s += "O.engines = [\n"
-       "    ForceResetter(),\n"
-       "    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),\n"
+       "    ForceResetter(),\n";
+  s += plan.model.python_cohesion
+           ? "    InsertionSortCollider([Bo1_Sphere_Aabb(aabbEnlargeFactor=AABB_ENLARGE), Bo1_Wall_Aabb()]),\n"
+           : "    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),\n";
+  s +=
        "    # Ig2 defaults: avoidGranularRatcheting / noRatch = True (alpha-scaled incident velocity)\n"
        "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [IP2], [LAW2]),\n"
        "    # between the contact laws and the integrator: sees x(n), v(n-1/2) and F(x(n)) of\n"

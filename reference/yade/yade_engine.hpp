@@ -6,11 +6,11 @@
 
 namespace reference {
 
-/// YADE 2023.02a (Debian) as a reference engine (yade-notes.md): writes a Python script for the
-/// scene, runs it by importing yade as a module under python3.11 (never the `yade` launcher,
-/// which opens network listeners), and reads back a trace with exactly the in-house engine's
-/// columns and sample times. Phase 1: linear spring with damping none/restitution,
-/// frictionless, fixed spheres, gravity.
+/// YADE 2023.02a (Debian) as a reference engine (docs/engines.md, section YADE): writes a Python
+/// script for the scene, runs it by importing yade as a module under python3.11 (never the
+/// `yade` launcher, which opens network listeners), and reads back a trace with exactly the
+/// in-house engine's columns and sample times. Phase 1: linear spring with damping
+/// none/restitution, frictionless, fixed spheres, gravity.
 class YadeEngine final : public Engine {
  public:
   /// The engine for the YADE found at `install` (the Debian layout by default).

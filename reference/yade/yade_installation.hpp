@@ -10,7 +10,7 @@ namespace reference::yade {
 
 /// Where YADE's Python modules live and which interpreter they were built for. YADE is driven
 /// by importing it as a module under that interpreter, never through the `yade` launcher (which
-/// opens a TCP prompt and an XMLRPC server on all interfaces; yade-notes.md §12).
+/// opens a TCP prompt (port 9000+) and an XMLRPC server (21000+) on all interfaces).
 struct YadeInstallation {
   std::filesystem::path python;      ///< interpreter of YADE's Boost.Python modules
   std::filesystem::path module_dir;  ///< directory that holds the `yade` package

@@ -16,7 +16,7 @@ namespace {
 const dem::laws::JkrParameters kJkr{8.4e7 / 1.82, 2.5e-3, 121.5};
 
 /// A displacement-controlled JKR pull: δ from δ_max down in steps of `step`, the force on the
-/// curve while δ ≥ δ_c, then 0 (PHYSICS.md §5).
+/// curve while δ ≥ δ_c, then 0 (docs/physics-cohesion.md).
 struct Pull {
   std::vector<double> time, overlap, force;
 };

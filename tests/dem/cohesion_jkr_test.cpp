@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The JKR law against its closed forms (thesis eq 3.34–3.35, PHYSICS.md §5), its hysteresis,
-// and the energy of a damped adhesive collision.
+// The JKR law against its closed forms (thesis eq 3.34–3.35; docs/physics-cohesion.md), its
+// hysteresis, and the energy of a damped adhesive collision.
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -18,9 +18,9 @@ namespace {
 using namespace dem::laws;
 constexpr double kPi = std::numbers::pi;
 
-/// The agglomerate-benchmark JKR pair (PHYSICS.md §9): E = 8.4e7 Pa, ν = 0.3, r = 5 mm.
+/// The agglomerate-benchmark JKR pair (thesis table 5.1): E = 8.4e7 Pa, ν = 0.3, r = 5 mm.
 JkrParameters benchmark() { return {8.4e7 / (2.0 * (1.0 - 0.09)), 2.5e-3, 121.5}; }
-/// A stiff, weakly adhesive pair (LAMMPS notes' probe: E = 1e7, ν = 0.3, γ = 0.1, r = 5 mm).
+/// A stiff, weakly adhesive pair (a static LAMMPS probe: E = 1e7, ν = 0.3, γ = 0.1, r = 5 mm).
 JkrParameters probe() { return {1e7 / (2.0 * (1.0 - 0.09)), 2.5e-3, 0.1}; }
 
 TEST(JkrLaw, ContactRadiusInvertsTheOverlapTo1e10) {
@@ -125,7 +125,8 @@ TEST(JkrLaw, EnergyIsTheIntegralOfForceAlongTheCurve) {
 }
 
 TEST(JkrLaw, AgreesWithLammpsProbeValues) {
-  // engines/lammps-notes.md §7: LAMMPS `jkr 1e7 0 0.3 0.1`, r = 5 mm, verified to 1e-17 N.
+  // Static probe with LAMMPS 29 Sep 2021 `jkr 1e7 0 0.3 0.1`, r = 5 mm: the pull-off curve matched
+  // the JKR F(a(δ)) to 1e-17 N.
   const JkrParameters p = probe();
   EXPECT_NEAR(jkr_force(jkr_contact_radius(1e-6, p), p), -1.55948894744e-3, 1e-13);
   EXPECT_NEAR(jkr_force(jkr_contact_radius(1e-5, p), p), 9.88559898967e-3, 1e-13);

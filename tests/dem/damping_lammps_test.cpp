@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// LAMMPS' own damping formulas (lammps-notes §4–§5) run in the core with LAMMPS' velocity
-// Verlet, against the restitutions the notes measured with the installed LAMMPS.
+// LAMMPS' own damping formulas (pair_granular.cpp, 2021) run in the core with LAMMPS' velocity
+// Verlet, against the restitutions measured with the installed LAMMPS (29 Sep 2021).
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -16,23 +16,23 @@
 namespace {
 
 TEST(LammpsTsujiFactor, IsTheTsujiPolynomial) {
-  EXPECT_NEAR(dem::laws::lammps_tsuji_factor(0.5), 0.34074, 1e-5);   // lammps-notes §5
+  EXPECT_NEAR(dem::laws::lammps_tsuji_factor(0.5), 0.34074, 1e-5);   // LAMMPS' Tsuji α
   EXPECT_NEAR(dem::laws::lammps_tsuji_factor(0.9), 0.05290, 1e-5);
   EXPECT_NEAR(dem::laws::lammps_tsuji_factor(0.3666513616), std::sqrt(5.0) * 0.2154537619662468, 1e-9);
 }
 
 TEST(LammpsTsujiFactor, GivesPointSixOneSixForANominalOneHalfWithHertz) {
-  // "exact ODE with that α" in lammps-notes §5: 0.61608 (0.5), 0.92836 (0.9).
+  // Exact Hertz-ODE rebound with that α: 0.61608 (0.5), 0.92836 (0.9).
   EXPECT_NEAR(dem::laws::hertz_tsuji_restitution(dem::laws::lammps_tsuji_factor(0.5), false), 0.61608, 1e-5);
   EXPECT_NEAR(dem::laws::hertz_tsuji_restitution(dem::laws::lammps_tsuji_factor(0.9), false), 0.92836, 1e-5);
-  // With `limit_damping` (clamp_tensile): 0.646 (PHYSICS.md §10).
+  // With `limit_damping` (clamp_tensile): 0.646 (docs/physics-normal.md).
   EXPECT_NEAR(dem::laws::hertz_tsuji_restitution(dem::laws::lammps_tsuji_factor(0.5), true), 0.646, 5e-4);
 }
 
-/// Rebound of lammps-notes §5's Hertz impact (E = 1e7, ν = 0.3, r = 0.01 onto a frozen r = 0.1,
-/// ρ = 1000) at `speed` with LAMMPS' time step 1e-6 s and velocity Verlet. The notes' deck let
-/// the contact begin on a step boundary (gap = 10 v Δt here); other onset phases move the tsuji
-/// rebound by up to −6e-5 (0.616031 … 0.616090 at 1 m/s).
+/// Rebound of the Hertz impact measured with LAMMPS (E = 1e7, ν = 0.3, r = 0.01 onto a frozen
+/// r = 0.1, ρ = 1000) at `speed` with LAMMPS' time step 1e-6 s and velocity Verlet. The measured
+/// deck let the contact begin on a step boundary (gap = 10 v Δt here); other onset phases move the
+/// tsuji rebound by up to −6e-5 (0.616031 … 0.616090 at 1 m/s).
 double lammps_hertz_rebound(const std::string& damping, double speed,
                             const std::function<void(dem::SimulationSetup&)>& configure) {
   const double dt = 1e-6;
@@ -58,7 +58,8 @@ TEST(LammpsTsujiCollision, ReproducesTheMeasuredReboundOfLammpsHertzTsuji) {
 }
 
 TEST(LammpsViscoelasticCollision, ReproducesTheMeasuredSpeedDependentRebound) {
-  // lammps-notes §5: `damping viscoelastic` η₀ = 1e4 → e = 0.98727 at 1 m/s, 0.98325 at 4 m/s.
+  // Measured with LAMMPS: `damping viscoelastic` η₀ = 1e4 → e = 0.98727 at 1 m/s, 0.98325 at
+  // 4 m/s.
   const auto rate = [](dem::SimulationSetup& s) { s.materials[0].viscoelastic_damping = 1e4; };
   EXPECT_NEAR(lammps_hertz_rebound("lammps_viscoelastic", 1.0, rate), 0.98727, 1e-5);
   EXPECT_NEAR(lammps_hertz_rebound("lammps_viscoelastic", 4.0, rate), 0.98325, 1e-5);
@@ -75,8 +76,9 @@ TEST(LammpsViscoelasticDamping, CoefficientIsRateTimesContactRadiusTimesReducedM
   EXPECT_EQ(d.coefficient(g, {}), 0.0);
 }
 
-/// lammps-notes §4 (case 2): linear spring k = 1e5, r = 0.01 at 4 m/s onto a frozen r = 0.1
-/// sphere whose surface is 2e-4 m away, ρ = 1000, η from eq 3.11 for ε; velocity Verlet.
+/// The linear impact measured with LAMMPS: linear spring k = 1e5, r = 0.01 at 4 m/s onto a
+/// frozen r = 0.1 sphere whose surface is 2e-4 m away, ρ = 1000, η from eq 3.11 for ε; velocity
+/// Verlet.
 double lammps_linear_rebound(const std::string& damping, double e, double dt) {
   const double m = 4.0 / 3.0 * std::numbers::pi * 1000.0 * 1e-6;
   const double eta = dem::laws::restitution_damping_coefficient(e, m, 1e5);

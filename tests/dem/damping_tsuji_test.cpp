@@ -92,7 +92,8 @@ TEST(TsujiDamping, RegistryRowTellsLammpsWhichNominalRestitutionToPass) {
   EXPECT_NE(row->lammps.find("0.3666514"), std::string_view::npos);
 }
 
-/// Restitution of the lammps-notes Hertz impact with damping `keyword` through the core.
+/// Restitution of the Hertz impact measured with LAMMPS (hertz_test::impact) with damping
+/// `keyword` through the core.
 double core_restitution(dem::SchemeId scheme, double steps, double speed, const std::string& keyword,
                         double restitution, bool clamp = false) {
   const double tc = hertz_test::elastic_duration(speed);

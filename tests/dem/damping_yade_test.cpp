@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// YADE's own damping formulas (yade-notes §4–§5) run in the core with YADE's leapfrog, against
-// the restitutions the notes measured with the installed YADE and against closed forms.
+// YADE's own damping formulas (FrictViscoPhys, ViscElPhys, MindlinPhys) run in the core with
+// YADE's leapfrog, against the restitutions measured with the installed YADE 2023.02a and
+// against closed forms.
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -16,7 +17,7 @@
 namespace {
 
 TEST(ThorntonDampingRatio, MatchesYadesMindlinPhysBetan) {
-  // yade-notes §5: betan read back from YADE for en = 0.9 / 0.5 / 0.1.
+  // betan read back from YADE 2023.02a's MindlinPhys for en = 0.9 / 0.5 / 0.1.
   EXPECT_NEAR(dem::laws::thornton_damping_ratio(0.9), 0.0313066, 1e-7);
   EXPECT_NEAR(dem::laws::thornton_damping_ratio(0.5), 0.2330249, 1e-7);
   EXPECT_NEAR(dem::laws::thornton_damping_ratio(0.1), 1.1342511, 1e-7);
@@ -24,7 +25,7 @@ TEST(ThorntonDampingRatio, MatchesYadesMindlinPhysBetan) {
 
 TEST(ThorntonDampingRatio, FitsTheClippedHertzDashpotRestitutionWithin3em4) {
   // c_n = 2 β_n √(m* 1.5 k_no √δ) is Tsuji's form with α = 2√1.5 β_n; clipped closed form. The
-  // fit is within 1e-4 at 0.1, 0.5, 0.9 (where the notes measured) and 2.3e-4 at 0.3, 0.7.
+  // fit is within 1e-4 at 0.1, 0.5, 0.9 (where YADE was measured) and 2.3e-4 at 0.3, 0.7.
   for (const double e : {0.1, 0.5, 0.9}) {
     const double alpha = 2.0 * std::sqrt(1.5) * dem::laws::thornton_damping_ratio(e);
     EXPECT_NEAR(dem::laws::hertz_tsuji_restitution(alpha, true), e, 1e-4) << "ε = " << e;
@@ -76,8 +77,8 @@ dem::SimulationSetup yade_impact(double r2, double gap, double v0, double dt) {
 }
 
 TEST(YadeMindlinCollision, ReproducesTheMeasuredReboundOfYadeHertzMindlin) {
-  // yade-notes §5 case3.py: E = 1e8, ν = 0.3, v = 1, dt = 5e-7, gap 0.37 v dt, 3000 steps:
-  // e = 0.89992 / 0.49994 / 0.09992 for en = 0.9 / 0.5 / 0.1.
+  // Measured with YADE 2023.02a's Hertz–Mindlin: E = 1e8, ν = 0.3, v = 1, dt = 5e-7, gap
+  // 0.37 v dt, 3000 steps: e = 0.89992 / 0.49994 / 0.09992 for en = 0.9 / 0.5 / 0.1.
   for (const auto& [en, measured] : {std::pair{0.9, 0.89992}, {0.5, 0.49994}, {0.1, 0.09992}}) {
     dem::SimulationSetup s = yade_impact(0.1, 0.37 * 1.0 * 5e-7, 1.0, 5e-7);
     s.materials[0].youngs_modulus = 1e8;
@@ -92,8 +93,9 @@ TEST(YadeMindlinCollision, ReproducesTheMeasuredReboundOfYadeHertzMindlin) {
 }
 
 TEST(YadeViscElCollision, ReproducesTheMeasuredClippedReboundOfTheKnCnDeck) {
-  // yade-notes §4 case2.py `kncn`: k = 1e5, v = 4, gap 2.37e-4, dt = 5e-6, 3 (t_c + gap/v)/dt + 5
-  // steps: e = 0.90149 / 0.54747 / 0.24827 for ε = 0.9 / 0.5 / 0.1.
+  // Measured with a YADE 2023.02a ViscElMat(kn, cn) deck: k = 1e5, v = 4, gap 2.37e-4,
+  // dt = 5e-6, 3 (t_c + gap/v)/dt + 5 steps: e = 0.90149 / 0.54747 / 0.24827 for
+  // ε = 0.9 / 0.5 / 0.1.
   const double m = 4.0 / 3.0 * std::numbers::pi * 1000.0 * 1e-6;
   const int steps = static_cast<int>(std::lround(3.0 * (std::numbers::pi * std::sqrt(m / 1e5) + 2.37e-4 / 4.0) / 5e-6)) + 5;
   for (const auto& [e, measured] : {std::pair{0.9, 0.90149}, {0.5, 0.54747}, {0.1, 0.24827}}) {

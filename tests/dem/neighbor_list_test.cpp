@@ -82,6 +82,21 @@ TEST(NeighborList, RandomPolydisperseScenesMatchTheBruteForceOracle) {
   }
 }
 
+TEST(NeighborList, FewSlabsAlongAnOpenAxisListEveryPairOnce) {
+  // A row of spheres two or three slabs long (a non-periodic axis): the first and last slabs
+  // are not neighbours, so no pair may be owned from both ends.
+  for (const int spheres : {4, 5, 6, 8, 9, 12}) {
+    test_support::RandomSpheres s;
+    for (int k = 0; k < spheres; ++k) {
+      s.spheres.push_back({k * 0.0115, 0.0, 0.0, 0.0075});
+      s.still.push_back(0);
+    }
+    const dem::PeriodicBox open;
+    const dem::NeighborList list = build_list(s, open, 0.001);
+    EXPECT_EQ(listed_pairs(list, s, 0.001), oracle(s, open, 0.001)) << spheres << " spheres, " << list.slabs().count() << " slabs";
+  }
+}
+
 TEST(NeighborList, PeriodicImagesAcrossEveryFaceAreFound) {
   // Spheres hugging the faces and corners of a small periodic box: pairs only meet through images.
   dem::PeriodicBox box = box_of(Vec3(0, 0, 0), Vec3(1, 1, 1), true, true, true);

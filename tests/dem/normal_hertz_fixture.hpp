@@ -13,8 +13,9 @@
 
 namespace hertz_test {
 
-/// lammps-notes §5's Hertz impact: p (r = 0.01 m, ρ = 1000) onto a fixed sphere q (r = 0.1 m)
-/// of the same material, E = 1e7 Pa, ν = 0.3 → E* = E/(2(1−ν²)) = 5.4945e6 Pa, R* = 9.0909e-3 m.
+/// The Hertz impact measured with LAMMPS 29 Sep 2021: p (r = 0.01 m, ρ = 1000) onto a fixed
+/// sphere q (r = 0.1 m) of the same material, E = 1e7 Pa, ν = 0.3 → E* = E/(2(1−ν²)) =
+/// 5.4945e6 Pa, R* = 9.0909e-3 m.
 constexpr double kRadius = 0.01;
 constexpr double kPartnerRadius = 0.1;
 constexpr double kDensity = 1000.0;

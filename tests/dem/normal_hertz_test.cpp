@@ -20,7 +20,7 @@ using hertz_test::effective_modulus;
 using hertz_test::mover_mass;
 using hertz_test::reduced_radius;
 
-constexpr double kE = 5.4945054945054945e6;  // E* [Pa] of lammps-notes §5
+constexpr double kE = 5.4945054945054945e6;  // E* [Pa] of the LAMMPS Hertz impact
 constexpr double kR = 9.0909090909090909e-3;  // R* [m]
 
 TEST(HertzLaw, ForceGrowsAsOverlapToTheThreeHalves) {
@@ -31,7 +31,8 @@ TEST(HertzLaw, ForceGrowsAsOverlapToTheThreeHalves) {
 }
 
 TEST(HertzLaw, MatchesTheLammpsStaticProbe) {
-  // lammps-notes §5: hertz/material E = 1e7, ν = 0.3, r1 = r2 = 0.01 m, δ = 1e-4 m.
+  // Static probe with LAMMPS 29 Sep 2021: hertz/material E = 1e7, ν = 0.3, r1 = r2 = 0.01 m,
+  // δ = 1e-4 m.
   EXPECT_NEAR(hertz_force(1e7 / (2.0 * 0.91), 0.005, 1e-4), 0.518026945924, 1e-11);
 }
 
@@ -75,8 +76,8 @@ TEST(HertzLaw, DurationConstantIsFourFifthsOfBetaTwoFifthsOneHalf) {
 }
 
 TEST(HertzLaw, DurationAgreesWithTheLammpsRun) {
-  // lammps-notes §5: elastic impact at 1 m/s, dt = 1e-6, measured t_c = 1.654862e-3 s and
-  // δ_max = 5.622519e-4 m (the notes' own 2.8678 constant gave 1.654594e-3).
+  // LAMMPS 29 Sep 2021: elastic impact at 1 m/s, dt = 1e-6, measured t_c = 1.654862e-3 s and
+  // δ_max = 5.622519e-4 m (the closed form with the constant 2.8678 gives 1.654594e-3).
   EXPECT_NEAR(hertz_test::elastic_duration(1.0), 1.654862e-3, 3e-9);
   EXPECT_NEAR(hertz_max_overlap(mover_mass(), effective_modulus(), reduced_radius(), 1.0), 5.622519e-4, 2e-10);
 }

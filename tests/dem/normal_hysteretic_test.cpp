@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The Walton–Braun hysteretic normal law (thesis eq 3.20–3.21, PHYSICS.md §3): branches,
+// The Walton–Braun hysteretic normal law (thesis eq 3.20–3.21; docs/physics-normal.md): branches,
 // continuity, the reloading rule, restitution √(k_l/k_u) and the energy of one loop.
 #include <cmath>
 #include <numbers>

@@ -119,7 +119,7 @@ dem::SimulationSetup rolling_sphere(const char* rolling, double mu_r, double v0)
 }
 
 TEST(RollingResistance, RollingSphereDeceleratesAtMuRGTimesRLeverOverInertiaPlusMLeverSquared) {
-  // LAMMPS notes §6c measured 0.7007 m/s² for μ_r = 0.1 with lever R (= μ_r g / 1.4).
+  // LAMMPS 29 Sep 2021 measured 0.7007 m/s² for μ_r = 0.1 with lever R (= μ_r g / 1.4).
   const double mu_r = 0.1;
   const double lever = kRadius - 0.5 * kMass * kGravity / 1e5;
   const double expected = mu_r * kGravity * kMass * kRadius * lever / (kInertia + kMass * lever * lever);

@@ -138,8 +138,8 @@ TEST(MindlinStiffness, ThesisFormHasPrefactorSixteenThirdsAndMindlinEight) {
 }
 
 TEST(MindlinStiffness, Mindlin8GReproducesTheLammpsProbeForce) {
-  // lammps-notes §6a: hertz/material E = 1e7, ν = 0.3 on both spheres, r = 0.01 against r = 0.1,
-  // δ = 1e-4, slip 5e-6 m → LAMMPS F_t = 0.043143079 N.
+  // Probe with LAMMPS 29 Sep 2021: hertz/material E = 1e7, ν = 0.3 on both spheres, r = 0.01
+  // against r = 0.1, δ = 1e-4, slip 5e-6 m → LAMMPS F_t = 0.043143079 N.
   const double e = 1e7, nu = 0.3, g = e / (2.0 * (1.0 + nu));
   const double g_star = 1.0 / (2.0 * (2.0 - nu) / g);
   const double r_star = 0.01 * 0.1 / 0.11;

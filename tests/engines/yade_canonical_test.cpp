@@ -152,3 +152,56 @@ TEST(YadeJkr, PullOffIsNotApplicableWithTheReason) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(YadeLinearCohesion, ManyParticlesUseTheCollidersCandidatesAndStillMatch) {
+  // 125 spheres of the cohesion benchmark's material, 0.3 r apart on a lattice: every neighbour
+  // is inside the effect radius 1.5 r, so cohesion pulls the cluster together. The Python force
+  // walks the collider's potential interactions (O(N)), so the scene is mapped at any size; the
+  // core with YADE's numerics follows YADE to round-off over 2,000 steps.
+  DEMWB_REQUIRE_YADE();
+  cases::Scene scene = canonical("linear_cohesion_pair.toml");
+  scene.particles.clear();
+  const double r = 0.005;
+  for (int k = 0; k < 125; ++k) {
+    cases::ParticleSpec p;
+    p.radius = r;
+    p.effect_radius = 1.5 * r;
+    p.position = {(k % 5) * 2.3 * r, (k / 5 % 5) * 2.3 * r, (k / 25) * 2.3 * r};
+    p.velocity = {0.01 * (k % 3), -0.01 * (k % 2), 0.0};
+    scene.particles.push_back(p);
+  }
+  scene.integration.duration = 2000 * 1e-6;
+  scene.output.trace_particles = {0, 62, 124};
+  scene.output.trace_pairs = {};
+  scene.compare.subject = 0;
+  scene.compare.pair.reset();
+  scene.compare.metrics = {};
+  ASSERT_TRUE(reference::YadeEngine{}.supports(scene).supported()) << reference::YadeEngine{}.supports(scene).explain();
+  const cases::Scene matched = reference::matched_scene(scene, "yade");
+  const auto inhouse = reference::run_engine(reference::InhouseEngine{}, matched, {});
+  const auto yade = reference::run_engine(reference::YadeEngine{}, scene, {scratch("cohesion-many"), 300.0});
+  ASSERT_EQ(inhouse.status, cases::RunStatus::ok) << inhouse.reason;
+  ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
+  // Positions relative to the radius, velocities to the largest traced speed.
+  double speed = 0.0;
+  for (const char* c : {"p0.vx", "p124.vy"}) {
+    for (const double v : *inhouse.trace.column(c)) speed = std::max(speed, std::abs(v));
+  }
+  double worst = 0.0;
+  for (const char* c : {"p0.x", "p62.y", "p124.z", "p0.vx", "p124.vy"}) {
+    const auto& a = *inhouse.trace.column(c);
+    const auto& b = *yade.trace.column(c);
+    ASSERT_EQ(a.size(), b.size());
+    const double scale = std::string(c).find(".v") != std::string::npos ? speed : r;
+    for (std::size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(a[k] - b[k]) / scale);
+  }
+  std::printf("  largest relative trace difference %.3g\n", worst);
+  EXPECT_LE(worst, 1e-8);
+  // Cohesion acted: particle 124's velocity changed.
+  const auto& vx = *inhouse.trace.column("p124.vx");
+  EXPECT_GT(std::abs(vx.back() - vx.front()), 1e-4);
+}
+
+}  // namespace

@@ -22,7 +22,8 @@ using reference::analytic::HertzElasticContact;
 using reference::analytic::NormalContactProblem;
 using reference::analytic::solve_normal_contact;
 
-// lammps-notes §5's pair: m = 4.18879e-3 kg, E* = 5.4945e6 Pa, R* = 9.0909e-3 m.
+// The pair of the Hertz impact measured with LAMMPS: m = 4.18879e-3 kg, E* = 5.4945e6 Pa,
+// R* = 9.0909e-3 m.
 const double kMass = 4.0 / 3.0 * std::numbers::pi * 1000.0 * 1e-6;
 constexpr double kModulus = 1e7 / (2.0 * 0.91);
 constexpr double kRadius = 0.01 * 0.1 / 0.11;
@@ -117,7 +118,7 @@ TEST(NormalContactOde, ClippedTsujiIsTheClippedLinearOscillator) {
 
 TEST(NormalContactOde, LammpsTsujiPolynomialReboundsAtPointSixOneSix) {
   const auto s = solve_normal_contact(hertz_tsuji(dem::laws::lammps_tsuji_factor(0.5), 1.0), {});
-  EXPECT_NEAR(-s.exit_rate, 0.6160760, 1e-7);  // lammps-notes: exact ODE 0.61608, LAMMPS 0.616090
+  EXPECT_NEAR(-s.exit_rate, 0.6160760, 1e-7);  // exact ODE 0.61608, measured LAMMPS 0.616090
 }
 
 TEST(NormalContactOde, SamplesAreReturnedInTimeOrderAndOnlyWithinTheContact) {

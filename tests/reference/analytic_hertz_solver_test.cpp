@@ -26,8 +26,8 @@ constexpr double kYoungs = 1e7;
 constexpr double kPoisson = 0.3;
 constexpr double kEffective = kYoungs / (2.0 * (1.0 - kPoisson * kPoisson));
 
-/// lammps-notes §5's impact as a scene: r = 0.01 m (ρ = 1000) at `speed` onto a fixed r = 0.1 m
-/// sphere (or, with `wall`, a plane wall) whose surface is 10.37 speed·Δt away.
+/// The Hertz impact measured with LAMMPS, as a scene: r = 0.01 m (ρ = 1000) at `speed` onto a
+/// fixed r = 0.1 m sphere (or, with `wall`, a plane wall) whose surface is 10.37 speed·Δt away.
 cases::Scene hertz_scene(const std::string& damping, double speed = 1.0, bool wall = false,
                          double dt = 1e-5) {
   cases::Scene s;

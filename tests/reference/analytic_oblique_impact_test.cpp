@@ -106,7 +106,8 @@ TEST(AnalyticObliqueImpact, DampedImpulseIsMuTimesIntegralOfAbsoluteNormalForceI
 }
 
 TEST(AnalyticObliqueImpact, ContactPointLeverReducesTheSpinByTheForceWeightedOverlap) {
-  // ω = μ ∫(r − δ/2)|F_n| dt / I: slightly less than with lever r (YADE notes: −1.1 % at δ/r ≈ 1 %).
+  // ω = μ ∫(r − δ/2)|F_n| dt / I: slightly less than with lever r (measured with YADE: −1.1 % at
+  // δ/r ≈ 1 %).
   const cases::RunResult arm_r = analytic(oblique_scene(60.0, 0.2, 0.8, true));
   const cases::RunResult arm_c = analytic(oblique_scene(60.0, 0.2, 0.8, false));
   const double w_r = arm_r.exact_metrics.at("spin_after"), w_c = arm_c.exact_metrics.at("spin_after");

@@ -34,7 +34,7 @@ TEST(LammpsPairCoeff, RestitutionDampingIsEtaOfEquation311ForTheGivenReducedMass
   const double m = 4.1887902047863905e-3;
   const auto c = map_pair_law(law("restitution", 0.5), m);
   EXPECT_EQ(c.damping_coefficient, dem::laws::restitution_damping_coefficient(0.5, m, 1e5));
-  EXPECT_NEAR(c.damping_coefficient, 8.81918355790422, 1e-12);  // lammps-notes.md §4
+  EXPECT_NEAR(c.damping_coefficient, 8.81918355790422, 1e-12);  // η of the LAMMPS runs
   EXPECT_EQ(c.damping_style, "velocity");
   EXPECT_NE(c.damping_note.find("m* = 0.0041887902047863905 kg"), std::string::npos);
 }

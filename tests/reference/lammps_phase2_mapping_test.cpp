@@ -107,7 +107,7 @@ TEST(LammpsTsujiInput, InvertsLammpsPolynomialToTheLastBits) {
 }
 
 TEST(LammpsTsujiInput, CoreTsujiForRestitutionHalfNeedsEInFromLammpsNotes) {
-  // lammps-notes §5: α = √5 β(0.5) → e_in = 0.3666513616.
+  // α = √5 β(0.5) → e_in = 0.3666513616 (LAMMPS 29 Sep 2021 then rebounds at 0.49996).
   const double beta = -std::log(0.5) / std::sqrt(std::log(0.5) * std::log(0.5) + M_PI * M_PI);
   const auto e = reference::lammps::tsuji_input_for_factor(std::sqrt(5.0) * beta);
   ASSERT_TRUE(e.has_value());

@@ -44,7 +44,8 @@ namespace dem::laws {
 
 /// Tsuji factor α(ε) that makes the unclipped Hertz–Tsuji contact rebound with restitution ε
 /// exactly, ε ∈ (0, 1]: the inverse of hertz_tsuji_restitution, α = −√5 ln ε / √(π² + ln² ε)
-/// (= √5 ζ(ε); 0.4817693 for ε = 0.5). The "α = √5 β" that lammps-notes §5 found numerically.
+/// (= √5 ζ(ε); 0.4817693 for ε = 0.5). The "α = √5 β" found numerically for
+/// LAMMPS' Hertz dashpot (RK4 root-find; LAMMPS 29 Sep 2021 then rebounds at 0.49996 for 0.5).
 [[nodiscard]] inline double tsuji_factor(double restitution) noexcept {
   const double ln_e = std::log(restitution);
   return -std::sqrt(5.0) * ln_e / std::sqrt(std::numbers::pi * std::numbers::pi + ln_e * ln_e);

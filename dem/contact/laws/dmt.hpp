@@ -5,7 +5,7 @@
 
 namespace dem::laws {
 
-/// Adhesive part of the DMT contact (Derjaguin, Muller & Toporov 1975; PHYSICS.md §5):
+/// Adhesive part of the DMT contact (Derjaguin, Muller & Toporov 1975; docs/physics-cohesion.md):
 /// F = F_Hertz − 4πγR* while δ ≥ 0; returns −4πγR* [N] (attractive), γ per surface [J/m²],
 /// R* [m]. The force jumps from 0 to −4πγR* at δ = 0 (the simple DMT form of LAMMPS `dmt` and
 /// YADE's Hertz–Mindlin `gamma`: no attraction outside contact).

@@ -5,10 +5,10 @@
 
 namespace dem::laws {
 
-// Elastic Hertz contact of two spheres (thesis eq 3.12–3.13, PHYSICS.md §3). Inputs: reduced
-// modulus E* = [(1−ν_p²)/E_p + (1−ν_q²)/E_q]⁻¹ [Pa], reduced radius R* [m] (r against a plane
-// wall), body overlap δ [m]. Valid for small strains, δ ≪ R*, frictionless elastic spheres; every
-// function returns 0 for δ ≤ 0 (no contact).
+// Elastic Hertz contact of two spheres (thesis eq 3.12–3.13; docs/physics-normal.md). Inputs:
+// reduced modulus E* = [(1−ν_p²)/E_p + (1−ν_q²)/E_q]⁻¹ [Pa], reduced radius R* [m] (r against a
+// plane wall), body overlap δ [m]. Valid for small strains, δ ≪ R*, frictionless elastic spheres;
+// every function returns 0 for δ ≤ 0 (no contact).
 
 /// Hertz repulsion F = 4/3 E* √R* δ^{3/2} [N], repulsive positive (eq 3.12).
 [[nodiscard]] inline double hertz_force(double effective_modulus, double reduced_radius,

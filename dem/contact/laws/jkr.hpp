@@ -4,11 +4,11 @@
 #include <cmath>
 #include <numbers>
 
-// The JKR adhesive contact (Johnson, Kendall & Roberts 1971; thesis eq 3.34–3.35, PHYSICS.md §5)
-// as pure functions of the contact radius a. γ is the surface energy *per surface*; the work of
-// adhesion is Γ = 2γ. Overlap δ > 0 means the bodies interpenetrate; force positive = repulsive.
-// Every closed form below follows from the two defining equations; with a_c the critical
-// radius and y = √(a/a_c) they read δ = (a_c²/R*)(y⁴ − 4y) and F = πγR*(y⁶/3 − 2y³).
+// The JKR adhesive contact (Johnson, Kendall & Roberts 1971; thesis eq 3.34–3.35;
+// docs/physics-cohesion.md) as pure functions of the contact radius a. γ is the surface energy *per
+// surface*; the work of adhesion is Γ = 2γ. Overlap δ > 0 means the bodies interpenetrate; force
+// positive = repulsive. Every closed form below follows from the two defining equations; with a_c
+// the critical radius and y = √(a/a_c) they read δ = (a_c²/R*)(y⁴ − 4y) and F = πγR*(y⁶/3 − 2y³).
 namespace dem::laws {
 
 /// The three constants of one JKR contact.

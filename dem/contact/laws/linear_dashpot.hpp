@@ -28,7 +28,7 @@ namespace dem::laws {
 }
 
 /// Contact duration of the linear spring–dashpot [s]: t_c = π / √(k_e/m* − (η/2m*)²)
-/// (thesis eq 3.40 with its typo corrected, see PHYSICS.md §3). Requires η < 2√(m* k_e).
+/// (thesis eq 3.40 with its typo corrected; docs/physics.md). Requires η < 2√(m* k_e).
 [[nodiscard]] inline double linear_contact_duration(double stiffness, double reduced_mass,
                                                     double damping_coefficient) noexcept {
   const double half_rate = damping_coefficient / (2.0 * reduced_mass);

@@ -18,7 +18,7 @@ struct HystereticResponse {
   return loading_stiffness / (restitution * restitution);
 }
 
-/// Walton–Braun linear hysteretic law (thesis eq 3.20–3.21 with PHYSICS.md §3's continuity fix).
+/// Walton–Braun linear hysteretic law (thesis eq 3.20–3.21, made continuous at δ_max by δ_0).
 /// Loading (δ ≥ δ_max, the largest overlap so far, passed in *including* the current δ):
 /// F = k_l δ. Unloading and reloading (δ < δ_max): F = k_u (δ − δ_0), δ_0 = δ_max (1 − k_l/k_u),
 /// clipped at F ≥ 0, so F is continuous at δ_max; reloading retraces the unloading line until

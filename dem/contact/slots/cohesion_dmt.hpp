@@ -11,9 +11,10 @@
 namespace dem {
 
 /// Cohesion sub-model `dmt`: a constant attraction −4πγR* added to the (Hertz) normal force
-/// while δ ≥ 0, so F = 4/3 E*√R* δ^{3/2} − 4πγR* with normal = "hertz" (PHYSICS.md §5). The
-/// force jumps at δ = 0 (no attraction outside contact, no hysteresis); the pull-off force is
-/// 4πγR*, reported for FrictionLimit::jkr_shifted as LAMMPS does for `dmt`.
+/// while δ ≥ 0, so F = 4/3 E*√R* δ^{3/2} − 4πγR* with normal = "hertz"
+/// (docs/physics-cohesion.md). The force jumps at δ = 0 (no attraction outside contact, no
+/// hysteresis); the pull-off force is 4πγR*, reported for FrictionLimit::jkr_shifted as LAMMPS
+/// does for `dmt`.
 struct DmtCohesion {
   static constexpr std::string_view kKeyword = "dmt";
   static constexpr std::string_view kDescription =

@@ -11,8 +11,8 @@
 
 namespace dem {
 
-/// Overlap below which an attached JKR contact breaks, per policy (PHYSICS.md §5): δ_c of the
-/// displacement-controlled rupture, or δ_f of the load-controlled pull-off (as LAMMPS) [m].
+/// Overlap below which an attached JKR contact breaks, per policy (docs/physics-cohesion.md): δ_c
+/// of the displacement-controlled rupture, or δ_f of the load-controlled pull-off (as LAMMPS) [m].
 [[nodiscard]] inline double jkr_break_overlap(const laws::JkrParameters& p,
                                               JkrRupture policy) noexcept {
   return policy == JkrRupture::load ? laws::jkr_pulloff_overlap(p) : laws::jkr_rupture_overlap(p);
@@ -29,13 +29,13 @@ namespace dem {
   return policy == JkrRupture::load ? overlap > limit : overlap >= limit;
 }
 
-/// Cohesion sub-model `jkr` (thesis eq 3.34–3.35, PHYSICS.md §5). The JKR force *replaces* the
-/// normal force: this slot returns F_JKR(δ) minus the elastic force the normal slot already
-/// gave (Hertz, so normal = "hertz" is required for a physically consistent damping and energy
-/// split), so the elastic + cohesive sum is exactly F_JKR, and likewise for the energy. The
+/// Cohesion sub-model `jkr` (thesis eq 3.34–3.35; docs/physics-cohesion.md). The JKR force
+/// *replaces* the normal force: this slot returns F_JKR(δ) minus the elastic force the normal slot
+/// already gave (Hertz, so normal = "hertz" is required for a physically consistent damping and
+/// energy split), so the elastic + cohesive sum is exactly F_JKR, and likewise for the energy. The
 /// contact radius a(δ) is solved on the stable branch. Hysteresis per pair
-/// (ContactHistory::attached): no force on approach until δ reaches 0, then the force jumps to
-/// the JKR value −8/9 F_po; the neck holds into δ < 0 until the rupture set by
+/// (ContactHistory::attached): no force on approach until δ reaches 0, then the force jumps to the
+/// JKR value −8/9 F_po; the neck holds into δ < 0 until the rupture set by
 /// ContactPolicies::jkr_rupture (δ_c by default, δ_f for `load`). An attached neck is a contact
 /// (damping and friction act on it).
 struct JkrCohesion {

@@ -23,7 +23,8 @@ struct TsujiDamping {
   static constexpr std::array<std::string_view, 1> kProperties{"restitution"};
   static constexpr std::string_view kLammps =
       "`damping tsuji` with the e_in solving LAMMPS' polynomial α_L(e_in) = α(ε) (e_in = "
-      "0.3666514 for ε = 0.5, 0.8621222 for ε = 0.9; lammps-notes §5), no limit_damping";
+      "0.3666514 for ε = 0.5, 0.8621222 for ε = 0.9; LAMMPS 2021 measured 0.49996 and 0.90000), "
+      "no limit_damping";
   static constexpr std::string_view kYade =
       "no exact counterpart: Ip2_FrictMat_FrictMat_MindlinPhys(betan = α/(2√1.5)) has the same "
       "dashpot but Law2_ScGeom_MindlinPhys_Mindlin clips F_n ≥ 0 (matches only with "

@@ -46,7 +46,7 @@ struct HertzNormal {
   /// Acts only while the bodies overlap.
   [[nodiscard]] double range(const PairExtent& e) const noexcept { return e.contact_distance; }
   /// Tangent stiffness 2 E* √(R* δ_max) at the largest overlap of an elastic impact at the
-  /// scale's speed, δ_max = (15 m* v² / (16 E* √R*))^{2/5} (PHYSICS.md §7). The linear contact
+  /// scale's speed, δ_max = (15 m* v² / (16 E* √R*))^{2/5} (docs/physics.md). The linear contact
   /// time π√(m*/k) built from it is 0.78 of the true Hertz duration, so step limits err safe.
   [[nodiscard]] double collision_stiffness(const CollisionScale& s) const noexcept {
     const double peak = laws::hertz_max_overlap(s.reduced_mass, effective_modulus,

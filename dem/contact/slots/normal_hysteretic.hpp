@@ -12,8 +12,8 @@
 namespace dem {
 
 /// Normal sub-model `hysteretic`: Walton–Braun loading k_l δ / unloading k_u (δ − δ_0) springs
-/// (thesis eq 3.20–3.21, PHYSICS.md §3), k_u = k_l/ε² so that the rebound has restitution ε.
-/// δ_max is the contact history's largest overlap so far (committed) together with the current
+/// (thesis eq 3.20–3.21; docs/physics-normal.md), k_u = k_l/ε² so that the rebound has restitution
+/// ε. δ_max is the contact history's largest overlap so far (committed) together with the current
 /// one; reloading retraces the unloading line until δ_max is exceeded.
 struct HystereticNormal {
   static constexpr std::string_view kKeyword = "hysteretic";

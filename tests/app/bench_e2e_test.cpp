@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// `demwb bench`: what it writes and how it fails. Timings are never asserted (benchmarks are
+// not timed tests); the chute's energy check is exercised where its deck is available.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "demwb_process.hpp"
+#include "support/process.hpp"
+#include "support/text_file.hpp"
+
+namespace {
+
+using demwb_e2e::demwb;
+using demwb_e2e::scratch;
+namespace fs = std::filesystem;
+
+TEST(DemwbBench, BoxWritesBenchJsonWithTheContractFields) {
+  const fs::path out = scratch("bench_box");
+  const auto r = demwb({"bench", "box", "--engines", "inhouse", "--particles", "300", "--steps", "30", "--repeat", "2",
+                        "--threads", "2", "-o", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(support::read_file(out / "bench.json"));
+  EXPECT_EQ(j["scene"], "box");
+  EXPECT_EQ(j["n_particles"], 300);
+  EXPECT_EQ(j["steps"], 30);
+  const auto& core = j["engines"]["inhouse"];
+  EXPECT_EQ(core["threads"], 2);
+  EXPECT_GT(core["particle_steps_per_s"].get<double>(), 0.0);
+  EXPECT_GT(core["wall_s"].get<double>(), 0.0);
+  EXPECT_GT(core["bytes_per_particle"].get<double>(), 100.0);
+  EXPECT_EQ(j["repetitions"].size(), 2U);
+  EXPECT_TRUE(j["ratio_inhouse_to_lammps"].is_null());  // LAMMPS not asked for
+  EXPECT_NE(support::read_file(out / "report.md").find("particle-steps/s"), std::string::npos);
+  EXPECT_NE(r.out.find("inhouse"), std::string::npos);
+}
+
+TEST(DemwbBench, BadUsageExitsTwoNamingTheProblem) {
+  const auto scene = demwb({"bench", "pyramid"});
+  EXPECT_EQ(scene.exit_code, 2);
+  EXPECT_NE(scene.err.find("unknown bench scene 'pyramid'"), std::string::npos) << scene.err;
+  const auto chute = demwb({"bench", "chute", "--chute-dir", scratch("no_chute").string()});
+  EXPECT_EQ(chute.exit_code, 2);
+  EXPECT_NE(chute.err.find("in.chute and data.chute"), std::string::npos) << chute.err;
+  const auto threads = demwb({"bench", "box", "--threads", "0"});
+  EXPECT_EQ(threads.exit_code, 2);
+  EXPECT_NE(threads.err.find("--threads"), std::string::npos) << threads.err;
+  const auto engines = demwb({"bench", "box", "--engines", "yade"});
+  EXPECT_EQ(engines.exit_code, 2);
+  EXPECT_NE(engines.err.find("cannot be benchmarked"), std::string::npos) << engines.err;
+}
+
+TEST(DemwbBench, ChuteMatchesLammpsStep100EnergiesWhenTheDeckIsThere) {
+  const auto dir = std::getenv("DEMWB_CHUTE_DIR");
+  const fs::path chute = dir != nullptr ? fs::path(dir) : fs::path(DEMWB_SOURCE_DIR) / ".." / "shared" / "bench" / "lammps-chute";
+  if (!fs::exists(chute / "data.chute")) GTEST_SKIP() << "LAMMPS's chute deck is not on this machine";
+  const fs::path out = scratch("bench_chute");
+  const auto r = demwb({"bench", "chute", "--engines", "inhouse", "--steps", "100", "--chute-dir", chute.string(),
+                        "-o", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(support::read_file(out / "bench.json"));
+  ASSERT_EQ(j["checks"].size(), 2U);
+  for (const auto& c : j["checks"]) EXPECT_TRUE(c["match"].get<bool>()) << c.dump();
+  EXPECT_EQ(j["checks"][0]["inhouse"], "784292.08");
+  EXPECT_EQ(j["checks"][1]["inhouse"], "1571.0968");
+}
+
+}  // namespace
