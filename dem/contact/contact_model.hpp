@@ -179,33 +179,19 @@ template <class Slots>
 }
 
 /// Evaluates the contact law of one pair (the one per-pair evaluator: every engine path, every
-/// pair and wall contact goes through evaluate_contact_in). See evaluate_contact_in.
-[[nodiscard]] inline ContactOutcome evaluate_contact(const PairLaw& law, const ContactGeometry& g,
-                                                     const ContactHistory& committed,
-                                                     double elapsed) noexcept {
-  return evaluate_contact_in(DynamicSlots{law}, g, committed, elapsed);
-}
+/// pair and wall contact goes through evaluate_contact_in). See evaluate_contact_in. Defined
+/// out of line: instantiating every std::visit of the dynamic dispatch is slow to compile, and
+/// one translation unit does it for all.
+[[nodiscard]] ContactOutcome evaluate_contact(const PairLaw& law, const ContactGeometry& g,
+                                              const ContactHistory& committed, double elapsed) noexcept;
 
 /// Largest centre distance at which the law of a pair with extent `e` acts (neighbour search).
-[[nodiscard]] inline double interaction_range(const PairLaw& law, const PairExtent& e) noexcept {
-  const double normal = std::visit([&](const auto& m) { return m.range(e); }, law.normal);
-  const double cohesion = std::visit([&](const auto& m) { return m.range(e); }, law.cohesion);
-  return std::max(normal, cohesion);
-}
+[[nodiscard]] double interaction_range(const PairLaw& law, const PairExtent& e) noexcept;
 
 /// Normal stiffness that sets the contact time scale of a collision of the given scale.
-[[nodiscard]] inline double collision_stiffness(const PairLaw& law, const CollisionScale& s) noexcept {
-  return std::visit([&](const auto& m) { return m.collision_stiffness(s); }, law.normal);
-}
+[[nodiscard]] double collision_stiffness(const PairLaw& law, const CollisionScale& s) noexcept;
 
 /// Damping coefficient η [kg/s] of the law with tangent stiffness k and reduced mass m*.
-[[nodiscard]] inline double damping_coefficient(const PairLaw& law, double reduced_mass,
-                                                double stiffness) noexcept {
-  ContactGeometry g{};
-  g.reduced_mass = reduced_mass;
-  NormalResponse n;
-  n.stiffness = stiffness;
-  return std::visit([&](const auto& m) { return m.coefficient(g, n); }, law.damping);
-}
+[[nodiscard]] double damping_coefficient(const PairLaw& law, double reduced_mass, double stiffness) noexcept;
 
 }  // namespace dem

@@ -221,7 +221,13 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
     const std::vector<std::uint32_t>& part = chunk_partners_[chunk];
     std::copy(part.begin(), part.end(), partners_.begin() + offsets_[chunk * kChunk]);
-    for (const PartnerCode p : part) periodic_ = periodic_ || (p >> kPartnerBits) != kNoShift;
+  }
+  shifted_.assign(n, 0);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+      if ((partners_[k] >> kPartnerBits) != kNoShift) shifted_[i] = 1;
+    }
+    periodic_ = periodic_ || shifted_[i] != 0;
   }
   if (in.extended_history) {
     if (extended_.capacity() < total) extended_.reserve(partners_.capacity());
@@ -281,7 +287,7 @@ ContactHistory NeighborList::history(std::size_t k) const noexcept {
 }
 
 std::size_t NeighborList::bytes() const noexcept {
-  std::size_t total = (offsets_.capacity() + counts_.capacity()) * sizeof(std::uint32_t) +
+  std::size_t total = (offsets_.capacity() + counts_.capacity()) * sizeof(std::uint32_t) + shifted_.capacity() +
                       partners_.capacity() * sizeof(PartnerCode) + active_.capacity() +
                       slips_.capacity() * sizeof(Vec3) +
                       extended_.capacity() * sizeof(ExtendedHistory) +

@@ -107,6 +107,8 @@ class NeighborList {
   [[nodiscard]] const Vec3& shift(std::uint32_t code) const noexcept { return shifts_[code]; }
   /// True when some entry has a non-zero shift.
   [[nodiscard]] bool periodic() const noexcept { return periodic_; }
+  /// 1 when some entry of owner i has a non-zero shift (the spheres near a periodic face).
+  [[nodiscard]] std::uint8_t shifted(std::uint32_t i) const noexcept { return shifted_[i]; }
   /// The slabs the pair loop runs over.
   [[nodiscard]] const SlabPartition& slabs() const noexcept { return slabs_; }
   /// Entry index of the pair (i, j) in either orientation and whether i is its owner, or −1.
@@ -135,6 +137,7 @@ class NeighborList {
 
   std::vector<std::uint32_t> offsets_;
   std::vector<PartnerCode> partners_;
+  std::vector<std::uint8_t> shifted_;
   std::vector<std::uint8_t> active_;
   std::vector<Vec3> slips_;
   std::vector<ExtendedHistory> extended_;
