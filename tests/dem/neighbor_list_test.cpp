@@ -157,7 +157,7 @@ TEST(NeighborList, MovingSpheresAreNeverMissedBetweenRebuilds) {
   // Random walks with the half-skin rule: at every step, every pair within reach (h_i + h_j) is
   // in the list, although the list was built up to many steps before.
   const dem::PeriodicBox box = box_of(Vec3(0, 0, 0), Vec3(1, 1, 1), true, false, true);
-  auto s = test_support::random_spheres(3, 800, Vec3(0, 0, 0), Vec3(1, 1, 1), 0.01, 0.04);
+  auto s = test_support::random_spheres(3, 500, Vec3(0, 0, 0), Vec3(1, 1, 1), 0.01, 0.04);
   const double skin = 0.01;
   std::mt19937_64 rng(11);
   std::normal_distribution<double> step(0.0, 0.0015);

@@ -73,7 +73,7 @@ Counts count_allocations(dem::SimulationSetup setup, int warm, int steps) {
 TEST(StepLoop, AllocatesNothingBetweenListBuilds) {
   for (const dem::SchemeId scheme : {dem::SchemeId::velocity_verlet, dem::SchemeId::leapfrog,
                                      dem::SchemeId::rk4, dem::SchemeId::abm, dem::SchemeId::bd2}) {
-    dem::SimulationSetup setup = test_support::settling_box(4, 600);
+    dem::SimulationSetup setup = test_support::settling_box(4, 300);
     setup.scheme = scheme;
     const Counts c = count_allocations(setup, 200, 800);
     EXPECT_EQ(c.plain, 0) << dem::scheme_info(scheme).keyword;
