@@ -38,6 +38,9 @@ Simulation::Simulation(const SimulationSetup& setup)
   apply_prescribed_motion();
   field_->commit(state_, 0.0, acc_);
   builds_at_last_sort_ = field_->list_builds();
+  // A generated population arrives in generation order, which scatters neighbours over memory:
+  // sort once at the start, then every `sort_every` builds (docs/performance.md, box scaling).
+  if (neighbors_.sort_every > 0 && props_.size() >= kMinSpheresToReorder) reorder();
 }
 
 std::size_t Simulation::past_states_needed() const noexcept {
