@@ -256,7 +256,6 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
                          setup_.motions.empty() ? nullptr : motion_of_.data(),
                          motion_velocity_.data(),
                          &table_,
-                         table_.material_count() == 1 ? &table_.law(0, 0) : nullptr,
                          setup_.pair_lever_arm_is_radius,
                          elapsed,
                          commit,
@@ -297,13 +296,6 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   const bool track = setup_.track_energy;
   const double t_now = state.time;
   const int threads = std::max(setup_.threads, 1);
-  const bool fluid = setup_.fields.fluid.has_value();
-  const Vec3 gravity = setup_.fields.gravity;
-  const double* mass = props_.mass.data();
-  double* force = force_.data();
-  const double* torque = torque_.data();
-  double* linear = out.linear.data();
-  double* angular = out.angular.data();
 
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
@@ -341,28 +333,13 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
         }
       }
       // External fields and accelerations of the mobile spheres.
-      if (!fluid) {
-        // Gravity alone: f += m g, a = f/m (the same arithmetic as the general branch, without
-        // building the fluid's inputs).
-        const double m = mass[c];
-        double* f = force + 3 * static_cast<std::size_t>(i);
-        double* a = linear + 3 * static_cast<std::size_t>(i);
-        for (int k = 0; k < 3; ++k) {
-          f[k] += m * gravity[k];
-          a[k] = f[k] / m;
-        }
-      } else {
-        const FieldInput in{state.position.col(c), state.velocity.col(c), props_.radius[c],
-                            props_.density[c], props_.mass[c], t_now};
-        force_.col(c) += setup_.fields.force(in);
-        if (track) sums.fluid_power += setup_.fields.hydrodynamic_power(in);
-        const double inertia_mass = props_.mass[c] + setup_.fields.added_mass(props_.radius[c]);
-        out.linear.col(c) = force_.col(c) / inertia_mass;
-      }
-      const double inverse_inertia = props_.inverse_inertia[c];
-      const double* t = torque + 3 * static_cast<std::size_t>(i);
-      double* w = angular + 3 * static_cast<std::size_t>(i);
-      for (int k = 0; k < 3; ++k) w[k] = inverse_inertia * t[k];
+      const FieldInput in{state.position.col(c), state.velocity.col(c), props_.radius[c],
+                          props_.density[c], props_.mass[c], t_now};
+      force_.col(c) += setup_.fields.force(in);
+      if (track) sums.fluid_power += setup_.fields.hydrodynamic_power(in);
+      const double inertia_mass = props_.mass[c] + setup_.fields.added_mass(props_.radius[c]);
+      out.linear.col(c) = force_.col(c) / inertia_mass;
+      out.angular.col(c) = props_.inverse_inertia[c] * torque_.col(c);
     }
   }
   totals_ = EnergyTotals{};

@@ -64,8 +64,8 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
       committed.attached = list.extended[k].attached != 0;
     }
   }
-  const PairLaw& law = in.single_law != nullptr ? *in.single_law : in.table->law(in.material[i], in.material[j]);
-  const ContactOutcome c = evaluate_contact_in(Slots{law}, g, committed, in.elapsed);
+  const ContactOutcome c =
+      evaluate_contact_in(Slots{in.table->law(in.material[i], in.material[j])}, g, committed, in.elapsed);
   if (!c.interacting) {
     if (in.commit && was_active) list.active[k] = 0;
     return;
@@ -102,6 +102,40 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   }
 }
 
+/// The branch-free distance test of owner i's entries [k, stop): appends every entry in reach,
+/// or active at the last commit, to the gather buffers and returns the new count. `Shifted`: the
+/// owner has entries through a periodic face, so each partner is moved by its entry's shift.
+struct PairGather {
+  const ListView& view;
+  const PackedSphere* packed;
+  double xi, yi, zi, hi;
+  std::uint32_t i;
+  std::uint32_t* owner;
+  std::uint32_t* entry;
+
+  template <bool Shifted>
+  [[nodiscard]] std::uint32_t run(std::uint32_t k, std::uint32_t stop, std::uint32_t count) const noexcept {
+    for (; k < stop; ++k) {
+      const PartnerCode partner = view.partners[k];
+      const PackedSphere& pj = packed[partner & kPartnerMask];
+      double dx = xi - pj.x;
+      double dy = yi - pj.y;
+      double dz = zi - pj.z;
+      if constexpr (Shifted) {
+        const Vec3& shift = view.shifts[partner >> kPartnerBits];
+        dx = xi - (pj.x - shift[0]);
+        dy = yi - (pj.y - shift[1]);
+        dz = zi - (pj.z - shift[2]);
+      }
+      const double reach = hi + pj.half_reach;
+      owner[count] = i;
+      entry[count] = k;
+      count += static_cast<std::uint32_t>((dx * dx + dy * dy + dz * dz <= reach * reach) | (view.active[k] != 0));
+    }
+    return count;
+  }
+};
+
 /// The loop for one kind of law (DynamicSlots: any law, dispatching per slot); `Periodic`: some
 /// entry carries a periodic shift.
 template <class Slots, bool Energies, bool Periodic>
@@ -125,39 +159,17 @@ template <class Slots, bool Energies, bool Periodic>
     const double yi = packed[i].y;
     const double zi = packed[i].z;
     const double hi = packed[i].half_reach;
+    // Only the owners near a periodic face read the shifts.
     const bool shifted = Periodic && list.shifted(i) != 0;
+    const PairGather gather{view, packed, xi, yi, zi, hi, i, gathered_owner.data(), gathered_entry.data()};
     std::uint32_t k = list.begin(i);
     const std::uint32_t end = list.begin(i + 1);
     while (k < end) {
       if (count == kChunk) flush();
-      // Branch-free distance test over as many entries as fit in the gather buffer; only the
-      // owners near a periodic face read the shifts.
+      // The distance test over as many entries as fit in the gather buffer.
       const std::uint32_t stop = std::min<std::uint32_t>(end, k + (static_cast<std::uint32_t>(kChunk) - count));
-      if (shifted) {
-        for (; k < stop; ++k) {
-          const PartnerCode partner = view.partners[k];
-          const PackedSphere& pj = packed[partner & kPartnerMask];
-          const Vec3& shift = view.shifts[partner >> kPartnerBits];
-          const double dx = xi - (pj.x - shift[0]);
-          const double dy = yi - (pj.y - shift[1]);
-          const double dz = zi - (pj.z - shift[2]);
-          const double reach = hi + pj.half_reach;
-          gathered_owner[count] = i;
-          gathered_entry[count] = k;
-          count += static_cast<std::uint32_t>((dx * dx + dy * dy + dz * dz <= reach * reach) | (view.active[k] != 0));
-        }
-      } else {
-        for (; k < stop; ++k) {
-          const PackedSphere& pj = packed[view.partners[k] & kPartnerMask];
-          const double dx = xi - pj.x;
-          const double dy = yi - pj.y;
-          const double dz = zi - pj.z;
-          const double reach = hi + pj.half_reach;
-          gathered_owner[count] = i;
-          gathered_entry[count] = k;
-          count += static_cast<std::uint32_t>((dx * dx + dy * dy + dz * dz <= reach * reach) | (view.active[k] != 0));
-        }
-      }
+      count = shifted ? gather.run<true>(k, stop, count) : gather.run<false>(k, stop, count);
+      k = stop;
     }
   }
   flush();

@@ -30,7 +30,6 @@ struct PairLoopInput {
   const std::int32_t* motion_of;     ///< prescribed motion of each sphere or −1; null when none
   const Vec3* motion_velocity;       ///< velocity of each motion at this evaluation
   const PairTable* table;
-  const PairLaw* single_law;         ///< the one law when the table has one material, else null
   bool lever_arm_is_radius;          ///< PairLeverArm::radius
   double elapsed;                    ///< time since the last commit [s]
   bool commit;                       ///< store the history the evaluations propose
