@@ -105,8 +105,8 @@ bench::BenchResult bench_chute(const BenchOptions& o) {
       for (const auto& [name, column, value, expected] :
            {std::tuple{"KinEng at step 100", "KinEng", e.translational, ref.kinetic_energy},
             std::tuple{"c_1 (rotational energy) at step 100", "c_1", e.rotational, ref.rotational_energy}}) {
-        bench::EnergyCheck c{name, bench::lammps_digits(value), bench::lammps_digits(expected),
-                             lammps_value(step, column), false};
+        bench::EnergyCheck c{name, bench::lammps_digits(value), fmt::format("{:.17g}", value),
+                             bench::lammps_digits(expected), lammps_value(step, column), false};
         c.match = c.core == c.reference && (c.lammps.empty() || c.lammps == c.core);
         r.checks.push_back(c);
       }

@@ -137,7 +137,7 @@ nlohmann::json bench_json(const BenchResult& r) {
   j["repetitions"] = reps;
   nlohmann::json checks = nlohmann::json::array();
   for (const EnergyCheck& c : r.checks) {
-    checks.push_back({{"quantity", c.quantity}, {"inhouse", c.core}, {"reference_log", c.reference},
+    checks.push_back({{"quantity", c.quantity}, {"inhouse", c.core}, {"inhouse_exact", c.core_exact}, {"reference_log", c.reference},
                       {"lammps", c.lammps}, {"match", c.match}});
   }
   j["checks"] = checks;

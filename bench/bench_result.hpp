@@ -17,6 +17,7 @@ namespace bench {
 struct EnergyCheck {
   std::string quantity;   ///< e.g. "KinEng at step 100"
   std::string core;       ///< the core's value to the printed digits
+  std::string core_exact; ///< the core's value to 17 significant digits (round-off tracking)
   std::string reference;  ///< LAMMPS's reference log
   std::string lammps;     ///< this machine's LAMMPS run, when it ran
   bool match = false;     ///< core == reference (and == lammps when it ran)

@@ -139,8 +139,13 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
     AxisCells& az = stencil.z;
 #pragma omp for schedule(dynamic, 1)
     for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
-      std::vector<std::uint32_t>& out = chunk_partners_[chunk];
+      // Counters and the partner list live in this thread's scratch while the chunk is searched:
+      // the per-chunk slots of neighbouring chunks share cache lines, and incrementing them in
+      // the inner loop from two threads made the parallel build slower than the serial one.
+      std::vector<std::uint32_t>& out = stencil.partners;
       out.clear();
+      std::uint64_t candidates = 0;
+      std::uint64_t cells = 0;
       const std::uint32_t end = std::min(n, (chunk + 1) * kChunk);
       for (std::uint32_t i = chunk * kChunk; i < end; ++i) {
         const PackedSphere& si = spheres[i];
@@ -161,9 +166,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
               if (gyz > reach2) continue;
               for (std::size_t kx = 0; kx < ax.cell.size(); ++kx) {
                 if (gyz + ax.gap[kx] * ax.gap[kx] > reach2) continue;
-                ++chunk_cells_[chunk];
+                ++cells;
                 for (const std::uint32_t j : grid.cell(grid.index(ax.cell[kx], ay.cell[ky], az.cell[kz]))) {
-                  ++chunk_candidates_[chunk];
+                  ++candidates;
                   if (j == i || !slabs_.owns(i, j) || (in.still[i] != 0 && in.still[j] != 0)) continue;
                   const PackedSphere& sj = spheres[j];
                   double d[3] = {si.x - sj.x, si.y - sj.y, si.z - sj.z};
@@ -197,6 +202,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
                   [](std::uint32_t a, std::uint32_t b) { return (a & kPartnerMask) < (b & kPartnerMask); });
         counts_[i] = static_cast<std::uint32_t>(out.size() - first);
       }
+      chunk_partners_[chunk].assign(out.begin(), out.end());
+      chunk_candidates_[chunk] = candidates;
+      chunk_cells_[chunk] = cells;
     }
   }
 
@@ -295,6 +303,7 @@ std::size_t NeighborList::bytes() const noexcept {
   for (const auto& g : grids_) total += g.bytes();
   for (const auto& m : class_members_) total += m.capacity() * sizeof(std::uint32_t);
   for (const auto& c : chunk_partners_) total += c.capacity() * sizeof(std::uint32_t);
+  for (const auto& s : stencils_) total += s.partners.capacity() * sizeof(std::uint32_t);
   return total;
 }
 

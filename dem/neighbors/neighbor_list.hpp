@@ -156,8 +156,10 @@ class NeighborList {
   std::vector<std::uint32_t> counts_;
   std::vector<std::uint64_t> chunk_candidates_;
   std::vector<std::uint64_t> chunk_cells_;
-  struct Stencil {
+  // One cache line apart: each thread rewrites its vectors' ends for every sphere it searches.
+  struct alignas(64) Stencil {
     AxisCells x, y, z;
+    std::vector<std::uint32_t> partners;  // the partners of the chunk being searched
   };
   std::vector<Stencil> stencils_;  // per thread
 };
