@@ -263,7 +263,7 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
   double* force = force_.data();
   double* torque = torque_.data();
   const auto run_slab = [&](std::uint32_t s) {
-    slab_totals_[s] = run_pair_loop(in, list_, slabs.members(s), force, torque);
+    slab_totals_[s] = run_pair_loop(in, list_, s, force, torque);
   };
 
   const int threads = std::max(setup_.threads, 1);
@@ -277,6 +277,7 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
       for (std::int64_t h = 0; h < half; ++h) run_slab(colour + 2 * static_cast<std::uint32_t>(h));
     }
   }
+  if (commit) list_.finish_commit();
   totals_ = EnergyTotals{};
   for (const EnergyTotals& t : slab_totals_) totals_ += t;
 }
@@ -406,19 +407,19 @@ ContactHistory ContactForceField::pair_history(std::uint32_t i, std::uint32_t j)
 
 std::size_t ContactForceField::interacting_pairs() const noexcept {
   std::size_t count = 0;
-  for (const std::uint8_t a : list_.active()) count += a;
+  for (const std::uint32_t c : list_.contacts()) count += c != kNoContact ? 1 : 0;
   return count;
 }
 
 std::size_t ContactForceField::touching_pairs() const noexcept {
   std::size_t count = 0;
-  const std::span<const std::uint8_t> active = list_.active();
+  const std::span<const std::uint32_t> contacts = list_.contacts();
   const std::span<const PartnerCode> partners = list_.partners();
   const std::span<const ExtendedHistory> ext = list_.extended();
   for (std::uint32_t i = 0; i < list_.sphere_count(); ++i) {
     for (std::uint32_t k = list_.begin(i); k < list_.begin(i + 1); ++k) {
-      if (active[k] == 0) continue;
-      if (!ext.empty() && ext[k].attached != 0) {
+      if (contacts[k] == kNoContact) continue;
+      if (!ext.empty() && ext[contacts[k]].attached != 0) {
         ++count;
         continue;
       }

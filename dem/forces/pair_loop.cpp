@@ -27,17 +27,20 @@ inline SphereState sphere_at(const PairLoopInput& in, std::uint32_t i, double x,
 /// The list's arrays, as raw pointers for the loop (none of them aliases the force arrays).
 struct ListView {
   const PartnerCode* partners;
-  std::uint8_t* active;
-  Vec3* slips;
-  ExtendedHistory* extended;  ///< null when the model keeps no extended history
-  const Vec3* shifts;         ///< 27 periodic shifts by code
+  std::uint32_t* contact;                 ///< contact slot of each entry, kNoContact when none
+  const Vec3* slips;                      ///< committed slips by slot
+  const ExtendedHistory* extended;        ///< committed extended history; null when the model keeps none
+  Vec3* next_slips;                       ///< where a commit writes
+  ExtendedHistory* next_extended;
+  const Vec3* shifts;                     ///< 27 periodic shifts by code
 };
 
 /// Evaluates the pair of entry k (owner i) and applies its forces, energies (when `Energies`)
-/// and, on commit, its history.
+/// and, on commit, its history, which goes to the slab's next free slot `next`.
 template <class Slots, bool Energies>
 inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::uint32_t i, std::uint32_t k,
-                          double* __restrict force, double* __restrict torque, EnergyTotals& t) noexcept {
+                          double* __restrict force, double* __restrict torque, EnergyTotals& t,
+                          std::uint32_t& next) noexcept {
   const PartnerCode partner = list.partners[k];
   const std::uint32_t j = partner & kPartnerMask;
   const std::uint32_t code = partner >> kPartnerBits;
@@ -55,19 +58,19 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   const ContactGeometry g = pair_geometry(sphere_at(in, i, pi.x, pi.y, pi.z), sphere_at(in, j, qx, qy, qz),
                                           in.lever_arm_is_radius);
   ContactHistory committed;
-  const bool was_active = list.active[k] != 0;
-  if (was_active) {
-    committed.tangential_slip = list.slips[k];
+  const std::uint32_t slot = list.contact[k];
+  if (slot != kNoContact) {
+    committed.tangential_slip = list.slips[slot];
     if (list.extended != nullptr) {
-      committed.rolling_slip = list.extended[k].rolling_slip;
-      committed.max_overlap = list.extended[k].max_overlap;
-      committed.attached = list.extended[k].attached != 0;
+      committed.rolling_slip = list.extended[slot].rolling_slip;
+      committed.max_overlap = list.extended[slot].max_overlap;
+      committed.attached = list.extended[slot].attached != 0;
     }
   }
   const ContactOutcome c =
       evaluate_contact_in(Slots{in.table->law(in.material[i], in.material[j])}, g, committed, in.elapsed);
   if (!c.interacting) {
-    if (in.commit && was_active) list.active[k] = 0;
+    if (in.commit) list.contact[k] = kNoContact;
     return;
   }
   double* __restrict fi = force + 3 * static_cast<std::size_t>(i);
@@ -93,12 +96,13 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
     t.friction += c.dissipated_friction;
   }
   if (in.commit) {
-    list.active[k] = 1;
-    list.slips[k] = c.history.tangential_slip;
-    if (list.extended != nullptr) {
-      list.extended[k] = {c.history.rolling_slip, c.history.max_overlap,
-                          static_cast<std::uint8_t>(c.history.attached ? 1 : 0)};
+    list.contact[k] = next;
+    list.next_slips[next] = c.history.tangential_slip;
+    if (list.next_extended != nullptr) {
+      list.next_extended[next] = {c.history.rolling_slip, c.history.max_overlap,
+                                  static_cast<std::uint8_t>(c.history.attached ? 1 : 0)};
     }
+    ++next;
   }
 }
 
@@ -130,7 +134,8 @@ struct PairGather {
       const double reach = hi + pj.half_reach;
       owner[count] = i;
       entry[count] = k;
-      count += static_cast<std::uint32_t>((dx * dx + dy * dy + dz * dz <= reach * reach) | (view.active[k] != 0));
+      count += static_cast<std::uint32_t>((dx * dx + dy * dy + dz * dz <= reach * reach) |
+                                          (view.contact[k] != kNoContact));
     }
     return count;
   }
@@ -139,18 +144,26 @@ struct PairGather {
 /// The loop for one kind of law (DynamicSlots: any law, dispatching per slot); `Periodic`: some
 /// entry carries a periodic shift.
 template <class Slots, bool Energies, bool Periodic>
-[[gnu::flatten]] EnergyTotals pair_loop_as(const PairLoopInput& in, NeighborList& list,
-                                           std::span<const std::uint32_t> owners, double* force, double* torque) {
+[[gnu::flatten]] EnergyTotals pair_loop_as(const PairLoopInput& in, NeighborList& list, std::uint32_t slab,
+                                           double* force, double* torque) {
   EnergyTotals t;
-  const ListView view{list.partners().data(), list.active().data(), list.slips().data(),
-                      list.extended().empty() ? nullptr : list.extended().data(), &list.shift(0)};
+  const bool extended = !list.extended().empty();
+  const ListView view{list.partners().data(),
+                      list.contacts().data(),
+                      list.slips().data(),
+                      extended ? list.extended().data() : nullptr,
+                      list.next_slips().data(),
+                      extended ? list.next_extended().data() : nullptr,
+                      &list.shift(0)};
+  const std::span<const std::uint32_t> owners = list.slabs().members(slab);
+  std::uint32_t next = list.slab_contact_base(slab);
   const PackedSphere* packed = in.packed;
   std::array<std::uint32_t, kChunk> gathered_owner;
   std::array<std::uint32_t, kChunk> gathered_entry;
   std::uint32_t count = 0;
   const auto flush = [&] {
     for (std::uint32_t g = 0; g < count; ++g) {
-      evaluate_pair<Slots, Energies>(in, view, gathered_owner[g], gathered_entry[g], force, torque, t);
+      evaluate_pair<Slots, Energies>(in, view, gathered_owner[g], gathered_entry[g], force, torque, t, next);
     }
     count = 0;
   };
@@ -186,29 +199,29 @@ using JkrLaw = StaticSlots<HertzNormal, TsujiDamping, SpringCoulombTangential, J
 
 /// The loop for the law kind `Slots`, with or without energy sums and periodic shifts.
 template <class Slots>
-EnergyTotals pair_loop_for(const PairLoopInput& in, NeighborList& list, std::span<const std::uint32_t> owners,
-                           double* force, double* torque) {
+EnergyTotals pair_loop_for(const PairLoopInput& in, NeighborList& list, std::uint32_t slab, double* force,
+                           double* torque) {
   if (list.periodic()) {
-    return in.energies ? pair_loop_as<Slots, true, true>(in, list, owners, force, torque)
-                       : pair_loop_as<Slots, false, true>(in, list, owners, force, torque);
+    return in.energies ? pair_loop_as<Slots, true, true>(in, list, slab, force, torque)
+                       : pair_loop_as<Slots, false, true>(in, list, slab, force, torque);
   }
-  return in.energies ? pair_loop_as<Slots, true, false>(in, list, owners, force, torque)
-                     : pair_loop_as<Slots, false, false>(in, list, owners, force, torque);
+  return in.energies ? pair_loop_as<Slots, true, false>(in, list, slab, force, torque)
+                     : pair_loop_as<Slots, false, false>(in, list, slab, force, torque);
 }
 
 }  // namespace
 
-EnergyTotals run_pair_loop(const PairLoopInput& in, NeighborList& list, std::span<const std::uint32_t> owners,
-                           double* force, double* torque) {
+EnergyTotals run_pair_loop(const PairLoopInput& in, NeighborList& list, std::uint32_t slab, double* force,
+                           double* torque) {
   // Every material pair holds the same sub-model types (the model choice is global).
   const PairLaw& law = in.table->law(0, 0);
-  if (ChuteLaw::holds(law)) return pair_loop_for<ChuteLaw>(in, list, owners, force, torque);
-  if (HertzBoxLaw::holds(law)) return pair_loop_for<HertzBoxLaw>(in, list, owners, force, torque);
-  if (LinearRestitutionLaw::holds(law)) return pair_loop_for<LinearRestitutionLaw>(in, list, owners, force, torque);
-  if (HertzMindlinLaw::holds(law)) return pair_loop_for<HertzMindlinLaw>(in, list, owners, force, torque);
-  if (LinearCohesiveLaw::holds(law)) return pair_loop_for<LinearCohesiveLaw>(in, list, owners, force, torque);
-  if (JkrLaw::holds(law)) return pair_loop_for<JkrLaw>(in, list, owners, force, torque);
-  return pair_loop_for<DynamicSlots>(in, list, owners, force, torque);
+  if (ChuteLaw::holds(law)) return pair_loop_for<ChuteLaw>(in, list, slab, force, torque);
+  if (HertzBoxLaw::holds(law)) return pair_loop_for<HertzBoxLaw>(in, list, slab, force, torque);
+  if (LinearRestitutionLaw::holds(law)) return pair_loop_for<LinearRestitutionLaw>(in, list, slab, force, torque);
+  if (HertzMindlinLaw::holds(law)) return pair_loop_for<HertzMindlinLaw>(in, list, slab, force, torque);
+  if (LinearCohesiveLaw::holds(law)) return pair_loop_for<LinearCohesiveLaw>(in, list, slab, force, torque);
+  if (JkrLaw::holds(law)) return pair_loop_for<JkrLaw>(in, list, slab, force, torque);
+  return pair_loop_for<DynamicSlots>(in, list, slab, force, torque);
 }
 
 }  // namespace dem

@@ -36,14 +36,16 @@ struct PairLoopInput {
   bool energies;                     ///< sum the contacts' energies (else the sums stay 0)
 };
 
-/// Evaluates every listed pair owned by the spheres `owners`, in chunks: first a branch-free
-/// distance test against h_i + h_j over a chunk's entries that gathers the pairs in reach and
-/// those that interacted at the last commit (so that their history is cleared when they part),
-/// then evaluate_contact for each gathered pair. Adds forces and torques to both spheres of each
-/// pair (3 doubles per sphere in `force` and `torque`) and returns the pairs' energy sums,
-/// accumulated in list order (zero unless `in.energies`: a run that records no energy ledger
-/// skips that arithmetic).
-EnergyTotals run_pair_loop(const PairLoopInput& in, NeighborList& list,
-                           std::span<const std::uint32_t> owners, double* force, double* torque);
+/// Evaluates every listed pair owned by the spheres of slab `slab` (list.slabs()), in chunks:
+/// first a branch-free distance test against h_i + h_j over a chunk's entries that gathers the
+/// pairs in reach and those that interacted at the last commit (so that their history is cleared
+/// when they part), then evaluate_contact for each gathered pair. Adds forces and torques to both
+/// spheres of each pair (3 doubles per sphere in `force` and `torque`) and returns the pairs'
+/// energy sums, accumulated in list order (zero unless `in.energies`: a run that records no energy
+/// ledger skips that arithmetic). On commit the interacting pairs' history goes to the slab's
+/// slots of the list's next history arrays, in list order; NeighborList::finish_commit makes it
+/// current once every slab has run.
+EnergyTotals run_pair_loop(const PairLoopInput& in, NeighborList& list, std::uint32_t slab, double* force,
+                           double* torque);
 
 }  // namespace dem

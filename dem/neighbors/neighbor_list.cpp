@@ -219,12 +219,10 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   const std::size_t total = offsets_[n];
   if (partners_.capacity() < total) {
     partners_.reserve(total + total / 8);
-    active_.reserve(total + total / 8);
-    slips_.reserve(total + total / 8);
+    contact_.reserve(total + total / 8);
   }
   partners_.resize(total);
-  active_.assign(total, 0);
-  slips_.resize(total);
+  contact_.assign(total, kNoContact);
   periodic_ = false;
   for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
     const std::vector<std::uint32_t>& part = chunk_partners_[chunk];
@@ -237,23 +235,44 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
     }
     periodic_ = periodic_ || shifted_[i] != 0;
   }
-  if (in.extended_history) {
-    if (extended_.capacity() < total) extended_.reserve(partners_.capacity());
-    extended_.assign(total, ExtendedHistory{});
-  } else {
-    extended_.clear();
+  // Slab s's pairs can hold at most as many contacts as it has entries: its slots start where
+  // the entries of the slabs before it end.
+  slab_base_.assign(slabs_.count() + 1, 0);
+  for (std::uint32_t sl = 0; sl < slabs_.count(); ++sl) {
+    std::uint32_t entries = 0;
+    for (const std::uint32_t i : slabs_.members(sl)) entries += offsets_[i + 1] - offsets_[i];
+    slab_base_[sl + 1] = slab_base_[sl] + entries;
   }
-  if (old_n == n) carry_history(new_of_old, threads);
+  for (int b = 0; b < 2; ++b) {
+    if (slips_[b].capacity() < total) slips_[b].reserve(partners_.capacity());
+    slips_[b].resize(total);
+    if (in.extended_history) {
+      if (extended_[b].capacity() < total) extended_[b].reserve(partners_.capacity());
+      extended_[b].resize(total);
+    } else {
+      extended_[b].clear();
+    }
+  }
+  if (old_n == n) {
+    carry_history(new_of_old, threads);
+  } else {
+    carried_.clear();
+  }
+  lay_out_carried();
 }
 
 void NeighborList::remember_interacting() {
   carried_.clear();
+  carried_extended_.clear();
   const std::uint32_t n = sphere_count();
+  const std::span<const Vec3> slip = slips();
+  const std::span<const ExtendedHistory> ext = extended();
   for (std::uint32_t a = 0; a < n; ++a) {
     for (std::uint32_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
-      if (active_[k] == 0) continue;
-      carried_.push_back({a, partners_[k] & kPartnerMask, slips_[k],
-                          extended_.empty() ? ExtendedHistory{} : extended_[k]});
+      const std::uint32_t c = contact_[k];
+      if (c == kNoContact) continue;
+      carried_.push_back({a, partners_[k] & kPartnerMask, slip[c]});
+      if (!ext.empty()) carried_extended_.push_back(ext[c]);
     }
   }
 }
@@ -261,6 +280,7 @@ void NeighborList::remember_interacting() {
 void NeighborList::carry_history(std::span<const std::uint32_t> new_of_old, int threads) {
   const bool mapped = !new_of_old.empty();
   const auto count = static_cast<std::int64_t>(carried_.size());
+  carried_flip_.assign(carried_.size(), 0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::int64_t c = 0; c < count; ++c) {
     const Carried& old = carried_[static_cast<std::size_t>(c)];
@@ -269,11 +289,51 @@ void NeighborList::carry_history(std::span<const std::uint32_t> new_of_old, int 
     bool i_owns = true;
     const std::int64_t e = find(i, j, i_owns);
     if (e < 0) continue;  // no longer listed: beyond reach, so its history would reset anyway
-    const auto at = static_cast<std::size_t>(e);
-    active_[at] = 1;
-    slips_[at] = i_owns ? old.slip : Vec3(-old.slip);
-    if (!extended_.empty()) extended_[static_cast<std::size_t>(e)] = old.extended;
+    contact_[static_cast<std::size_t>(e)] = static_cast<std::uint32_t>(c);
+    carried_flip_[static_cast<std::size_t>(c)] = i_owns ? 0 : 1;
   }
+}
+
+void NeighborList::lay_out_carried() {
+  std::vector<Vec3>& slip = slips_[current_];
+  std::vector<ExtendedHistory>& ext = extended_[current_];
+  for (std::uint32_t sl = 0; sl < slabs_.count(); ++sl) {
+    std::uint32_t slot = slab_base_[sl];
+    for (const std::uint32_t i : slabs_.members(sl)) {
+      for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+        const std::uint32_t c = contact_[k];
+        if (c == kNoContact) continue;
+        const Carried& old = carried_[c];
+        slip[slot] = carried_flip_[c] != 0 ? Vec3(-old.slip) : old.slip;
+        if (!ext.empty()) ext[slot] = c < carried_extended_.size() ? carried_extended_[c] : ExtendedHistory{};
+        contact_[k] = slot++;
+      }
+    }
+  }
+}
+
+void NeighborList::set_history(std::size_t k, const ContactHistory& h) {
+  // Every contact (the new one included) becomes a carried pair and is laid out afresh.
+  std::vector<std::uint32_t> carried_of_entry(contact_.size(), kNoContact);
+  carried_.clear();
+  carried_extended_.clear();
+  const std::span<const Vec3> slip = slips();
+  const std::span<const ExtendedHistory> ext = extended();
+  for (std::size_t e = 0; e < contact_.size(); ++e) {
+    if (e != k && contact_[e] == kNoContact) continue;
+    carried_of_entry[e] = static_cast<std::uint32_t>(carried_.size());
+    if (e == k) {
+      carried_.push_back({0, 0, h.tangential_slip});
+      carried_extended_.push_back({h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0)});
+    } else {
+      const std::uint32_t c = contact_[e];
+      carried_.push_back({0, 0, slip[c]});
+      carried_extended_.push_back(ext.empty() ? ExtendedHistory{} : ext[c]);
+    }
+  }
+  carried_flip_.assign(carried_.size(), 0);
+  contact_ = std::move(carried_of_entry);
+  lay_out_carried();
 }
 
 std::int64_t NeighborList::find(std::uint32_t i, std::uint32_t j, bool& i_owns) const noexcept {
@@ -288,18 +348,22 @@ std::int64_t NeighborList::find(std::uint32_t i, std::uint32_t j, bool& i_owns) 
 }
 
 ContactHistory NeighborList::history(std::size_t k) const noexcept {
-  if (active_[k] == 0) return {};
-  if (extended_.empty()) return {slips_[k], Vec3::Zero(), 0.0, false};
-  const ExtendedHistory& x = extended_[k];
-  return {slips_[k], x.rolling_slip, x.max_overlap, x.attached != 0};
+  const std::uint32_t c = contact_[k];
+  if (c == kNoContact) return {};
+  const Vec3& slip = slips_[current_][c];
+  if (extended_[current_].empty()) return {slip, Vec3::Zero(), 0.0, false};
+  const ExtendedHistory& x = extended_[current_][c];
+  return {slip, x.rolling_slip, x.max_overlap, x.attached != 0};
 }
 
 std::size_t NeighborList::bytes() const noexcept {
   std::size_t total = (offsets_.capacity() + counts_.capacity()) * sizeof(std::uint32_t) + shifted_.capacity() +
-                      partners_.capacity() * sizeof(PartnerCode) + active_.capacity() +
-                      slips_.capacity() * sizeof(Vec3) +
-                      extended_.capacity() * sizeof(ExtendedHistory) +
-                      carried_.capacity() * sizeof(Carried) + slabs_.bytes();
+                      partners_.capacity() * sizeof(PartnerCode) + contact_.capacity() * sizeof(std::uint32_t) +
+                      (slips_[0].capacity() + slips_[1].capacity()) * sizeof(Vec3) +
+                      (extended_[0].capacity() + extended_[1].capacity()) * sizeof(ExtendedHistory) +
+                      carried_.capacity() * sizeof(Carried) +
+                      carried_extended_.capacity() * sizeof(ExtendedHistory) + carried_flip_.capacity() +
+                      slab_base_.capacity() * sizeof(std::uint32_t) + slabs_.bytes();
   for (const auto& g : grids_) total += g.bytes();
   for (const auto& m : class_members_) total += m.capacity() * sizeof(std::uint32_t);
   for (const auto& c : chunk_partners_) total += c.capacity() * sizeof(std::uint32_t);

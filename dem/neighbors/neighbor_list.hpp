@@ -30,6 +30,9 @@ inline constexpr std::size_t kMinSpheresToReorder = 256;
 /// periodic shift code in the five above.
 using PartnerCode = std::uint32_t;
 
+/// Contact slot of a list entry whose pair did not interact at the last commit.
+inline constexpr std::uint32_t kNoContact = 0xFFFFFFFFU;
+
 /// The rest of a pair's history, beside the list (touched only for interacting pairs).
 struct ExtendedHistory {
   Vec3 rolling_slip = Vec3::Zero();
@@ -70,8 +73,9 @@ struct AxisCells {
 };
 
 /// A half Verlet list in CSR form (offsets + partner codes) built from per-class cell grids, with
-/// contact history stored in arrays parallel to its entries and carried over when the list is rebuilt or the
-/// spheres are reordered. Every pair within h_i + h_j + skin at the build is listed exactly
+/// contact history beside it (each entry's contact slot points into dense history arrays that a
+/// commit rewrites in list order), carried over when the list is rebuilt or the spheres are
+/// reordered. Every pair within h_i + h_j + skin at the build is listed exactly
 /// once, under its owner (SlabPartition::owns), with the periodic image of the partner nearest
 /// the owner; partners of an owner are sorted by index.
 class NeighborList {
@@ -91,17 +95,31 @@ class NeighborList {
   /// Number of listed pairs.
   [[nodiscard]] std::size_t size() const noexcept { return partners_.size(); }
   /// Partner and shift code of every entry (the only array the pair loop's distance test reads
-  /// besides `active`; the history arrays are touched only for pairs in reach).
+  /// besides `contacts`; the history arrays are touched only for pairs in reach).
   [[nodiscard]] std::span<const PartnerCode> partners() const noexcept { return partners_; }
-  /// 1 while the entry's pair interacted at the last commit.
-  [[nodiscard]] std::span<std::uint8_t> active() noexcept { return active_; }
-  [[nodiscard]] std::span<const std::uint8_t> active() const noexcept { return active_; }
-  /// The tangential slip of every entry, oriented owner → partner (meaningful when active).
-  [[nodiscard]] std::span<Vec3> slips() noexcept { return slips_; }
-  [[nodiscard]] std::span<const Vec3> slips() const noexcept { return slips_; }
-  /// Extended history, parallel to the entries (empty unless the build asked for it).
-  [[nodiscard]] std::span<ExtendedHistory> extended() noexcept { return extended_; }
-  [[nodiscard]] std::span<const ExtendedHistory> extended() const noexcept { return extended_; }
+  /// The contact slot of every entry: where its committed history sits in the history arrays,
+  /// or kNoContact when the pair did not interact at the last commit.
+  [[nodiscard]] std::span<std::uint32_t> contacts() noexcept { return contact_; }
+  [[nodiscard]] std::span<const std::uint32_t> contacts() const noexcept { return contact_; }
+  /// True when entry k's pair interacted at the last commit.
+  [[nodiscard]] bool active(std::size_t k) const noexcept { return contact_[k] != kNoContact; }
+  /// Committed tangential slips by contact slot, oriented owner → partner.
+  [[nodiscard]] std::span<const Vec3> slips() const noexcept { return slips_[current_]; }
+  /// Committed extended history by contact slot (empty unless the build asked for it).
+  [[nodiscard]] std::span<const ExtendedHistory> extended() const noexcept { return extended_[current_]; }
+  /// Where a commit writes: the history arrays the next commit makes current.
+  [[nodiscard]] std::span<Vec3> next_slips() noexcept { return slips_[1 - current_]; }
+  [[nodiscard]] std::span<ExtendedHistory> next_extended() noexcept { return extended_[1 - current_]; }
+  /// First contact slot of slab s: a commit gives the pairs of slab s that interact the slots
+  /// base, base + 1, … in list order, so each slab writes its own range (any thread count) and
+  /// the next evaluation reads the history of the touching pairs as one dense, ordered stream.
+  [[nodiscard]] std::uint32_t slab_contact_base(std::uint32_t s) const noexcept { return slab_base_[s]; }
+  /// Makes the history a commit wrote (next_slips, next_extended, the new slots in contacts())
+  /// the committed one.
+  void finish_commit() noexcept { current_ = 1 - current_; }
+  /// Sets the committed history of entry k, oriented owner → partner (tests and tools; lays
+  /// out every contact afresh, O(list)).
+  void set_history(std::size_t k, const ContactHistory& h);
   /// The shift (a whole number of box lengths per axis) to subtract from the partner's wrapped
   /// centre to get its image nearest the owner, by shift code.
   [[nodiscard]] const Vec3& shift(std::uint32_t code) const noexcept { return shifts_[code]; }
@@ -130,17 +148,21 @@ class NeighborList {
     std::uint32_t owner;
     std::uint32_t partner;
     Vec3 slip;
-    ExtendedHistory extended;
   };
   void remember_interacting();
   void carry_history(std::span<const std::uint32_t> new_of_old, int threads);
+  /// Gives every entry whose contact_ holds an index into carried_ a slot, slab by slab in
+  /// list order, and copies its history there (negated where carried_flip_ says so).
+  void lay_out_carried();
 
   std::vector<std::uint32_t> offsets_;
   std::vector<PartnerCode> partners_;
   std::vector<std::uint8_t> shifted_;
-  std::vector<std::uint8_t> active_;
-  std::vector<Vec3> slips_;
-  std::vector<ExtendedHistory> extended_;
+  std::vector<std::uint32_t> contact_;
+  std::array<std::vector<Vec3>, 2> slips_;
+  std::array<std::vector<ExtendedHistory>, 2> extended_;
+  int current_ = 0;  // which of the two history arrays holds the committed history
+  std::vector<std::uint32_t> slab_base_;
   std::array<Vec3, 27> shifts_{};
   bool periodic_ = false;
   SlabPartition slabs_;
@@ -150,6 +172,8 @@ class NeighborList {
   std::uint64_t candidates_ = 0;
   std::uint64_t cells_visited_ = 0;
   std::vector<Carried> carried_;  // interacting pairs of the previous build
+  std::vector<ExtendedHistory> carried_extended_;  // beside carried_, when the model keeps it
+  std::vector<std::uint8_t> carried_flip_;  // 1: the carried pair's owner changed
   // Per-chunk scratch of the build (chunks of owners, independent of the thread count): the
   // partners found, with their shift codes.
   std::vector<std::vector<std::uint32_t>> chunk_partners_;

@@ -213,10 +213,11 @@ TEST(NeighborList, HistorySurvivesRebuildsAndReorders) {
     for (std::uint32_t k = list.begin(i); k < list.begin(i + 1); ++k) {
       if (k % 3 != 0) continue;
       const std::uint32_t j = list.partners()[k] & dem::kPartnerMask;
-      list.active()[k] = 1;
-      list.slips()[k] = Vec3(i, j, 0.5);
-      list.extended()[k].max_overlap = i + 1000.0 * j;
-      tagged[{i, j}] = list.slips()[k];
+      dem::ContactHistory h;
+      h.tangential_slip = Vec3(i, j, 0.5);
+      h.max_overlap = i + 1000.0 * j;
+      list.set_history(k, h);
+      tagged[{i, j}] = h.tangential_slip;
     }
   }
   ASSERT_GT(tagged.size(), 50U);
@@ -235,7 +236,7 @@ TEST(NeighborList, HistorySurvivesRebuildsAndReorders) {
   }
   list = build_list(moved, box, 0.01, 2, new_of_old, std::move(list));
   std::size_t active = 0;
-  for (const std::uint8_t a : list.active()) active += a;
+  for (std::size_t k = 0; k < list.size(); ++k) active += list.active(k) ? 1 : 0;
   EXPECT_EQ(active, tagged.size());
   for (const auto& [pair, slip] : tagged) {
     const std::uint32_t i = new_of_old[pair.first];
