@@ -146,6 +146,8 @@ double ContactForceField::pack(const KinematicState& state) {
   const double* offset = wrap_offset_.size() > 0 ? wrap_offset_.data() : nullptr;
   const double* h = half_reach_.data();
   PackedSphere* out = packed_.data();
+  double* force = force_.data();
+  double* torque = torque_.data();
   double worst = 0.0;
   const int threads = std::max(setup_.threads, 1);
 #pragma omp parallel for schedule(static) reduction(max : worst) num_threads(threads) if (threads > 1)
@@ -163,6 +165,11 @@ double ContactForceField::pack(const KinematicState& state) {
     const double dy = y - built[3 * i + 1];
     const double dz = z - built[3 * i + 2];
     worst = std::max(worst, dx * dx + dy * dy + dz * dz);
+    // The evaluation's sums start from zero (cleared here, in the same pass over the spheres).
+    for (int k = 0; k < 3; ++k) {
+      force[3 * i + k] = 0.0;
+      torque[3 * i + k] = 0.0;
+    }
   }
   // A sphere under prescribed motion is where its motion says, whatever the integrator did.
   for (std::size_t m = 0; m < setup_.motions.size(); ++m) {
@@ -172,8 +179,6 @@ double ContactForceField::pack(const KinematicState& state) {
     packed_[i] = {x[0], x[1], x[2], half_reach_[i]};
     worst = std::max(worst, (x - built_position_.col(i)).squaredNorm());
   }
-  force_.setZero();
-  torque_.setZero();
   return worst;
 }
 
