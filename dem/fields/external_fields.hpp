@@ -27,9 +27,14 @@ struct ExternalFields {
   /// Total field force on one sphere [N]: m g, or V(ρ_p − ρ_f) g with buoyancy (eq 3.50), plus
   /// the fluid's drag and pressure-gradient forces.
   [[nodiscard]] Vec3 force(const FieldInput& in) const noexcept {
-    if (!fluid) return in.mass * gravity;
+    if (!fluid) return weight(in.mass);
     return fluid->gravity_force(in, gravity) + fluid->hydrodynamic_force(in);
   }
+  /// True when gravity is the only field: force() is then weight(m) and added_mass() is 0, so a
+  /// loop over many spheres need not assemble the fluid's inputs.
+  [[nodiscard]] bool gravity_only() const noexcept { return !fluid; }
+  /// Weight m g of a sphere of mass m [N] (the whole field force when gravity_only()).
+  [[nodiscard]] Vec3 weight(double mass) const noexcept { return mass * gravity; }
   /// Extra inertia of a sphere [kg] (virtual mass, eq 3.51), 0 without a fluid.
   [[nodiscard]] double added_mass(double radius) const noexcept {
     return fluid ? fluid->added_mass(radius) : 0.0;

@@ -302,6 +302,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   const bool track = setup_.track_energy;
   const double t_now = state.time;
   const int threads = std::max(setup_.threads, 1);
+  const bool gravity_only = setup_.fields.gravity_only();
 
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
@@ -339,11 +340,16 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
         }
       }
       // External fields and accelerations of the mobile spheres.
-      const FieldInput in{state.position.col(c), state.velocity.col(c), props_.radius[c],
-                          props_.density[c], props_.mass[c], t_now};
-      force_.col(c) += setup_.fields.force(in);
-      if (track) sums.fluid_power += setup_.fields.hydrodynamic_power(in);
-      const double inertia_mass = props_.mass[c] + setup_.fields.added_mass(props_.radius[c]);
+      double inertia_mass = props_.mass[c];
+      if (gravity_only) {
+        force_.col(c) += setup_.fields.weight(props_.mass[c]);
+      } else {
+        const FieldInput in{state.position.col(c), state.velocity.col(c), props_.radius[c],
+                            props_.density[c], props_.mass[c], t_now};
+        force_.col(c) += setup_.fields.force(in);
+        if (track) sums.fluid_power += setup_.fields.hydrodynamic_power(in);
+        inertia_mass += setup_.fields.added_mass(props_.radius[c]);
+      }
       out.linear.col(c) = force_.col(c) / inertia_mass;
       out.angular.col(c) = props_.inverse_inertia[c] * torque_.col(c);
     }
