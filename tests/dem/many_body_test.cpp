@@ -146,6 +146,41 @@ TEST(ManyBodyReorder, KeepsEveryContactAndItsHistory) {
   EXPECT_LT(worst, 1e-12);  // summation order only: round-off
 }
 
+TEST(ManyBodyHistory, ContactsOfEachSlabSitInDenseSlotsInListOrder) {
+  // After commits with and without rebuilds, slab s's interacting pairs hold the slots
+  // base(s), base(s) + 1, … in list order, and their histories match a brute-force pairing.
+  dem::SimulationSetup setup = test_support::settling_box(10, 1000, 1e-3, 0.0, 1, 1.98);
+  setup.threads = 2;
+  dem::Simulation sim(setup);
+  std::uint64_t builds_seen = 0;
+  for (int n = 0; n < 400; ++n) {
+    sim.step();
+    if (n % 50 != 49) continue;
+    const dem::NeighborList& list = sim.force_field().neighbors();
+    builds_seen = list.builds();
+    const dem::SlabPartition& slabs = list.slabs();
+    ASSERT_GT(slabs.count(), 1U);
+    std::size_t contacts = 0;
+    for (std::uint32_t s = 0; s < slabs.count(); ++s) {
+      std::uint32_t expected = list.slab_contact_base(s);
+      for (const std::uint32_t i : slabs.members(s)) {
+        for (std::uint32_t k = list.begin(i); k < list.begin(i + 1); ++k) {
+          if (!list.active(k)) continue;
+          ASSERT_EQ(list.contacts()[k], expected) << "step " << n << ", slab " << s;
+          ++expected;
+          ++contacts;
+        }
+      }
+      if (s + 1 < slabs.count()) {
+        ASSERT_LE(expected, list.slab_contact_base(s + 1));
+      }
+    }
+    EXPECT_EQ(contacts, sim.force_field().interacting_pairs());
+    EXPECT_GT(contacts, 500U);
+  }
+  EXPECT_GT(builds_seen, 2U);  // the layout held across rebuilds too
+}
+
 TEST(WallHistory, IsKeptPerSphereAndWall) {
   // Sphere 0 slides on wall 1 while sphere 1 slides on wall 0. Their contacts must not share a
   // history: each sphere moves exactly as it does alone.
