@@ -36,9 +36,7 @@ double default_skin(const ParticleProperties& props) {
 ContactHistory assemble(const Vec3& slip, std::uint32_t active, std::span<const ExtendedHistory> ext,
                         std::size_t k) noexcept {
   if (active == 0) return {};
-  if (ext.empty()) return {slip, Vec3::Zero(), 0.0, false};
-  const ExtendedHistory& x = ext[k];
-  return {slip, x.rolling_slip, x.max_overlap, x.attached != 0};
+  return history_of(slip, ext.empty() ? nullptr : &ext[k]);
 }
 
 /// Stores the history an evaluation proposes into a list entry.
@@ -46,7 +44,7 @@ template <class Entry>
 void store(Entry& e, std::span<ExtendedHistory> ext, std::size_t k, const ContactHistory& h) noexcept {
   e.active = 1;
   e.slip = h.tangential_slip;
-  if (!ext.empty()) ext[k] = {h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0)};
+  if (!ext.empty()) ext[k] = extended_of(h);
 }
 
 /// Adds one contact's energies to a running sum.

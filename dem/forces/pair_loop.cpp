@@ -57,16 +57,10 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   }
   const ContactGeometry g = pair_geometry(sphere_at(in, i, pi.x, pi.y, pi.z), sphere_at(in, j, qx, qy, qz),
                                           in.lever_arm_is_radius);
-  ContactHistory committed;
   const std::uint32_t slot = list.contact[k];
-  if (slot != kNoContact) {
-    committed.tangential_slip = list.slips[slot];
-    if (list.extended != nullptr) {
-      committed.rolling_slip = list.extended[slot].rolling_slip;
-      committed.max_overlap = list.extended[slot].max_overlap;
-      committed.attached = list.extended[slot].attached != 0;
-    }
-  }
+  const ContactHistory committed =
+      slot == kNoContact ? ContactHistory{}
+                         : history_of(list.slips[slot], list.extended != nullptr ? &list.extended[slot] : nullptr);
   const ContactOutcome c =
       evaluate_contact_in(Slots{in.table->law(in.material[i], in.material[j])}, g, committed, in.elapsed);
   if (!c.interacting) {
@@ -98,10 +92,7 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   if (in.commit) {
     list.contact[k] = next;
     list.next_slips[next] = c.history.tangential_slip;
-    if (list.next_extended != nullptr) {
-      list.next_extended[next] = {c.history.rolling_slip, c.history.max_overlap,
-                                  static_cast<std::uint8_t>(c.history.attached ? 1 : 0)};
-    }
+    if (list.next_extended != nullptr) list.next_extended[next] = extended_of(c.history);
     ++next;
   }
 }

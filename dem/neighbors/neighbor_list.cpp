@@ -324,7 +324,7 @@ void NeighborList::set_history(std::size_t k, const ContactHistory& h) {
     carried_of_entry[e] = static_cast<std::uint32_t>(carried_.size());
     if (e == k) {
       carried_.push_back({0, 0, h.tangential_slip});
-      carried_extended_.push_back({h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0)});
+      carried_extended_.push_back(extended_of(h));
     } else {
       const std::uint32_t c = contact_[e];
       carried_.push_back({0, 0, slip[c]});
@@ -350,10 +350,7 @@ std::int64_t NeighborList::find(std::uint32_t i, std::uint32_t j, bool& i_owns) 
 ContactHistory NeighborList::history(std::size_t k) const noexcept {
   const std::uint32_t c = contact_[k];
   if (c == kNoContact) return {};
-  const Vec3& slip = slips_[current_][c];
-  if (extended_[current_].empty()) return {slip, Vec3::Zero(), 0.0, false};
-  const ExtendedHistory& x = extended_[current_][c];
-  return {slip, x.rolling_slip, x.max_overlap, x.attached != 0};
+  return history_of(slips_[current_][c], extended_[current_].empty() ? nullptr : &extended_[current_][c]);
 }
 
 std::size_t NeighborList::bytes() const noexcept {

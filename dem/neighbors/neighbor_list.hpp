@@ -40,6 +40,16 @@ struct ExtendedHistory {
   std::uint8_t attached = 0;
 };
 
+/// The extended part of a history, as the lists store it.
+[[nodiscard]] inline ExtendedHistory extended_of(const ContactHistory& h) noexcept {
+  return {h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0)};
+}
+/// A committed history from a stored slip and its extended record (null when none is kept).
+[[nodiscard]] inline ContactHistory history_of(const Vec3& slip, const ExtendedHistory* x) noexcept {
+  if (x == nullptr) return {slip, Vec3::Zero(), 0.0, false};
+  return {slip, x->rolling_slip, x->max_overlap, x->attached != 0};
+}
+
 /// What a build reads.
 struct NeighborBuildInput {
   std::span<const PackedSphere> spheres;   ///< wrapped centres and half reaches

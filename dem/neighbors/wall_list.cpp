@@ -59,9 +59,7 @@ std::int64_t WallList::find(std::uint32_t i, std::uint32_t w) const noexcept {
 
 ContactHistory WallList::history(std::size_t k) const noexcept {
   if (entries_[k].active == 0) return {};
-  if (extended_.empty()) return {entries_[k].slip, Vec3::Zero(), 0.0, false};
-  const ExtendedHistory& x = extended_[k];
-  return {entries_[k].slip, x.rolling_slip, x.max_overlap, x.attached != 0};
+  return history_of(entries_[k].slip, extended_.empty() ? nullptr : &extended_[k]);
 }
 
 std::size_t WallList::bytes() const noexcept {
