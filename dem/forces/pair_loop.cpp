@@ -35,6 +35,20 @@ struct ListView {
   const Vec3* shifts;                     ///< 27 periodic shifts by code
 };
 
+/// A partner's centre at the image its list entry names: the wrapped centre minus the entry's
+/// periodic shift (`Shifted` false: no shift to apply).
+struct PartnerImage {
+  double x, y, z;
+};
+template <bool Shifted>
+[[nodiscard]] inline PartnerImage partner_image(const PackedSphere& pj, const Vec3* shifts, PartnerCode partner) noexcept {
+  if constexpr (Shifted) {
+    const Vec3& shift = shifts[partner >> kPartnerBits];
+    return {pj.x - shift[0], pj.y - shift[1], pj.z - shift[2]};
+  }
+  return {pj.x, pj.y, pj.z};
+}
+
 /// Evaluates the pair of entry k (owner i) and applies its forces, energies (when `Energies`)
 /// and, on commit, its history, which goes to the slab's next free slot `next`.
 template <class Slots, bool Energies>
@@ -45,17 +59,9 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   const std::uint32_t j = partner & kPartnerMask;
   const std::uint32_t code = partner >> kPartnerBits;
   const PackedSphere& pi = in.packed[i];
-  const PackedSphere& pj = in.packed[j];
-  double qx = pj.x;
-  double qy = pj.y;
-  double qz = pj.z;
-  if (code != kNoShift) {
-    const Vec3& shift = list.shifts[code];
-    qx -= shift[0];
-    qy -= shift[1];
-    qz -= shift[2];
-  }
-  const ContactGeometry g = pair_geometry(sphere_at(in, i, pi.x, pi.y, pi.z), sphere_at(in, j, qx, qy, qz),
+  const PartnerImage q = code != kNoShift ? partner_image<true>(in.packed[j], list.shifts, partner)
+                                          : partner_image<false>(in.packed[j], list.shifts, partner);
+  const ContactGeometry g = pair_geometry(sphere_at(in, i, pi.x, pi.y, pi.z), sphere_at(in, j, q.x, q.y, q.z),
                                           in.lever_arm_is_radius);
   const std::uint32_t slot = list.contact[k];
   const ContactHistory committed =
@@ -113,15 +119,10 @@ struct PairGather {
     for (; k < stop; ++k) {
       const PartnerCode partner = view.partners[k];
       const PackedSphere& pj = packed[partner & kPartnerMask];
-      double dx = xi - pj.x;
-      double dy = yi - pj.y;
-      double dz = zi - pj.z;
-      if constexpr (Shifted) {
-        const Vec3& shift = view.shifts[partner >> kPartnerBits];
-        dx = xi - (pj.x - shift[0]);
-        dy = yi - (pj.y - shift[1]);
-        dz = zi - (pj.z - shift[2]);
-      }
+      const PartnerImage q = partner_image<Shifted>(pj, view.shifts, partner);
+      const double dx = xi - q.x;
+      const double dy = yi - q.y;
+      const double dz = zi - q.z;
       const double reach = hi + pj.half_reach;
       owner[count] = i;
       entry[count] = k;

@@ -280,17 +280,16 @@ void NeighborList::remember_interacting() {
 void NeighborList::carry_history(std::span<const std::uint32_t> new_of_old, int threads) {
   const bool mapped = !new_of_old.empty();
   const auto count = static_cast<std::int64_t>(carried_.size());
-  carried_flip_.assign(carried_.size(), 0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
   for (std::int64_t c = 0; c < count; ++c) {
-    const Carried& old = carried_[static_cast<std::size_t>(c)];
+    Carried& old = carried_[static_cast<std::size_t>(c)];
     const std::uint32_t i = mapped ? new_of_old[old.owner] : old.owner;
     const std::uint32_t j = mapped ? new_of_old[old.partner] : old.partner;
     bool i_owns = true;
     const std::int64_t e = find(i, j, i_owns);
     if (e < 0) continue;  // no longer listed: beyond reach, so its history would reset anyway
     contact_[static_cast<std::size_t>(e)] = static_cast<std::uint32_t>(c);
-    carried_flip_[static_cast<std::size_t>(c)] = i_owns ? 0 : 1;
+    if (!i_owns) old.slip = -old.slip;  // the slip is oriented owner → partner
   }
 }
 
@@ -303,8 +302,7 @@ void NeighborList::lay_out_carried() {
       for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
         const std::uint32_t c = contact_[k];
         if (c == kNoContact) continue;
-        const Carried& old = carried_[c];
-        slip[slot] = carried_flip_[c] != 0 ? Vec3(-old.slip) : old.slip;
+        slip[slot] = carried_[c].slip;
         if (!ext.empty()) ext[slot] = c < carried_extended_.size() ? carried_extended_[c] : ExtendedHistory{};
         contact_[k] = slot++;
       }
@@ -331,7 +329,6 @@ void NeighborList::set_history(std::size_t k, const ContactHistory& h) {
       carried_extended_.push_back(ext.empty() ? ExtendedHistory{} : ext[c]);
     }
   }
-  carried_flip_.assign(carried_.size(), 0);
   contact_ = std::move(carried_of_entry);
   lay_out_carried();
 }
@@ -359,7 +356,7 @@ std::size_t NeighborList::bytes() const noexcept {
                       (slips_[0].capacity() + slips_[1].capacity()) * sizeof(Vec3) +
                       (extended_[0].capacity() + extended_[1].capacity()) * sizeof(ExtendedHistory) +
                       carried_.capacity() * sizeof(Carried) +
-                      carried_extended_.capacity() * sizeof(ExtendedHistory) + carried_flip_.capacity() +
+                      carried_extended_.capacity() * sizeof(ExtendedHistory) +
                       slab_base_.capacity() * sizeof(std::uint32_t) + slabs_.bytes();
   for (const auto& g : grids_) total += g.bytes();
   for (const auto& m : class_members_) total += m.capacity() * sizeof(std::uint32_t);

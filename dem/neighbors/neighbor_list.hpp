@@ -162,7 +162,7 @@ class NeighborList {
   void remember_interacting();
   void carry_history(std::span<const std::uint32_t> new_of_old, int threads);
   /// Gives every entry whose contact_ holds an index into carried_ a slot, slab by slab in
-  /// list order, and copies its history there (negated where carried_flip_ says so).
+  /// list order, and copies its history there (carry_history has already oriented it).
   void lay_out_carried();
 
   std::vector<std::uint32_t> offsets_;
@@ -183,7 +183,6 @@ class NeighborList {
   std::uint64_t cells_visited_ = 0;
   std::vector<Carried> carried_;  // interacting pairs of the previous build
   std::vector<ExtendedHistory> carried_extended_;  // beside carried_, when the model keeps it
-  std::vector<std::uint8_t> carried_flip_;  // 1: the carried pair's owner changed
   // Per-chunk scratch of the build (chunks of owners, independent of the thread count): the
   // partners found, with their shift codes.
   std::vector<std::vector<std::uint32_t>> chunk_partners_;

@@ -40,7 +40,11 @@ Simulation::Simulation(const SimulationSetup& setup)
   builds_at_last_sort_ = field_->list_builds();
   // A generated population arrives in generation order, which scatters neighbours over memory:
   // sort once at the start, then every `sort_every` builds (docs/performance.md, box scaling).
-  if (neighbors_.sort_every > 0 && props_.size() >= kMinSpheresToReorder) reorder();
+  if (sorts()) reorder();
+}
+
+bool Simulation::sorts() const noexcept {
+  return neighbors_.sort_every > 0 && props_.size() >= kMinSpheresToReorder;
 }
 
 std::size_t Simulation::past_states_needed() const noexcept {
@@ -61,8 +65,7 @@ void Simulation::step() {
   ++steps_;
   state_.time = time();  // exact n Δt, free of accumulated rounding
   apply_prescribed_motion();
-  if (neighbors_.sort_every > 0 && props_.size() >= kMinSpheresToReorder &&
-      field_->list_builds() >= builds_at_last_sort_ + neighbors_.sort_every) {
+  if (sorts() && field_->list_builds() >= builds_at_last_sort_ + neighbors_.sort_every) {
     reorder();
   }
 }

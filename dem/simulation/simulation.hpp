@@ -90,6 +90,9 @@ class Simulation {
   [[nodiscard]] EnergyLedger energy() const noexcept;
 
  private:
+  /// True when this run sorts its spheres along the Morton curve (at the start and every
+  /// `sort_every` list builds): sorting is on and the population is large enough to gain.
+  [[nodiscard]] bool sorts() const noexcept;
   KinematicState state_;       // declared first: props_' initialiser fills it
   ParticleProperties props_;
   PairTable table_;
