@@ -36,6 +36,10 @@ class CellGrid {
   [[nodiscard]] std::span<const std::uint32_t> cell(std::size_t c) const noexcept {
     return {members_.data() + start_[c], members_.data() + start_[c + 1]};
   }
+  /// First slot of cell c in members(); cell c holds [first(c), first(c + 1)).
+  [[nodiscard]] std::uint32_t first(std::size_t c) const noexcept { return start_[c]; }
+  /// The members of every cell, cell after cell (the cells of a row along x follow each other).
+  [[nodiscard]] std::span<const std::uint32_t> members() const noexcept { return members_; }
   /// Cells per axis.
   [[nodiscard]] const std::array<int, 3>& dims() const noexcept { return dims_; }
   /// Cell edge per axis [m].

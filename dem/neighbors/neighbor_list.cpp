@@ -50,30 +50,47 @@ SizeClasses size_classes(std::span<const double> half_reach) {
 }
 
 void AxisCells::fill(int c, int dims, double edge, double reach, bool periodic) {
+  // Successive owners (spatially sorted) mostly sit in the same cell row: reuse the last stencil.
+  const Request request{c, dims, edge, reach, periodic};
+  if (!cell.empty() && request == last_) return;
+  last_ = request;
   cell.clear();
   gap.clear();
+  digit.clear();
+  imaged = true;
   const int w = static_cast<int>(std::ceil(reach / edge));
   if (periodic && 2 * w + 1 > dims) {
     // The stencil wraps onto itself: visit every cell once, at its nearest periodic offset.
+    imaged = false;
     for (int t = 0; t < dims; ++t) {
       int d = (t - c) % dims;
       if (d < 0) d += dims;
       if (2 * d > dims) d -= dims;
       cell.push_back(t);
       gap.push_back(std::max(std::abs(d) - 1, 0) * edge);
+      digit.push_back(1);
     }
     return;
   }
+  // Here w·edge < L/2, so the image a cell is visited at is the nearest image of every sphere in
+  // it that lies within reach: a pair in reach is found at its minimum image.
   for (int d = -w; d <= w; ++d) {
     int t = c + d;
+    int image = 1;
     if (periodic) {
-      t %= dims;
-      if (t < 0) t += dims;
+      if (t < 0) {
+        t += dims;
+        image = 2;
+      } else if (t >= dims) {
+        t -= dims;
+        image = 0;
+      }
     } else if (t < 0 || t >= dims) {
       continue;
     }
     cell.push_back(t);
     gap.push_back(std::max(std::abs(d) - 1, 0) * edge);
+    digit.push_back(image);
   }
 }
 
@@ -130,6 +147,8 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   chunk_cells_.assign(chunks, 0);
   counts_.assign(n, 0);
   const int threads = std::max(in.threads, 1);
+  const std::uint32_t* const slab_of = slabs_.all().data();
+  const std::uint8_t* const still = in.still.data();
   if (stencils_.size() < static_cast<std::size_t>(threads)) stencils_.resize(static_cast<std::size_t>(threads));
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
@@ -143,13 +162,16 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
       // the per-chunk slots of neighbouring chunks share cache lines, and incrementing them in
       // the inner loop from two threads made the parallel build slower than the serial one.
       std::vector<std::uint32_t>& out = stencil.partners;
-      out.clear();
+      std::size_t used = 0;  // partners found so far in the chunk (out holds scratch beyond)
       std::uint64_t candidates = 0;
       std::uint64_t cells = 0;
       const std::uint32_t end = std::min(n, (chunk + 1) * kChunk);
       for (std::uint32_t i = chunk * kChunk; i < end; ++i) {
         const PackedSphere& si = spheres[i];
-        const std::size_t first = out.size();
+        const std::size_t first = used;
+        const std::uint32_t slab_i = slab_of[i];
+        const std::uint32_t next_slab = slabs_.next(slab_i);
+        const std::uint8_t still_i = still[i] != 0 ? 0xFF : 0;  // a mask: still pairs are not listed
         for (std::size_t b = 0; b < classes; ++b) {
           if (class_members_[b].empty()) continue;
           const CellGrid& grid = grids_[b * classes + std::max<std::size_t>(b, in.size_class[i])];
@@ -159,50 +181,91 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
           ay.fill(c[1], grid.dims()[1], grid.edge()[1], reach, box.periodic[1]);
           az.fill(c[2], grid.dims()[2], grid.edge()[2], reach, box.periodic[2]);
           const double reach2 = reach * reach;
+          const std::uint32_t* const member = grid.members().data();
+          // Tests the grid's members [from, to) against sphere i. Branch-free: every member is
+          // written at the end of the scratch, and the count advances only for a pair this owner
+          // lists (candidates pass or fail unpredictably; a mispredicted branch per candidate
+          // cost more than the test).
+          const bool imaged = ax.imaged && ay.imaged && az.imaged;
+          const auto scan = [&](std::uint32_t from, std::uint32_t to, std::uint32_t run_code) {
+            if (from == to) return;
+            candidates += to - from;
+            if (used + (to - from) > out.size()) out.resize(2 * (used + (to - from)));
+            std::uint32_t* const slot = out.data();
+            // The run's image: the owner's centre moved by the shift, so that the partners'
+            // wrapped centres need none (none when the images are found sphere by sphere).
+            const Vec3& shift = shifts_[imaged ? run_code : kNoShift];
+            const double xi = si.x + shift[0];
+            const double yi = si.y + shift[1];
+            const double zi = si.z + shift[2];
+            for (std::uint32_t m = from; m < to; ++m) {
+              const std::uint32_t j = member[m];
+              const PackedSphere& sj = spheres[j];
+              double d[3] = {xi - sj.x, yi - sj.y, zi - sj.z};
+              std::uint32_t code = run_code;
+              if (!imaged) [[unlikely]] {
+                // A box shorter than two reaches: the nearest image, sphere by sphere (centres
+                // are wrapped at the build, so it is at most one box length away).
+                int digit[3] = {1, 1, 1};
+                for (int k = 0; k < 3; ++k) {
+                  if (!box.periodic[k]) continue;
+                  if (d[k] > half_length[k]) {
+                    d[k] -= length[k];
+                    digit[k] = 0;
+                  } else if (d[k] < -half_length[k]) {
+                    d[k] += length[k];
+                    digit[k] = 2;
+                  }
+                }
+                code = static_cast<std::uint32_t>(digit[0] + 3 * digit[1] + 9 * digit[2]);
+              }
+              const double cut = si.half_reach + sj.half_reach + skin;
+              const std::uint32_t sj_slab = slab_of[j];
+              // i owns (i, j): same slab and the lower index, or j in the slab after i's.
+              const bool owned = ((sj_slab == slab_i) & (i < j)) | (sj_slab == next_slab);
+              const bool moving = (still[j] & still_i) == 0;
+              const bool near = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut * cut;
+              slot[used] = j | (code << kPartnerBits);
+              used += static_cast<std::size_t>(owned & moving & near);
+            }
+          };
           for (std::size_t kz = 0; kz < az.cell.size(); ++kz) {
             const double gz = az.gap[kz] * az.gap[kz];
             for (std::size_t ky = 0; ky < ay.cell.size(); ++ky) {
               const double gyz = gz + ay.gap[ky] * ay.gap[ky];
               if (gyz > reach2) continue;
+              // Cells adjacent along x are adjacent in the grid's member arrays: each run of them
+              // is scanned as one stretch (a few loops of a handful of candidates each rather
+              // than one loop per cell, whose exits the processor cannot predict).
+              const auto yz_code = static_cast<std::uint32_t>(3 * ay.digit[ky] + 9 * az.digit[kz]);
+              std::size_t run_last = 0;
+              std::uint32_t run_from = 0;
+              std::uint32_t run_to = 0;
+              std::uint32_t run_code = kNoShift;
               for (std::size_t kx = 0; kx < ax.cell.size(); ++kx) {
                 if (gyz + ax.gap[kx] * ax.gap[kx] > reach2) continue;
                 ++cells;
-                for (const std::uint32_t j : grid.cell(grid.index(ax.cell[kx], ay.cell[ky], az.cell[kz]))) {
-                  ++candidates;
-                  if (j == i || !slabs_.owns(i, j) || (in.still[i] != 0 && in.still[j] != 0)) continue;
-                  const PackedSphere& sj = spheres[j];
-                  double d[3] = {si.x - sj.x, si.y - sj.y, si.z - sj.z};
-                  std::uint32_t code = kNoShift;
-                  if (box.any()) {
-                    // Centres are wrapped at the build, so |d| < L: the nearest image is at most
-                    // one box length away.
-                    int digit[3] = {1, 1, 1};
-                    for (int k = 0; k < 3; ++k) {
-                      if (!box.periodic[k]) continue;
-                      if (d[k] > half_length[k]) {
-                        d[k] -= length[k];
-                        digit[k] = 0;
-                      } else if (d[k] < -half_length[k]) {
-                        d[k] += length[k];
-                        digit[k] = 2;
-                      }
-                    }
-                    code = static_cast<std::uint32_t>(digit[0] + 3 * digit[1] + 9 * digit[2]);
-                  }
-                  const double cut = si.half_reach + sj.half_reach + skin;
-                  if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut * cut) {
-                    out.push_back(j | (code << kPartnerBits));
-                  }
+                const std::size_t cell = grid.index(ax.cell[kx], ay.cell[ky], az.cell[kz]);
+                const std::uint32_t code = yz_code + static_cast<std::uint32_t>(ax.digit[kx]);
+                if (run_to > run_from && cell == run_last + 1 && code == run_code) {
+                  run_to = grid.first(cell + 1);
+                } else {
+                  scan(run_from, run_to, run_code);
+                  run_from = grid.first(cell);
+                  run_to = grid.first(cell + 1);
+                  run_code = code;
                 }
+                run_last = cell;
               }
+              scan(run_from, run_to, run_code);
             }
           }
         }
-        std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+        std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(used),
                   [](std::uint32_t a, std::uint32_t b) { return (a & kPartnerMask) < (b & kPartnerMask); });
-        counts_[i] = static_cast<std::uint32_t>(out.size() - first);
+        counts_[i] = static_cast<std::uint32_t>(used - first);
       }
-      chunk_partners_[chunk].assign(out.begin(), out.end());
+      chunk_partners_[chunk].assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(used));
       chunk_candidates_[chunk] = candidates;
       chunk_cells_[chunk] = cells;
     }

@@ -73,13 +73,32 @@ struct SizeClasses {
 /// Classes of the half reaches h.
 [[nodiscard]] SizeClasses size_classes(std::span<const double> half_reach);
 
-/// The cells a search visits along one axis around a sphere's cell, and each one's gap (the
-/// smallest distance between the sphere's cell and that cell along the axis) [m].
+/// The cells a search visits along one axis around a sphere's cell, each one's gap (the
+/// smallest distance between the sphere's cell and that cell along the axis) [m] and the image
+/// its spheres are seen at.
 struct AxisCells {
   std::vector<int> cell;
   std::vector<double> gap;
+  /// Shift digit of each cell's spheres along the axis: 1 as they are, 0 seen one box length
+  /// up (the cell lies past the top face), 2 one box length down (past the bottom face).
+  std::vector<int> digit;
+  /// False when the stencil wraps onto itself (reach ≥ half the periodic length): each cell is
+  /// then visited once and the nearest image must be found sphere by sphere.
+  bool imaged = true;
   /// Cells within `reach` of cell `c` of a row of `dims` cells of edge `edge`.
   void fill(int c, int dims, double edge, double reach, bool periodic);
+
+ private:
+  /// The arguments of a fill.
+  struct Request {
+    int c = -1;
+    int dims = 0;
+    double edge = 0.0;
+    double reach = 0.0;
+    bool periodic = false;
+    bool operator==(const Request&) const = default;
+  };
+  Request last_;  ///< the arguments of the fill the members hold
 };
 
 /// A half Verlet list in CSR form (offsets + partner codes) built from per-class cell grids, with

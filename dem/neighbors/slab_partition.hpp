@@ -36,13 +36,18 @@ class SlabPartition {
   [[nodiscard]] std::span<const std::uint32_t> members(std::uint32_t s) const noexcept {
     return {members_.data() + start_[s], members_.data() + start_[s + 1]};
   }
+  /// The slab whose pairs with slab s slab s owns: the one after it (the first after the last
+  /// along a periodic axis), or count() — no slab — after the last along an open axis.
+  [[nodiscard]] std::uint32_t next(std::uint32_t s) const noexcept {
+    const std::uint32_t after = s + 1;
+    return ring_ && after == count_ ? 0 : after;
+  }
   /// True when sphere i owns its pair with sphere j (see the class comment).
   [[nodiscard]] bool owns(std::uint32_t i, std::uint32_t j) const noexcept {
     const std::uint32_t si = slab_of_[i];
     const std::uint32_t sj = slab_of_[j];
     if (si == sj) return i < j;
-    const std::uint32_t next = si + 1;
-    return sj == (ring_ && next == count_ ? 0 : next);
+    return sj == next(si);
   }
   /// Bytes held.
   [[nodiscard]] std::size_t bytes() const noexcept {

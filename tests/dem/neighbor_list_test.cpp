@@ -116,6 +116,22 @@ TEST(NeighborList, PeriodicImagesAcrossEveryFaceAreFound) {
   EXPECT_TRUE(list.periodic());
 }
 
+TEST(NeighborList, BoxesShorterThanTwoReachesFindTheNearestImageOfEachSphere) {
+  // A periodic axis only a few reaches long makes the search stencil wrap onto itself there: the
+  // cells along it cannot name one image for all their spheres, so each pair's nearest image is
+  // found sphere by sphere — on every axis, the well-sized ones included.
+  for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+    const Vec3 lo(0.0, 0.0, 0.0);
+    const double thin = 0.05 + 0.01 * seed;  // about 2 to 3 of the largest reaches
+    const Vec3 hi(seed % 2 == 0 ? thin : 0.6, 0.5, seed % 2 == 0 ? 0.4 : thin);
+    const auto s = test_support::random_spheres(seed, 300, lo, hi, 0.005, 0.01 + 0.001 * seed);
+    const dem::PeriodicBox box = box_of(lo, hi, true, seed % 3 != 0, true);
+    const double skin = 0.002;
+    const dem::NeighborList list = build_list(s, box, skin, 1 + static_cast<int>(seed % 2));
+    EXPECT_EQ(listed_pairs(list, s, skin), oracle(s, box, skin)) << "seed " << seed;
+  }
+}
+
 /// Distance tests per listed pair and cells visited per sphere in one build of a bidisperse
 /// random scene: 20,000 small spheres and as many `ratio` times larger ones as fill the same
 /// volume, each size filling 20 % of the box.
