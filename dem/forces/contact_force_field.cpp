@@ -479,9 +479,22 @@ void ContactForceField::permute(std::span<const std::uint32_t> order, const Kine
   dem::permute(committed_force_, order);
   dem::permute(committed_torque_, order);
   for (PrescribedMotion& m : setup_.motions) m.particle = new_of_old[m.particle];
-  built_ = false;
+  if (!built_ || list_.sphere_count() != packed_.size()) {
+    pack(state);
+    rebuild(state, new_of_old);
+    return;
+  }
+  // The list is renumbered, not searched again: it stays valid against the (renumbered) centres
+  // of its build, and a reorder right after a build — where Simulation places them — gives
+  // exactly the list a new search would.
+  const ScopedSeconds timer(timing_.neighbor_build);
+  dem::permute(built_position_, order);
   pack(state);
-  rebuild(state, new_of_old);
+  list_.permute(packed_, setup_.box, new_of_old, std::max(setup_.threads, 1));
+  wall_list_.build(
+      packed_, props_.fixed, setup_.walls, state.time, setup_.neighbors.skin,
+      [this](std::uint32_t i, std::uint32_t w) { return wall_reach_of(i, w); }, extended_history_,
+      new_of_old);
 }
 
 }  // namespace dem

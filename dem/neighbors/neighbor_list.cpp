@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <omp.h>
 
@@ -115,7 +116,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   double largest = 0.0;
   for (const double h : in.class_half_reach) largest = std::max(largest, h);
   const double skin = in.skin;
-  slabs_.assign(spheres, lo, hi, box, 2.0 * largest + skin);
+  slab_width_ = 2.0 * largest + skin;
+  extended_history_ = in.extended_history;
+  slabs_.assign(spheres, lo, hi, box, slab_width_);
   // Grid (b, c), c ≥ b, bins class b for the searches of class c (and, for c = b, of every
   // smaller class) with cells as wide as the longest such search reach, h_b + h_c + skin: every
   // search then visits at most 3 × 3 × 3 cells, whatever the size ratio. (Cells half as wide, as
@@ -278,19 +281,29 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   offsets_.resize(n + 1);
   offsets_[0] = 0;
   for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
+  reserve_entries(offsets_[n]);
+  for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
+    const std::vector<std::uint32_t>& part = chunk_partners_[chunk];
+    std::copy(part.begin(), part.end(), partners_.begin() + offsets_[chunk * kChunk]);
+  }
+  if (old_n != n) carried_.clear();
+  finish_layout(new_of_old, threads);
+}
+
+void NeighborList::reserve_entries(std::size_t total) {
   // Keep an eighth in hand when the list grows, so that rebuilds of a steady scene reuse it.
-  const std::size_t total = offsets_[n];
   if (partners_.capacity() < total) {
     partners_.reserve(total + total / 8);
     contact_.reserve(total + total / 8);
   }
   partners_.resize(total);
   contact_.assign(total, kNoContact);
+}
+
+void NeighborList::finish_layout(std::span<const std::uint32_t> new_of_old, int threads) {
+  const std::uint32_t n = sphere_count();
+  const std::size_t total = partners_.size();
   periodic_ = false;
-  for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
-    const std::vector<std::uint32_t>& part = chunk_partners_[chunk];
-    std::copy(part.begin(), part.end(), partners_.begin() + offsets_[chunk * kChunk]);
-  }
   shifted_.assign(n, 0);
   for (std::uint32_t i = 0; i < n; ++i) {
     for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
@@ -309,19 +322,67 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   for (int b = 0; b < 2; ++b) {
     if (slips_[b].capacity() < total) slips_[b].reserve(partners_.capacity());
     slips_[b].resize(total);
-    if (in.extended_history) {
+    if (extended_history_) {
       if (extended_[b].capacity() < total) extended_[b].reserve(partners_.capacity());
       extended_[b].resize(total);
     } else {
       extended_[b].clear();
     }
   }
-  if (old_n == n) {
-    carry_history(new_of_old, threads);
-  } else {
-    carried_.clear();
-  }
+  carry_history(new_of_old, threads);
   lay_out_carried();
+}
+
+void NeighborList::permute(std::span<const PackedSphere> spheres, const PeriodicBox& box,
+                           std::span<const std::uint32_t> new_of_old, int threads) {
+  const std::uint32_t n = sphere_count();
+  if (spheres.size() != n || new_of_old.size() != n) {
+    throw std::invalid_argument("NeighborList::permute: the spheres or the map do not match the list");
+  }
+  remember_interacting();
+  // The slabs of the same centres in the new numbering (the partition depends on positions only).
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (const PackedSphere& s : spheres) {
+    lo = lo.cwiseMin(Vec3(s.x, s.y, s.z));
+    hi = hi.cwiseMax(Vec3(s.x, s.y, s.z));
+  }
+  if (n == 0) lo = hi = Vec3::Zero();
+  slabs_.assign(spheres, lo, hi, box, slab_width_);
+  // Each pair under its owner in the new numbering: when the other sphere owns it now, the pair
+  // is seen from the other side, so its periodic shift is mirrored (every digit d → 2 − d).
+  // Two passes over a copy of the old entries (held only here): count per owner, then place.
+  const std::vector<PartnerCode> old_partners = partners_;
+  const std::vector<std::uint32_t> old_offsets = offsets_;
+  const auto renumbered = [&](std::uint32_t a, std::uint32_t k) {
+    std::uint32_t owner = new_of_old[a];
+    std::uint32_t partner = new_of_old[old_partners[k] & kPartnerMask];
+    std::uint32_t code = old_partners[k] >> kPartnerBits;
+    if (!slabs_.owns(owner, partner)) {
+      std::swap(owner, partner);
+      code = 26 - code;
+    }
+    return std::pair<std::uint32_t, PartnerCode>{owner, partner | (code << kPartnerBits)};
+  };
+  counts_.assign(n, 0);
+  for (std::uint32_t a = 0; a < n; ++a) {
+    for (std::uint32_t k = old_offsets[a]; k < old_offsets[a + 1]; ++k) ++counts_[renumbered(a, k).first];
+  }
+  offsets_[0] = 0;
+  for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
+  reserve_entries(offsets_[n]);
+  std::copy(offsets_.begin(), offsets_.end() - 1, counts_.begin());  // counts_ now: next free entry
+  for (std::uint32_t a = 0; a < n; ++a) {
+    for (std::uint32_t k = old_offsets[a]; k < old_offsets[a + 1]; ++k) {
+      const auto [owner, entry] = renumbered(a, k);
+      partners_[counts_[owner]++] = entry;
+    }
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    std::sort(partners_.begin() + offsets_[i], partners_.begin() + offsets_[i + 1],
+              [](std::uint32_t x, std::uint32_t y) { return (x & kPartnerMask) < (y & kPartnerMask); });
+  }
+  finish_layout(new_of_old, threads);
 }
 
 void NeighborList::remember_interacting() {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "dem/contact/contact_history.hpp"
@@ -115,6 +116,15 @@ class NeighborList {
   /// longer listed (it is then beyond reach).
   void build(const NeighborBuildInput& in, std::span<const std::uint32_t> new_of_old = {});
 
+  /// Renumbers the list after the spheres were reordered (`new_of_old`, as for build) without
+  /// searching again: every pair keeps its entry and history under its owner in the new
+  /// numbering, the slabs follow the centres `spheres` (in the new order). When the centres are
+  /// those of the last build, the list is exactly what build() would make of them; otherwise it
+  /// is the last build's list renumbered, valid for as long as that one was. No new build is
+  /// counted.
+  void permute(std::span<const PackedSphere> spheres, const PeriodicBox& box,
+               std::span<const std::uint32_t> new_of_old, int threads);
+
   /// Number of spheres at the last build.
   [[nodiscard]] std::uint32_t sphere_count() const noexcept {
     return offsets_.empty() ? 0 : static_cast<std::uint32_t>(offsets_.size() - 1);
@@ -179,6 +189,11 @@ class NeighborList {
     Vec3 slip;
   };
   void remember_interacting();
+  /// Sizes partners_ (contents to be written) and clears contact_ for `total` entries.
+  void reserve_entries(std::size_t total);
+  /// What follows the entries of every owner: shift flags, slab slot bases, history arrays, and
+  /// the carried history laid out in its new slots.
+  void finish_layout(std::span<const std::uint32_t> new_of_old, int threads);
   void carry_history(std::span<const std::uint32_t> new_of_old, int threads);
   /// Gives every entry whose contact_ holds an index into carried_ a slot, slab by slab in
   /// list order, and copies its history there (carry_history has already oriented it).
@@ -198,6 +213,8 @@ class NeighborList {
   std::vector<CellGrid> grids_;
   std::vector<std::vector<std::uint32_t>> class_members_;
   std::uint64_t builds_ = 0;
+  double slab_width_ = 0.0;         // the slabs' least width at the last build [m]
+  bool extended_history_ = false;  // the last build kept ExtendedHistory
   std::uint64_t candidates_ = 0;
   std::uint64_t cells_visited_ = 0;
   std::vector<Carried> carried_;  // interacting pairs of the previous build

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <random>
 #include <set>
 #include <utility>
@@ -264,6 +265,68 @@ TEST(NeighborList, HistorySurvivesRebuildsAndReorders) {
     // The slip is oriented owner → partner: it flips when the owner changed.
     EXPECT_EQ(i_owns ? h.tangential_slip : Vec3(-h.tangential_slip), slip);
     EXPECT_EQ(h.max_overlap, pair.first + 1000.0 * pair.second);
+  }
+}
+
+TEST(NeighborList, RenumberingAListEqualsSearchingItAgain) {
+  // A reorder right after a build renumbers the list instead of searching again: on random
+  // polydisperse scenes (open and periodic, random shuffles and Morton orders, with history on
+  // some pairs) it must give exactly what a new search of the reordered spheres gives.
+  for (std::uint32_t seed = 1; seed <= 8; ++seed) {
+    const Vec3 lo(0.0, -0.2, 0.1);
+    const Vec3 hi(1.0, 0.7, 0.8);
+    const auto s = test_support::random_spheres(seed, 500, lo, hi, 0.01, 0.01 * (seed % 2 == 0 ? 8.0 : 2.0));
+    const dem::PeriodicBox box = box_of(lo, hi, seed % 2 == 1, seed % 3 != 0, seed % 4 == 0);
+    const double skin = 0.004;
+    dem::NeighborList searched = build_list(s, box, skin);
+    for (std::uint32_t k = 0; k < searched.size(); k += 3) {
+      dem::ContactHistory h;
+      h.tangential_slip = Vec3(k, -0.5 * k, 1.0);
+      h.rolling_slip = Vec3(0.0, k, 2.0);
+      h.max_overlap = 1e-3 * k;
+      h.attached = k % 2 == 0;
+      searched.set_history(k, h);
+    }
+    dem::NeighborList renumbered = searched;
+    std::vector<std::uint32_t> order(s.spheres.size());
+    std::iota(order.begin(), order.end(), 0U);
+    if (seed % 2 == 0) {
+      std::mt19937_64 rng(seed);
+      std::shuffle(order.begin(), order.end(), rng);
+    } else {
+      Vec3Array positions(3, static_cast<Eigen::Index>(s.spheres.size()));
+      for (std::size_t i = 0; i < s.spheres.size(); ++i) {
+        positions.col(static_cast<Eigen::Index>(i)) = Vec3(s.spheres[i].x, s.spheres[i].y, s.spheres[i].z);
+      }
+      order = dem::morton_order(positions, box, 0.05);
+    }
+    const auto new_of_old = dem::inverse_permutation(order);
+    test_support::RandomSpheres moved;
+    for (const std::uint32_t k : order) {
+      moved.spheres.push_back(s.spheres[k]);
+      moved.still.push_back(s.still[k]);
+    }
+    const std::uint64_t builds = renumbered.builds();
+    renumbered.permute(moved.spheres, box, new_of_old, 1 + static_cast<int>(seed % 2));
+    EXPECT_EQ(renumbered.builds(), builds) << "a renumbering is not a build";
+    searched = build_list(moved, box, skin, 1, new_of_old, std::move(searched));
+    ASSERT_EQ(renumbered.size(), searched.size()) << "seed " << seed;
+    EXPECT_EQ(renumbered.periodic(), searched.periodic()) << "seed " << seed;
+    for (std::uint32_t i = 0; i < searched.sphere_count(); ++i) {
+      ASSERT_EQ(renumbered.begin(i), searched.begin(i)) << "seed " << seed << " sphere " << i;
+      EXPECT_EQ(renumbered.shifted(i), searched.shifted(i)) << "seed " << seed << " sphere " << i;
+      EXPECT_EQ(renumbered.slabs().of(i), searched.slabs().of(i)) << "seed " << seed << " sphere " << i;
+    }
+    for (std::size_t k = 0; k < searched.size(); ++k) {
+      EXPECT_EQ(renumbered.partners()[k], searched.partners()[k]) << "seed " << seed << " entry " << k;
+      EXPECT_EQ(renumbered.contacts()[k], searched.contacts()[k]) << "seed " << seed << " entry " << k;
+      const dem::ContactHistory a = renumbered.history(k);
+      const dem::ContactHistory b = searched.history(k);
+      EXPECT_EQ(a.tangential_slip, b.tangential_slip) << "seed " << seed << " entry " << k;
+      EXPECT_EQ(a.rolling_slip, b.rolling_slip) << "seed " << seed << " entry " << k;
+      EXPECT_EQ(a.max_overlap, b.max_overlap) << "seed " << seed << " entry " << k;
+      EXPECT_EQ(a.attached, b.attached) << "seed " << seed << " entry " << k;
+    }
   }
 }
 
