@@ -273,10 +273,13 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
   if (count == 1) {
     run_slab(0);
   } else {
-    // Even slabs, then odd ones: two slabs of one colour never share a sphere.
+    // Even slabs, then odd ones: two slabs of one colour never share a sphere. A static split
+    // gives each thread the same run of slabs every step, and so the spheres the per-sphere
+    // passes give it (slab-major order): a dynamic one moved slabs between threads from step
+    // to step and with them their spheres' cache lines (2 threads: loop time ×0.65–0.77).
     for (std::uint32_t colour = 0; colour < 2; ++colour) {
       const auto half = static_cast<std::int64_t>((count - colour + 1) / 2);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) if (threads > 1)
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
       for (std::int64_t h = 0; h < half; ++h) run_slab(colour + 2 * static_cast<std::uint32_t>(h));
     }
   }
