@@ -23,6 +23,18 @@ std::int64_t find_partner(std::span<const PartnerCode> partners, std::uint32_t b
   return static_cast<std::int64_t>(base) + (it - partners.begin());
 }
 
+/// The smallest box holding every centre (a point at the origin when there are none).
+std::pair<Vec3, Vec3> bounding_box(std::span<const PackedSphere> spheres) noexcept {
+  if (spheres.empty()) return {Vec3::Zero(), Vec3::Zero()};
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -lo;
+  for (const PackedSphere& s : spheres) {
+    lo = lo.cwiseMin(Vec3(s.x, s.y, s.z));
+    hi = hi.cwiseMax(Vec3(s.x, s.y, s.z));
+  }
+  return {lo, hi};
+}
+
 }  // namespace
 
 SizeClasses size_classes(std::span<const double> half_reach) {
@@ -101,13 +113,7 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   const auto n = static_cast<std::uint32_t>(spheres.size());
   ++builds_;
 
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = -lo;
-  for (const PackedSphere& s : spheres) {
-    lo = lo.cwiseMin(Vec3(s.x, s.y, s.z));
-    hi = hi.cwiseMax(Vec3(s.x, s.y, s.z));
-  }
-  if (n == 0) lo = hi = Vec3::Zero();
+  const auto [lo, hi] = bounding_box(spheres);
 
   const std::size_t classes = in.class_half_reach.size();
   class_members_.resize(classes);
@@ -341,13 +347,7 @@ void NeighborList::permute(std::span<const PackedSphere> spheres, const Periodic
   }
   remember_interacting();
   // The slabs of the same centres in the new numbering (the partition depends on positions only).
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = -lo;
-  for (const PackedSphere& s : spheres) {
-    lo = lo.cwiseMin(Vec3(s.x, s.y, s.z));
-    hi = hi.cwiseMax(Vec3(s.x, s.y, s.z));
-  }
-  if (n == 0) lo = hi = Vec3::Zero();
+  const auto [lo, hi] = bounding_box(spheres);
   slabs_.assign(spheres, lo, hi, box, slab_width_);
   // Each pair under its owner in the new numbering: when the other sphere owns it now, the pair
   // is seen from the other side, so its periodic shift is mirrored (every digit d → 2 − d).
