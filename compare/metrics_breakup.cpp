@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <numeric>
 #include <stdexcept>
 
@@ -11,6 +10,7 @@
 
 #include "dem/domain/periodic_box.hpp"
 #include "dem/neighbors/neighbor_list.hpp"
+#include "dem/particles/particles.hpp"
 
 namespace comparison::breakup {
 namespace {
@@ -41,9 +41,6 @@ class UnionFind {
   std::vector<std::uint32_t> parent_;
   std::vector<std::uint32_t> size_;
 };
-
-/// Volume of a sphere of radius r [m³].
-double ball_volume(double r) noexcept { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 void check_radii(std::span<const SnapshotSphere> spheres, const char* which) {
   for (std::size_t i = 0; i < spheres.size(); ++i) {
@@ -118,7 +115,7 @@ Fragments fragments(std::span<const SnapshotSphere> spheres, const BondRule& rul
   std::vector<std::uint32_t> first(n, n);
   for (std::uint32_t i = 0; i < n; ++i) {
     const std::uint32_t r = sets.find(i);
-    volume[r] += ball_volume(spheres[i].radius);
+    volume[r] += dem::sphere_volume(spheres[i].radius);
     ++size[r];
     first[r] = std::min(first[r], i);
   }
@@ -161,12 +158,12 @@ BreakupMetrics breakup_metrics(std::span<const SnapshotSphere> before, std::span
   }
   const std::size_t final_contacts = bonded_pairs(after, body_contact(after)).size();
   double total = 0.0;
-  for (const SnapshotSphere& s : before) total += ball_volume(s.radius);
+  for (const SnapshotSphere& s : before) total += dem::sphere_volume(s.radius);
   const Fragments f = fragments(after, after_rule);
   // Volumes from the formed agglomerate's radii (a sphere keeps its radius; a trace may print it
   // with fewer digits), so the largest fragment never exceeds the whole.
   std::vector<double> volume(f.volume.size(), 0.0);
-  for (std::size_t i = 0; i < before.size(); ++i) volume[f.of[i]] += ball_volume(before[i].radius);
+  for (std::size_t i = 0; i < before.size(); ++i) volume[f.of[i]] += dem::sphere_volume(before[i].radius);
   const auto n = static_cast<double>(before.size());
   BreakupMetrics m;
   m.kappa_vol = volume.front() / total;

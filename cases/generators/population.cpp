@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "cases/generators/random_stream.hpp"
+#include "dem/particles/particles.hpp"
 
 namespace cases {
 namespace {
@@ -20,7 +21,6 @@ namespace {
 constexpr int kMaxRedraws = 10000;
 
 /// Volume of a sphere of radius r.
-double sphere_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 /// One radius from the size specification (truncated distributions are drawn again).
 double draw_radius(const SizeSpec& s, RandomStream& rng) {
@@ -286,7 +286,7 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
     while (volume < target) {
       const double r = draw_radius(spec.size, rng);
       radii.push_back(r);
-      volume += sphere_volume(r);
+      volume += dem::sphere_volume(r);
     }
   }
 
@@ -312,7 +312,7 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
       if (!inside(g, x, r) || grid.overlaps(x, r)) continue;
       grid.add(x, r);
       out.push_back(sphere(spec, x, r, interaction_ratio));
-      filled += sphere_volume(r);
+      filled += dem::sphere_volume(r);
       done = true;
     }
     if (!done) {

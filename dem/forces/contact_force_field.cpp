@@ -180,6 +180,13 @@ double ContactForceField::pack(const KinematicState& state) {
   return worst;
 }
 
+void ContactForceField::build_wall_list(double time, std::span<const std::uint32_t> new_of_old) {
+  wall_list_.build(
+      packed_, props_.fixed, setup_.walls, time, setup_.neighbors.skin,
+      [this](std::uint32_t i, std::uint32_t w) { return wall_reach_of(i, w); }, extended_history_,
+      new_of_old);
+}
+
 void ContactForceField::rebuild(const KinematicState& state, std::span<const std::uint32_t> new_of_old) {
   const ScopedSeconds timer(timing_.neighbor_build);
   if (setup_.box.any()) {
@@ -200,10 +207,7 @@ void ContactForceField::rebuild(const KinematicState& state, std::span<const std
   list_.build({packed_, still_, classes_.of, classes_.max_half_reach, &setup_.box,
                setup_.neighbors.skin, threads, extended_history_},
               new_of_old);
-  wall_list_.build(
-      packed_, props_.fixed, setup_.walls, state.time, setup_.neighbors.skin,
-      [this](std::uint32_t i, std::uint32_t w) { return wall_reach_of(i, w); }, extended_history_,
-      new_of_old);
+  build_wall_list(state.time, new_of_old);
   for (std::size_t i = 0; i < packed_.size(); ++i) {
     built_position_.col(static_cast<Eigen::Index>(i)) = Vec3(packed_[i].x, packed_[i].y, packed_[i].z);
   }
@@ -494,10 +498,7 @@ void ContactForceField::permute(std::span<const std::uint32_t> order, const Kine
   dem::permute(built_position_, order);
   pack(state);
   list_.permute(packed_, setup_.box, new_of_old, std::max(setup_.threads, 1));
-  wall_list_.build(
-      packed_, props_.fixed, setup_.walls, state.time, setup_.neighbors.skin,
-      [this](std::uint32_t i, std::uint32_t w) { return wall_reach_of(i, w); }, extended_history_,
-      new_of_old);
+  build_wall_list(state.time, new_of_old);
 }
 
 }  // namespace dem

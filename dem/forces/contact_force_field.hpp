@@ -116,6 +116,8 @@ class ContactForceField final : public ForceEvaluator {
   void evaluate(const KinematicState& state, double elapsed, Accelerations& out, bool commit);
   double pack(const KinematicState& state);
   void rebuild(const KinematicState& state, std::span<const std::uint32_t> new_of_old);
+  /// Builds the sphere–wall candidates from the packed centres at `time` (new_of_old: as rebuild).
+  void build_wall_list(double time, std::span<const std::uint32_t> new_of_old);
   void observe(const KinematicState& state, double elapsed);
   void run_pairs(const KinematicState& state, double elapsed, bool commit);
   void run_walls_and_fields(const KinematicState& state, double elapsed, Accelerations& out, bool commit);

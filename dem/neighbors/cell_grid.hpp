@@ -32,10 +32,6 @@ class CellGrid {
             static_cast<std::size_t>(cy)) * static_cast<std::size_t>(dims_[0]) +
            static_cast<std::size_t>(cx);
   }
-  /// The spheres in cell `c`.
-  [[nodiscard]] std::span<const std::uint32_t> cell(std::size_t c) const noexcept {
-    return {members_.data() + start_[c], members_.data() + start_[c + 1]};
-  }
   /// First slot of cell c in members(); cell c holds [first(c), first(c + 1)).
   [[nodiscard]] std::uint32_t first(std::size_t c) const noexcept { return start_[c]; }
   /// The members of every cell, cell after cell (the cells of a row along x follow each other).

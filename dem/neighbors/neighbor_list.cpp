@@ -15,6 +15,9 @@ namespace {
 /// any thread count.
 constexpr std::uint32_t kChunk = 512;
 
+/// Orders list entries by partner index (an owner's entries are kept in this order).
+bool by_partner(PartnerCode a, PartnerCode b) noexcept { return (a & kPartnerMask) < (b & kPartnerMask); }
+
 /// Index of the entry with partner j among `partners`, sorted by partner, or −1.
 std::int64_t find_partner(std::span<const PartnerCode> partners, std::uint32_t base, std::uint32_t j) {
   const auto it = std::lower_bound(partners.begin(), partners.end(), j,
@@ -271,7 +274,7 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
           }
         }
         std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(used),
-                  [](std::uint32_t a, std::uint32_t b) { return (a & kPartnerMask) < (b & kPartnerMask); });
+                  by_partner);
         counts_[i] = static_cast<std::uint32_t>(used - first);
       }
       chunk_partners_[chunk].assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(used));
@@ -380,7 +383,7 @@ void NeighborList::permute(std::span<const PackedSphere> spheres, const Periodic
   }
   for (std::uint32_t i = 0; i < n; ++i) {
     std::sort(partners_.begin() + offsets_[i], partners_.begin() + offsets_[i + 1],
-              [](std::uint32_t x, std::uint32_t y) { return (x & kPartnerMask) < (y & kPartnerMask); });
+              by_partner);
   }
   finish_layout(new_of_old, threads);
 }

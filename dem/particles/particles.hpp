@@ -11,6 +11,11 @@
 
 namespace dem {
 
+/// Volume of a sphere of radius r: 4/3 π r³ [m³].
+[[nodiscard]] constexpr double sphere_volume(double radius) noexcept {
+  return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+}
+
 /// Mass of a sphere, thesis eq 3.1: m = 4/3 π ρ r³ [kg].
 [[nodiscard]] constexpr double sphere_mass(double density, double radius) noexcept {
   return 4.0 / 3.0 * std::numbers::pi * density * radius * radius * radius;
