@@ -11,6 +11,23 @@
 
 namespace test_support {
 
+/// True in a build with AddressSanitizer (CI's sanitizer phase runs the unit tests ten to twenty
+/// times slower there).
+inline constexpr bool kSanitized =
+#if defined(__SANITIZE_ADDRESS__)
+    true;
+#else
+    false;
+#endif
+
+/// `full` in a plain build, `reduced` under the sanitizers: the heaviest many-body tests keep
+/// their full size where they are fast and still walk every code path, at a smaller size, under
+/// the sanitizers.
+template <typename T>
+constexpr T full_or_sanitized(T full, T reduced) noexcept {
+  return kSanitized ? reduced : full;
+}
+
 /// `n` spheres at uniformly random centres in [lo, hi], radii log-uniform in [r_min, r_max]
 /// (size ratio r_max/r_min), every fifth one still, for neighbour-search tests (overlaps allowed).
 struct RandomSpheres {

@@ -97,7 +97,8 @@ dem::Vec3Array run(dem::SimulationSetup setup, int threads, int steps, std::uint
 TEST(ManyBodyDeterminism, RerunsAreBitIdenticalForAnyThreadCount) {
   // 2,000 frictional spheres settling in a walled box: contacts, walls, list rebuilds and
   // Morton reorders all happen within the run.
-  const dem::SimulationSetup setup = test_support::settling_box(21, 2000);
+  const dem::SimulationSetup setup =
+      test_support::settling_box(21, test_support::full_or_sanitized<std::size_t>(2000, 500));
   std::uint64_t reorders = 0;
   const dem::Vec3Array one = run(setup, 1, 400, &reorders);
   EXPECT_GT(reorders, 0U);
@@ -107,7 +108,9 @@ TEST(ManyBodyDeterminism, RerunsAreBitIdenticalForAnyThreadCount) {
 }
 
 TEST(ManyBodyDeterminism, PeriodicJammedScenesToo) {
-  dem::SimulationSetup setup = jammed(5, 1500, 0.03, true);
+  // Under the sanitizers a third of the spheres in a third of the volume (the same density).
+  dem::SimulationSetup setup = test_support::kSanitized ? jammed(5, 500, 0.03 / std::cbrt(3.0), true)
+                                                         : jammed(5, 1500, 0.03, true);
   setup.timestep = 5e-6;
   const dem::Vec3Array one = run(setup, 1, 200);
   EXPECT_TRUE(one.cwiseEqual(run(setup, 2, 200)).all());
@@ -115,7 +118,8 @@ TEST(ManyBodyDeterminism, PeriodicJammedScenesToo) {
 
 TEST(ManyBodyReorder, KeepsEveryContactAndItsHistory) {
   // Equal spheres on a lattice 1 % tighter than touching: every neighbour is in contact.
-  dem::SimulationSetup setup = test_support::settling_box(8, 1000, 1e-3, 0.0, 1, 1.98);
+  dem::SimulationSetup setup =
+      test_support::settling_box(8, test_support::full_or_sanitized<std::size_t>(1000, 343), 1e-3, 0.0, 1, 1.98);
   setup.neighbors.sort_every = 0;  // reorder only when asked
   dem::Simulation plain(setup);
   dem::Simulation sorted(setup);

@@ -2,6 +2,7 @@
 // The step loop allocates nothing once warm: every scheme keeps its stages, the force field its
 // lists and buffers. Counted by replacing the global operator new in this test program.
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 
@@ -73,9 +74,10 @@ Counts count_allocations(dem::SimulationSetup setup, int warm, int steps) {
 TEST(StepLoop, AllocatesNothingBetweenListBuilds) {
   for (const dem::SchemeId scheme : {dem::SchemeId::velocity_verlet, dem::SchemeId::leapfrog,
                                      dem::SchemeId::rk4, dem::SchemeId::abm, dem::SchemeId::bd2}) {
-    dem::SimulationSetup setup = test_support::settling_box(4, 300);
+    dem::SimulationSetup setup =
+        test_support::settling_box(4, test_support::full_or_sanitized<std::size_t>(300, 100));
     setup.scheme = scheme;
-    const Counts c = count_allocations(setup, 200, 800);
+    const Counts c = count_allocations(setup, 200, test_support::full_or_sanitized(800, 300));
     EXPECT_EQ(c.plain, 0) << dem::scheme_info(scheme).keyword;
     EXPECT_GT(c.rebuild_steps, 0) << dem::scheme_info(scheme).keyword;
   }
@@ -84,10 +86,12 @@ TEST(StepLoop, AllocatesNothingBetweenListBuilds) {
 TEST(StepLoop, ListBuildsReuseTheirStorageOnceWarm) {
   // A periodic granular gas keeps its list size: after warm-up, rebuilds find the capacity they
   // need (the list keeps an eighth in hand when it grows).
-  dem::SimulationSetup setup = test_support::settling_box(9, 1000);
+  dem::SimulationSetup setup =
+      test_support::settling_box(9, test_support::full_or_sanitized<std::size_t>(1000, 343));
   setup.walls.clear();
   setup.fields.gravity.setZero();
-  setup.box.hi = dem::Vec3::Constant(10 * 2.1e-3 * 1.3);
+  const double side = std::round(std::cbrt(static_cast<double>(setup.particles.size())));  // lattice rows
+  setup.box.hi = dem::Vec3::Constant(side * 2.1e-3 * 1.3);
   setup.box.periodic = {true, true, true};
   const Counts c = count_allocations(setup, 2000, 2000);
   EXPECT_GT(c.rebuild_steps, 3);
