@@ -2,10 +2,7 @@
 #include "dem/contact/laws/jkr.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <limits>
-
-#include <boost/math/tools/toms748_solve.hpp>
 
 namespace dem::laws {
 
@@ -15,22 +12,21 @@ double jkr_contact_radius(double overlap, const JkrParameters& p) noexcept {
   const double a_c = jkr_critical_radius(p);
   const double target = overlap * p.reduced_radius / (a_c * a_c);
   const auto g = [target](double y) { return y * y * y * y - 4.0 * y - target; };
-  double lo = 1.0;
+  const double lo = 1.0;
   if (!(g(lo) < 0.0)) return a_c;  // at (or, by rounding, just below) the rupture point
   double hi = std::max(2.0, std::sqrt(std::sqrt(2.0 * std::abs(target))));
   while (!(g(hi) > 0.0) && hi < 1e300) hi *= 2.0;  // y ≥ 2 and y⁴ ≥ 2D guarantee g > 0
   if (!(g(hi) > 0.0)) return a_c * hi * hi;          // not finite input: no bracket
-  try {
-    std::uintmax_t iterations = 200;
-    const auto bracket = boost::math::tools::toms748_solve(
-        g, lo, hi, boost::math::tools::eps_tolerance<double>(std::numeric_limits<double>::digits - 2),
-        iterations);
-    lo = bracket.first;
-    hi = bracket.second;
-  } catch (...) {
-    return a_c * lo * lo;  // unreachable with a valid bracket; keeps the hot loop noexcept
+  // Newton's method from hi: g is increasing and convex on y ≥ 1 (g' = 4y³ − 4, g'' = 12y²), so
+  // from a point with g > 0 every iterate stays at or above the root and falls towards it,
+  // quadratically (linearly only at the rupture point, where g' vanishes). Iterating until a
+  // step no longer lowers y reaches the root to rounding, with no tolerance to choose.
+  double y = hi;
+  for (int k = 0; k < 200; ++k) {
+    const double next = y - g(y) / (4.0 * (y * y * y - 1.0));
+    if (!(next < y)) break;
+    y = std::max(next, lo);
   }
-  const double y = 0.5 * (lo + hi);
   return a_c * y * y;
 }
 
