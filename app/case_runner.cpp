@@ -73,9 +73,23 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
 
 }  // namespace
 
-comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<std::string>& engines,
+comparison::CaseOutcome run_case(const cases::Scene& input, const std::vector<std::string>& engines,
                                  const RunContext& context) {
   std::vector<cases::RunResult> runs;
+  cases::Scene scene;
+  try {
+    scene = prepare::prepare_scene(input, context.prepare);
+  } catch (const std::exception& e) {
+    for (const auto& name : engines) {
+      cases::RunResult r;
+      r.engine = name;
+      r.status = cases::RunStatus::error;
+      r.reason = fmt::format("the case's preparation failed: {}", e.what());
+      runs.push_back(r);
+      if (context.on_engine_done) context.on_engine_done(input, runs.back());
+    }
+    return comparison::evaluate_runs(input, std::move(runs));
+  }
   for (const auto& name : engines) {
     runs.push_back(run_one(scene, name, context));
     if (context.on_engine_done) context.on_engine_done(scene, runs.back());

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compare/case_outcome.hpp"
+#include "prepare/prepare_scene.hpp"
 #include "reference/engine.hpp"
 #include "store/result_cache.hpp"
 
@@ -16,6 +17,7 @@ namespace app {
 /// How engines are run for one command.
 struct RunContext {
   reference::RunOptions options;
+  prepare::PrepareOptions prepare;                ///< how a case's [[stages]] run (and are cached)
   std::optional<store::ResultCache> cache;        ///< reference-code results; none: always run
   bool refresh = false;                           ///< run reference codes even on a cache hit
   std::optional<std::filesystem::path> baselines; ///< directory of committed baselines
@@ -25,7 +27,9 @@ struct RunContext {
   std::function<void(const cases::Scene&, const cases::RunResult&)> on_engine_done;
 };
 
-/// Runs `scene` on each named engine (in order) and evaluates metrics and comparisons. Reference
+/// Runs `scene` on each named engine (in order) and evaluates metrics and comparisons. A scene
+/// with [[stages]] is prepared first (prepare::prepare_scene); the outcome holds the prepared
+/// scene, and when preparation fails every engine is an `error` with the reason. Reference
 /// codes (LAMMPS, YADE) are read from the cache when their result for this scene and version is
 /// there, stored after a successful run, and replaced by the committed baseline (with a warning)
 /// when not installed. Unknown engine names must have been rejected by the caller.

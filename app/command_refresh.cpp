@@ -51,7 +51,7 @@ int command_refresh(const std::vector<std::string>& args, const Invocation&) {
     fresh.refresh = true;           // re-run the reference codes, then store their results
     fresh.baselines = std::nullopt;  // never answer a refresh from the baselines
     const comparison::CaseOutcome o = run_case(scene, engines, fresh);
-    store::Baseline baseline{scene.name, store::scene_fingerprint(scene), {}, {}};
+    store::Baseline baseline{scene.name, store::scene_fingerprint(o.scene), {}, {}};
     for (const auto& r : o.runs) {
       const bool ok = r.status == cases::RunStatus::ok;
       if (r.engine == "inhouse") {

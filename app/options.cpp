@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/cli.hpp"
+#include "app/driver_revisions.hpp"
 #include "cases/catalogue.hpp"
 
 namespace app {
@@ -91,6 +92,9 @@ RunContext run_context(const po::variables_map& vm, const std::filesystem::path&
     ctx.cache.emplace(vm.count("cache") != 0 ? std::filesystem::path(vm["cache"].as<std::string>())
                                              : store::ResultCache::default_dir());
   }
+  ctx.prepare.threads = ctx.options.threads;
+  ctx.prepare.core_revision = kCoreRevision;
+  if (ctx.cache) ctx.prepare.cache_dir = ctx.cache->dir() / "stages";
   ctx.wall_times = vm.count("reproducible") == 0;
   ctx.baselines = vm.count("baselines") != 0
                       ? std::optional<std::filesystem::path>(vm["baselines"].as<std::string>())

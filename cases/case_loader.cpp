@@ -25,7 +25,7 @@ namespace {
 constexpr auto kTopLevelKeys =
     std::to_array<std::string_view>({"case", "model", "mixing", "materials", "pairs", "particles",
                                      "populations", "walls", "domain", "neighbors", "fields",
-                                     "integration", "output", "compare"});
+                                     "stages", "integration", "output", "compare"});
 
 /// Largest initial body overlap allowed, as a fraction of the smaller radius.
 constexpr double kMaxInitialOverlap = 0.01;
@@ -219,7 +219,11 @@ namespace loader {
 
 void check_scene(const Table& root, const Scene& scene) {
   check_initial_overlaps(root, scene);
-  check_wall_overlaps(root, scene);
+  // A launch stage places the spheres itself (clear of its wall); until then they may be anywhere.
+  const bool launched = std::any_of(scene.stages.begin(), scene.stages.end(), [](const StageSpec& st) {
+    return std::holds_alternative<LaunchStageSpec>(st.action);
+  });
+  if (!launched) check_wall_overlaps(root, scene);
   check_model_buildable(root, scene);
   warn_held_spin(root, scene);
 }
@@ -260,6 +264,7 @@ Scene load_case_text(std::string_view text, const std::string& path) {
   loader::read_domain(root, scene);
   loader::read_neighbors(root, scene);
   loader::read_fields(root, scene);
+  loader::read_stages(root, scene);
   loader::read_integration(root, scene);
   loader::read_compare(root, scene);
   loader::read_output(root, scene);

@@ -41,6 +41,13 @@ constexpr std::array kMetrics{
     MetricInfo{"separation_work", "J",
                "work ∫F dℓ of the compared contact's force from its deepest overlap to rupture (appendix E)", true, false},
     MetricInfo{"equilibrium_overlap", "m", "overlap of the compared contact at the last sample", true, false},
+    MetricInfo{"kappa_vol", "-",
+               "κVOL, thesis eq 5.2: volume of the largest final fragment / volume of the formed agglomerate", false, false},
+    MetricInfo{"kappa_damage", "-",
+               "κDAMAGE: fraction of the formed agglomerate's body contacts that no longer touch at the end", false, false},
+    MetricInfo{"fragments", "-", "fragments at the end (spheres joined while their law still acts; a lone sphere is one)", false, false},
+    MetricInfo{"coordination_before", "-", "2 × body contacts / spheres of the formed agglomerate", false, false},
+    MetricInfo{"coordination_after", "-", "2 × body contacts / spheres at the end", false, false},
 };
 
 constexpr std::array<std::string_view, 4> kEngines{"inhouse", "analytic", "lammps", "yade"};

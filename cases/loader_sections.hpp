@@ -36,7 +36,9 @@ void read_domain(const Table& root, Scene& scene);
 void read_neighbors(const Table& root, Scene& scene);
 /// Reads the optional [fields] table (gravity and [fields.fluid]).
 void read_fields(const Table& root, Scene& scene);
-/// Reads [integration].
+/// Reads the optional [[stages]] entries: formation and launch (needs the walls).
+void read_stages(const Table& root, Scene& scene);
+/// Reads [integration] (needs the stages: a duration of "launch").
 void read_integration(const Table& root, Scene& scene);
 /// Reads the optional [compare] table (needs the particles).
 void read_compare(const Table& root, Scene& scene);

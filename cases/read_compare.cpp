@@ -234,14 +234,17 @@ std::vector<ParticlePair> read_trace_walls(const Table& table, const Scene& scen
   return out;
 }
 
-/// output.snapshot_times: increasing times within [0, duration].
-std::vector<double> read_snapshot_times(const Table& table, double duration) {
+/// output.snapshot_times: increasing times within [0, duration] (≥ 0 only, when a launch stage
+/// sets the duration later).
+std::vector<double> read_snapshot_times(const Table& table, const Scene& scene) {
   std::vector<double> out;
   const auto value = table.find("snapshot_times");
   if (!value) return out;
+  const double duration = scene.integration.duration;
   for (const Value& item : value->elements()) {
     const double t = item.number();
-    if (t < 0.0 || t > duration) {
+    if (t < 0.0) item.fail(fmt::format("must be ≥ 0, got {}", t));
+    if (!scene.duration_from_launch && t > duration) {
       item.fail(fmt::format("must be in [0, integration.duration] = [0, {}], got {}", duration, t));
     }
     if (!out.empty() && t <= out.back()) {
@@ -289,8 +292,11 @@ void read_output(const Table& root, Scene& scene) {
   spec.trace_pairs = read_trace_pairs(table, scene);
   spec.trace_walls = read_trace_walls(table, scene);
   if (const auto v = table.find("trace_energy")) spec.trace_energy = v->boolean();
-  spec.snapshot_times = read_snapshot_times(table, scene.integration.duration);
+  spec.snapshot_times = read_snapshot_times(table, scene);
   if (const auto v = table.find("snapshot_every")) {
+    if (scene.duration_from_launch) {
+      v->fail("needs a numeric integration.duration (it is \"launch\" here); give snapshot_times instead");
+    }
     const double every = v->number(positive_range());
     const double duration = scene.integration.duration;
     if (duration / every > 1e5) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Section readers for what moves and how it is integrated: [[particles]], [fields] and
 // [integration].
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <optional>
@@ -197,7 +198,21 @@ void read_integration(const Table& root, Scene& scene) {
   IntegrationSpec& spec = scene.integration;
   spec.scheme = *dem::parse_scheme(table.require("scheme").keyword(scheme_keywords(), "scheme"));
   spec.timestep = read_timestep(table.require("timestep"));
-  spec.duration = table.require("duration").number(positive_range());
+  const Value duration = table.require("duration");
+  if (duration.node().is_string()) {
+    if (duration.string() != "launch") {
+      duration.fail(fmt::format("expected a number of seconds > 0, or \"launch\" (set by a launch stage, eq 5.1), "
+                                "got string \"{}\"", duration.string()));
+    }
+    const bool launches = std::any_of(scene.stages.begin(), scene.stages.end(), [](const StageSpec& st) {
+      return std::holds_alternative<LaunchStageSpec>(st.action);
+    });
+    if (!launches) duration.fail("\"launch\" needs a [[stages]] entry of kind \"launch\" to set the duration");
+    scene.duration_from_launch = true;
+    spec.duration = 0.0;  // set by the launch stage
+  } else {
+    spec.duration = duration.number(positive_range());
+  }
   if (const auto v = table.find("steps_per_collision")) {
     spec.steps_per_collision = v->number(positive_range());
   }
@@ -215,7 +230,7 @@ void read_integration(const Table& root, Scene& scene) {
   if (const auto v = table.find("leapfrog_start")) {
     spec.leapfrog_start = read_choice(*v, kLeapfrogStarts, "leapfrog start");
   }
-  check_step_count(table, spec);
+  if (!scene.duration_from_launch) check_step_count(table, spec);
   warn_ineffective_settings(table, spec);
 }
 

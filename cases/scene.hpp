@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "dem/contact/model_choice.hpp"
@@ -135,6 +136,49 @@ struct CompareSpec {
   std::map<std::string, Tolerance> matched_tolerances;  ///< per metric, for matched rows
 };
 
+/// Agglomerate formation, run by the core before any engine sees the scene (thesis §5.2.1): the
+/// mobile spheres are pulled towards the centre of their bounding box by an acceleration that
+/// fades linearly to zero, with more damping and no friction, until they have settled.
+struct FormationStageSpec {
+  double pull = 0.0;            ///< pull acceleration at the start [m/s²], > 0
+  double pull_time = 0.0;       ///< the pull fades linearly to zero over this time [s], > 0
+  double restitution = 0.0;     ///< replaces every material's restitution while forming, in (0, 1]
+  bool friction = false;        ///< keep the tangential and rolling laws while forming
+  bool walls = false;           ///< keep the case's walls while forming
+  Vector3 gravity{};            ///< gravity while forming [m/s²]
+  double kinetic_energy = 0.0;  ///< settled once the pull has faded and E_kin < this [J], > 0
+  double max_duration = 0.0;    ///< the stage fails when not settled by then [s]
+};
+
+/// Launch of the (formed) spheres at a wall (thesis §5.2.2, eq 5.1): the centre of mass is put
+/// `height`·L_A from the wall above its reference point (L_A: diameter of the smallest sphere
+/// about the centre of mass that encloses every sphere), every sphere gets the velocity of
+/// magnitude `speed` at `angle` to the wall, heading along `direction` in the wall's plane and
+/// into the wall; spins are zeroed.
+struct LaunchStageSpec {
+  std::size_t wall = 0;    ///< index into Scene::walls
+  double speed = 0.0;      ///< |u_impact| [m/s], > 0
+  double angle = 0.0;      ///< θ_impact between the velocity and the wall plane [deg], in (0, 90]
+  Vector3 direction{};     ///< unit vector in the wall plane: the tangential part of the velocity
+  double height = 1.0;     ///< centre-of-mass distance from the wall in units of L_A, > 0.5
+};
+
+/// One preparation stage of a case (docs/case-format.md, [[stages]]). Stages run in order in
+/// the core, before any engine; each turns the scene's particle list into a new explicit one.
+struct StageSpec {
+  std::string name;  ///< label in messages and reports
+  std::variant<FormationStageSpec, LaunchStageSpec> action;
+};
+
+/// What a preparation stage did, for reports: named figures (formation time, L_A, …) and
+/// whether the result came from the stage cache.
+struct StageRecord {
+  std::string name;
+  std::string kind;  ///< "formation" or "launch"
+  std::vector<std::pair<std::string, double>> figures;
+  bool cached = false;
+};
+
 /// A fully explicit scene: every engine receives the same one (docs/architecture.md, "The flow of
 /// one comparison"). Produced by the case loader; never modified by an engine.
 struct Scene {
@@ -160,6 +204,12 @@ struct Scene {
   IntegrationSpec integration;
   OutputSpec output;
   CompareSpec compare;
+  /// Preparation stages still to run (docs/case-format.md, [[stages]]); empty once prepared.
+  /// Engines receive prepared scenes only.
+  std::vector<StageSpec> stages;
+  /// True when integration.duration is "launch": the launch stage sets it (eq 5.1).
+  bool duration_from_launch = false;
+  std::vector<StageRecord> stage_log;  ///< what the stages did, once prepared
   std::vector<std::string> warnings;  ///< loader warnings, each naming file and key
 };
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "compare/metrics_breakup_run.hpp"
 #include "compare/metrics_cohesion.hpp"
 #include "compare/metrics_motion.hpp"
 #include "compare/trace_analysis.hpp"
@@ -283,6 +284,7 @@ double from_trace(const std::string& name, const cases::Scene& scene, const case
   if (name == "spin_after") return motion::spin_after(scene, trace).value_or_throw<MetricProblem>();
   if (name == "deceleration") return motion::deceleration(scene, trace).value_or_throw<MetricProblem>();
   if (const auto c = cohesion_metric(name, scene, trace)) return c->value ? *c->value : throw MetricProblem(c->problem);
+  if (const auto b = breakup_metric(name, scene, run)) return b->value ? *b->value : throw MetricProblem(b->problem);
   throw MetricProblem(fmt::format("no implementation of metric '{}'", name));
 }
 

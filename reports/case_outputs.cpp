@@ -31,6 +31,20 @@ std::string shell_quote(const std::string& arg) {
   return out + "'";
 }
 
+/// The particles every engine received after the preparation stages, one row per particle at
+/// full precision (round-trip digits).
+std::string prepared_particles_csv(const cases::Scene& scene) {
+  std::string out = "particle,radius,effect_radius,material,fixed,x,y,z,vx,vy,vz,wx,wy,wz\n";
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    out += fmt::format("{},{:.17g},{:.17g},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", i,
+                       p.radius, p.effect_radius, scene.materials.at(p.material).name, p.fixed ? 1 : 0, p.position[0],
+                       p.position[1], p.position[2], p.velocity[0], p.velocity[1], p.velocity[2],
+                       p.angular_velocity[0], p.angular_velocity[1], p.angular_velocity[2]);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string reproduce_command(int argc, const char* const* argv) {
@@ -57,6 +71,9 @@ void write_case_outputs(const comparison::CaseOutcome& outcome, const std::files
     }
   }
   support::write_file(dir / "case.toml", outcome.scene.source_text);
+  if (!outcome.scene.stage_log.empty()) {
+    support::write_file(dir / "prepared_particles.csv", prepared_particles_csv(outcome.scene));
+  }
   support::write_file(dir / "command.txt", command + "\n");
   std::string md = "# dem-workbench report\n\n";
   md += "Reproduce with:\n\n```sh\n" + command + "\n```\n\n";

@@ -56,6 +56,23 @@ std::string model_section(const cases::Scene& scene, int level) {
   return md;
 }
 
+/// The preparation stages and what they did (empty without stages).
+std::string stages_section(const cases::Scene& scene, int level) {
+  if (scene.stage_log.empty()) return {};
+  std::string md = heading(level, "Preparation stages");
+  md += "Run in the core before any engine; every engine starts from their result "
+        "(`prepared_particles.csv`).\n\n";
+  MarkdownTable t({"stage", "kind", "figures", "source"});
+  for (const cases::StageRecord& st : scene.stage_log) {
+    std::string figures;
+    for (const auto& [name, value] : st.figures) {
+      figures += (figures.empty() ? "" : ", ") + fmt::format("{} = {}", name, format_number(value));
+    }
+    t.add_row({st.name, st.kind, figures, st.cached ? "stage cache" : "run"});
+  }
+  return md + t.render() + "\n";
+}
+
 std::string runs_section(const comparison::CaseOutcome& o, int level) {
   std::string md = heading(level, "Engines");
   MarkdownTable t({"engine", "status", "version", "result", "wall time (s)", "note"});
@@ -250,6 +267,7 @@ std::string case_section(const comparison::CaseOutcome& o, const std::filesystem
   if (!s.thesis_reference.empty()) md += "Thesis: " + s.thesis_reference + ".  \n";
   md += fmt::format("Case file: `{}` (sha256 `{}`).\n\n", s.source_path, s.source_sha256.substr(0, 16));
   md += model_section(s, level + 1);
+  md += stages_section(s, level + 1);
   md += runs_section(o, level + 1);
   md += metrics_section(o, level + 1);
   if (!o.comparisons.empty()) {

@@ -95,6 +95,15 @@ nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome, bool
   doc["comparisons"] = rows;
   doc["status"] = std::string(comparison::to_string(comparison::worst_status(outcome)));
   if (!outcome.scene.warnings.empty()) doc["warnings"] = outcome.scene.warnings;
+  if (!outcome.scene.stage_log.empty()) {
+    Json stages = Json::array();
+    for (const cases::StageRecord& st : outcome.scene.stage_log) {
+      Json figures = Json::object();
+      for (const auto& [name, value] : st.figures) figures[name] = value;
+      stages.push_back({{"name", st.name}, {"kind", st.kind}, {"cached", st.cached}, {"figures", figures}});
+    }
+    doc["stages"] = stages;
+  }
   return doc;
 }
 

@@ -70,6 +70,20 @@ Json pairs_json(const std::vector<cases::ParticlePair>& pairs) {
   return j;
 }
 
+/// A preparation stage's physical settings (its name is a label and left out).
+Json stage_json(const cases::StageSpec& st) {
+  if (const auto* f = std::get_if<cases::FormationStageSpec>(&st.action)) {
+    return {{"kind", "formation"},         {"pull", f->pull},
+            {"pull_time", f->pull_time},   {"restitution", f->restitution},
+            {"friction", f->friction},     {"walls", f->walls},
+            {"gravity", f->gravity},       {"kinetic_energy", f->kinetic_energy},
+            {"max_duration", f->max_duration}};
+  }
+  const auto& l = std::get<cases::LaunchStageSpec>(st.action);
+  return {{"kind", "launch"}, {"wall", l.wall},           {"speed", l.speed},
+          {"angle", l.angle}, {"direction", l.direction}, {"height", l.height}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json scene_json(const cases::Scene& s) {
@@ -137,6 +151,14 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
                  {"trace_energy", s.output.trace_energy},
                  {"snapshot_times", s.output.snapshot_times}};
   if (!s.output.trace_aggregates.empty()) j["output"]["trace_aggregates"] = s.output.trace_aggregates;
+  // Stages still to run (an unprepared scene); a prepared scene has none and its explicit
+  // particles already say everything.
+  if (!s.stages.empty()) {
+    Json stages = Json::array();
+    for (const cases::StageSpec& st : s.stages) stages.push_back(stage_json(st));
+    j["stages"] = stages;
+    j["integration"]["duration"] = s.duration_from_launch ? Json("launch") : Json(in.duration);
+  }
   return j;
 }
 

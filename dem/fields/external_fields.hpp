@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "dem/core/vector.hpp"
+#include "dem/fields/central_pull.hpp"
 #include "dem/fields/fluid.hpp"
 
 namespace dem {
@@ -18,30 +19,36 @@ struct FieldInput {
   double time;     ///< [s]
 };
 
-/// External fields acting on every mobile sphere (thesis §3.7, §6.5): gravity, and optionally a
-/// fluid (drag, buoyancy, pressure gradient, virtual mass).
+/// External fields acting on every mobile sphere (thesis §3.7, §5.2.1, §6.5): gravity, and
+/// optionally a fluid (drag, buoyancy, pressure gradient, virtual mass) and the centripetal pull
+/// of agglomerate formation.
 struct ExternalFields {
   Vec3 gravity = Vec3::Zero();  ///< g [m/s²]
   std::optional<Fluid> fluid;
+  std::optional<CentralPull> pull;
 
   /// Total field force on one sphere [N]: m g, or V(ρ_p − ρ_f) g with buoyancy (eq 3.50), plus
-  /// the fluid's drag and pressure-gradient forces.
+  /// the fluid's drag and pressure-gradient forces and the pull's m·a.
   [[nodiscard]] Vec3 force(const FieldInput& in) const noexcept {
-    if (!fluid) return weight(in.mass);
-    return fluid->gravity_force(in, gravity) + fluid->hydrodynamic_force(in);
+    Vec3 f = fluid ? Vec3(fluid->gravity_force(in, gravity) + fluid->hydrodynamic_force(in)) : weight(in.mass);
+    if (pull) f += in.mass * pull->at(in.position, in.time);
+    return f;
   }
   /// True when gravity is the only field: force() is then weight(m) and added_mass() is 0, so a
   /// loop over many spheres need not assemble the fluid's inputs.
-  [[nodiscard]] bool gravity_only() const noexcept { return !fluid; }
+  [[nodiscard]] bool gravity_only() const noexcept { return !fluid && !pull; }
   /// Weight m g of a sphere of mass m [N] (the whole field force when gravity_only()).
   [[nodiscard]] Vec3 weight(double mass) const noexcept { return mass * gravity; }
   /// Extra inertia of a sphere [kg] (virtual mass, eq 3.51), 0 without a fluid.
   [[nodiscard]] double added_mass(double radius) const noexcept {
     return fluid ? fluid->added_mass(radius) : 0.0;
   }
-  /// Power of the non-conservative field forces on a sphere [W] (drag, pressure gradient).
+  /// Power of the non-conservative field forces on a sphere [W]: drag, pressure gradient and
+  /// the (time-dependent) pull.
   [[nodiscard]] double hydrodynamic_power(const FieldInput& in) const noexcept {
-    return fluid ? fluid->hydrodynamic_force(in).dot(in.velocity) : 0.0;
+    double p = fluid ? fluid->hydrodynamic_force(in).dot(in.velocity) : 0.0;
+    if (pull) p += in.mass * pull->at(in.position, in.time).dot(in.velocity);
+    return p;
   }
 };
 

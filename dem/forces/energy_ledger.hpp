@@ -11,7 +11,7 @@ struct EnergyLedger {
   double gravitational = 0.0;        ///< −Σ m g·x of mobile spheres
   double dissipated_damping = 0.0;   ///< cumulative dashpot work
   double dissipated_friction = 0.0;  ///< cumulative sliding and rolling work
-  double fluid_work = 0.0;           ///< cumulative work of drag and pressure gradient on spheres
+  double fluid_work = 0.0;           ///< cumulative work of drag, pressure gradient and pull on spheres
   /// Mechanical energy plus everything dissipated minus work put in: constant for an exact
   /// integration (with walls at rest and no prescribed motion).
   [[nodiscard]] double balance() const noexcept {
@@ -26,7 +26,7 @@ struct EnergyTotals {
   double cohesive = 0.0;     ///< cohesive potential [J]
   double damping = 0.0;      ///< dashpot work since the last commit [J]
   double friction = 0.0;     ///< sliding and rolling work since the last commit [J]
-  double fluid_power = 0.0;  ///< power of drag and pressure gradient [W]
+  double fluid_power = 0.0;  ///< power of drag, pressure gradient and pull [W]
 
   /// Adds another partial sum.
   EnergyTotals& operator+=(const EnergyTotals& o) noexcept {

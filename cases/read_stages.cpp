@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// Section reader for [[stages]]: preparation stages the core runs before any engine (agglomerate
+// formation, thesis §5.2.1; launch at a wall, §5.2.2).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "cases/loader_sections.hpp"
+
+namespace cases::loader {
+namespace {
+
+constexpr std::array<std::string_view, 2> kKinds{"formation", "launch"};
+constexpr auto kFormationKeys = std::to_array<std::string_view>(
+    {"kind", "name", "pull", "pull_time", "restitution", "friction", "walls", "gravity", "kinetic_energy",
+     "max_duration"});
+constexpr auto kLaunchKeys =
+    std::to_array<std::string_view>({"kind", "name", "wall", "speed", "angle", "direction", "height"});
+
+/// Index of the wall a value names (a wall name, or an index into the walls).
+std::size_t wall_index(const Value& v, const Scene& scene) {
+  if (scene.walls.empty()) v.fail("the case has no [[walls]] to launch at");
+  if (v.node().is_string()) {
+    const std::string name = v.string();
+    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+      if (scene.walls[w].name == name) return w;
+    }
+    std::string known;
+    for (const WallSpec& w : scene.walls) known += (known.empty() ? "'" : ", '") + w.name + "'";
+    v.fail(fmt::format("no wall is named '{}' (walls: {})", name, known));
+  }
+  return v.index(scene.walls.size(), "walls");
+}
+
+FormationStageSpec read_formation(const Table& t, const Scene& scene) {
+  t.allow_only(kFormationKeys);
+  FormationStageSpec f;
+  f.pull = t.require("pull").number(positive_range());
+  f.pull_time = t.require("pull_time").number(positive_range());
+  const Value restitution = t.require("restitution");
+  f.restitution = restitution.number(dem::ValueRange{0.0, 1.0, true, false});
+  if (!used_properties(scene.model).contains("restitution")) {
+    restitution.fail(fmt::format("the model's damping ('{}') does not read a restitution, so the formation "
+                                 "cannot raise the damping; choose damping = \"restitution\" (or another law set "
+                                 "by a restitution)",
+                                 scene.model.damping));
+  }
+  if (const auto v = t.find("friction")) f.friction = v->boolean();
+  if (const auto v = t.find("walls")) f.walls = v->boolean();
+  if (const auto v = t.find("gravity")) f.gravity = v->vector3();
+  f.kinetic_energy = t.require("kinetic_energy").number(positive_range());
+  f.max_duration = t.require("max_duration").number(positive_range());
+  if (f.max_duration <= f.pull_time) {
+    t.fail("max_duration", fmt::format("must exceed pull_time ({} s): the stage ends only after the pull has faded, "
+                                       "got {} s",
+                                       f.pull_time, f.max_duration));
+  }
+  return f;
+}
+
+LaunchStageSpec read_launch(const Table& t, const Scene& scene) {
+  t.allow_only(kLaunchKeys);
+  LaunchStageSpec l;
+  const Value wall = t.require("wall");
+  l.wall = wall_index(wall, scene);
+  l.speed = t.require("speed").number(positive_range());
+  l.angle = t.require("angle").number(dem::ValueRange{0.0, 90.0, true, false});
+  const WallSpec& w = scene.walls[l.wall];
+  const Value direction = t.require("direction");
+  Vector3 d = direction.vector3();
+  // The in-plane part of `direction`: its component along the wall normal is removed.
+  const double along = d[0] * w.normal[0] + d[1] * w.normal[1] + d[2] * w.normal[2];
+  for (std::size_t k = 0; k < 3; ++k) d[k] -= along * w.normal[k];
+  const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(norm > 1e-9)) {
+    direction.fail(fmt::format("has no component in the plane of wall '{}' (normal [{}, {}, {}]); give a "
+                               "direction along the wall",
+                               w.name, w.normal[0], w.normal[1], w.normal[2]));
+  }
+  for (double& c : d) c /= norm;
+  l.direction = d;
+  if (const auto v = t.find("height")) {
+    l.height = v->number(dem::ValueRange{0.5, std::numeric_limits<double>::infinity(), true, true});
+  }
+  return l;
+}
+
+}  // namespace
+
+void read_stages(const Table& root, Scene& scene) {
+  const auto section = root.find("stages");
+  if (!section) return;
+  if (!section->node().is_array()) {
+    section->fail("expected an array of tables ([[stages]]), got " + describe(section->node()));
+  }
+  std::size_t launches = 0;
+  for (const Value& entry : section->elements()) {
+    const Table t = entry.table();
+    const std::string kind = t.require("kind").keyword(kKinds, "stage kind");
+    StageSpec stage;
+    stage.name = t.has("name") ? t.require("name").string() : kind;
+    if (kind == "formation") {
+      if (launches > 0) t.fail("kind", "a formation stage must come before the launch stage");
+      stage.action = read_formation(t, scene);
+    } else {
+      if (++launches > 1) t.fail("kind", "a case has at most one launch stage");
+      stage.action = read_launch(t, scene);
+    }
+    scene.stages.push_back(stage);
+  }
+  if (scene.stages.empty()) section->fail("must list at least one stage, or be left out");
+}
+
+}  // namespace cases::loader

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+#include "compare/metrics_breakup_run.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "dem/contact/pair_table.hpp"
+
+namespace comparison {
+namespace {
+
+constexpr std::array<std::string_view, 5> kBreakupMetrics{"kappa_vol", "kappa_damage", "fragments",
+                                                          "coordination_before", "coordination_after"};
+
+dem::Vec3 to_vec(const cases::Vector3& v) { return {v[0], v[1], v[2]}; }
+
+}  // namespace
+
+breakup::BondRule scene_bond_rule(const cases::Scene& scene, const std::vector<std::size_t>& mobile) {
+  const auto table = std::make_shared<dem::PairTable>(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+  std::vector<bool> used(scene.materials.size(), false);
+  for (const std::size_t i : mobile) used[scene.particles[i].material] = true;
+  breakup::BondRule rule;
+  // Half reach of sphere i: half the range of the pair (i, i) with the largest partner material.
+  // A pair's range grows with the radii and R* ≤ min(r_i, r_j) ≤ each, so the sum of the two
+  // half reaches bounds it (a sphere's self extent uses R* = r, its largest).
+  for (const std::size_t i : mobile) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    const dem::PairExtent self{2.0 * p.radius, 2.0 * p.effect_radius, p.radius};
+    double reach = std::max(p.radius, p.effect_radius);
+    for (std::size_t b = 0; b < scene.materials.size(); ++b) {
+      if (used[b]) reach = std::max(reach, 0.5 * dem::interaction_range(table->law(p.material, b), self));
+    }
+    rule.half_reach.push_back(reach);
+  }
+  rule.bonded = [table, &scene, mobile](std::uint32_t a, std::uint32_t b, double distance) {
+    const cases::ParticleSpec& p = scene.particles[mobile[a]];
+    const cases::ParticleSpec& q = scene.particles[mobile[b]];
+    const dem::PairExtent e{p.radius + q.radius, p.effect_radius + q.effect_radius,
+                            p.radius * q.radius / (p.radius + q.radius)};
+    return distance < dem::interaction_range(table->law(p.material, q.material), e);
+  };
+  return rule;
+}
+
+std::optional<CohesionMetric> breakup_metric(const std::string& name, const cases::Scene& scene,
+                                             const cases::RunResult& run) {
+  if (std::find(kBreakupMetrics.begin(), kBreakupMetrics.end(), name) == kBreakupMetrics.end()) return std::nullopt;
+  std::vector<std::size_t> mobile;
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    if (!scene.particles[i].fixed) mobile.push_back(i);
+  }
+  const double end = scene.integration.duration;
+  if (run.snapshots.empty() || !(run.snapshots.back().time >= end * (1.0 - 1e-6))) {
+    return CohesionMetric{std::nullopt, fmt::format("no snapshot at the end of the run (t = {} s)", end)};
+  }
+  const cases::Snapshot& last = run.snapshots.back();
+  if (last.position.size() != scene.particles.size()) {
+    return CohesionMetric{std::nullopt, fmt::format("the final snapshot holds {} spheres, the scene {}",
+                                                    last.position.size(), scene.particles.size())};
+  }
+  std::vector<breakup::SnapshotSphere> before;
+  std::vector<breakup::SnapshotSphere> after;
+  for (const std::size_t i : mobile) {
+    before.push_back({to_vec(scene.particles[i].position), scene.particles[i].radius});
+    after.push_back({to_vec(last.position[i]), scene.particles[i].radius});
+  }
+  try {
+    const breakup::BreakupMetrics m = breakup::breakup_metrics(before, after, scene_bond_rule(scene, mobile));
+    double value = 0.0;
+    if (name == "kappa_vol") value = m.kappa_vol;
+    if (name == "kappa_damage") value = m.kappa_damage;
+    if (name == "fragments") value = m.fragments;
+    if (name == "coordination_before") value = m.coordination_before;
+    if (name == "coordination_after") value = m.coordination_after;
+    return CohesionMetric{value, ""};
+  } catch (const std::exception& e) {
+    return CohesionMetric{std::nullopt, e.what()};
+  }
+}
+
+}  // namespace comparison
