@@ -21,6 +21,8 @@ struct Invocation {
 
 /// `demwb run`.
 int command_run(const std::vector<std::string>& args, const Invocation& inv);
+/// `demwb sweep`.
+int command_sweep(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb compare`.
 int command_compare(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb suite`.

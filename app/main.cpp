@@ -17,6 +17,7 @@ commands:
   run CASE.toml [--engine E ...] [-o DIR]     run a case on engines, write results
   compare CASE.toml [--engines E,F] [-o DIR]  run and print the discrepancy table
   suite canonical|DIR [-j N] [-o DIR]         every case of a suite, one report
+  sweep SWEEP.toml [-j N] [-o DIR]            a parameter matrix over a case, several seeds per point
   study integrators [-o DIR]                  the integrator-accuracy study (thesis ch. 4)
   gate DIR|SUITE [--baseline F] [--allow-missing]  exit 0 only when every comparison is green
   refresh [SUITE|CASE] [--write-baselines]    re-run reference codes into the cache/baselines
@@ -49,6 +50,7 @@ int main(int argc, char** argv) {
     if (args[0] == "run") return app::command_run(rest, inv);
     if (args[0] == "compare") return app::command_compare(rest, inv);
     if (args[0] == "suite") return app::command_suite(rest, inv);
+    if (args[0] == "sweep") return app::command_sweep(rest, inv);
     if (args[0] == "study") return app::command_study(rest, inv);
     if (args[0] == "engines") return app::command_engines(rest, inv);
     if (args[0] == "gate") return app::command_gate(rest, inv);

@@ -48,6 +48,8 @@ constexpr std::array kMetrics{
     MetricInfo{"fragments", "-", "fragments at the end (spheres joined while their law still acts; a lone sphere is one)", false, false},
     MetricInfo{"coordination_before", "-", "2 × body contacts / spheres of the formed agglomerate", false, false},
     MetricInfo{"coordination_after", "-", "2 × body contacts / spheres at the end", false, false},
+    MetricInfo{"cohesive_work", "J",
+               "work to separate two mean-size spheres from their force-free contact until cohesion ends (thesis fig. 5.15)", false, false},
 };
 
 constexpr std::array<std::string_view, 4> kEngines{"inhouse", "analytic", "lammps", "yade"};

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "dem/contact/pair_table.hpp"
+#include "dem/conversion/appendix_e.hpp"
 
 namespace comparison {
 namespace {
@@ -19,7 +20,56 @@ constexpr std::array<std::string_view, 5> kBreakupMetrics{"kappa_vol", "kappa_da
 
 dem::Vec3 to_vec(const cases::Vector3& v) { return {v[0], v[1], v[2]}; }
 
+/// A material property the cohesive work needs; throws naming it when the material lacks it.
+double property(const std::optional<double>& value, const dem::MaterialProperties& m, const char* key) {
+  if (!value) throw std::invalid_argument(fmt::format("material '{}' has no {}", m.name, key));
+  return *value;
+}
+
 }  // namespace
+
+CohesionMetric cohesive_work(const cases::Scene& scene) {
+  double radius = 0.0;
+  double effect = 0.0;
+  std::size_t count = 0;
+  std::optional<std::size_t> material;
+  for (const cases::ParticleSpec& p : scene.particles) {
+    if (p.fixed) continue;
+    if (material && *material != p.material) {
+      return {std::nullopt, "the mobile spheres are of more than one material; cohesive work is defined for one"};
+    }
+    material = p.material;
+    radius += p.radius;
+    effect += p.effect_radius;
+    ++count;
+  }
+  if (count == 0) return {std::nullopt, "the scene has no mobile spheres"};
+  if (!scene.pair_overrides.empty()) {
+    return {std::nullopt, "[[pairs]] overrides the material's own properties; cohesive work reads the material"};
+  }
+  radius /= static_cast<double>(count);
+  effect /= static_cast<double>(count);
+  const dem::MaterialProperties& m = scene.materials.at(*material);
+  try {
+    if (scene.model.cohesion == "linear" && scene.model.normal == "linear") {
+      const dem::conversion::LinearModel linear{property(m.normal_stiffness, m, "normal_stiffness"),
+                                                property(m.cohesive_stiffness, m, "cohesive_stiffness")};
+      return {dem::conversion::linear_cohesive_work(linear, radius, effect), ""};
+    }
+    if (scene.model.cohesion == "jkr") {
+      const double modulus = dem::conversion::formula_modulus(property(m.youngs_modulus, m, "youngs_modulus"),
+                                                              property(m.poisson_ratio, m, "poisson_ratio"),
+                                                              dem::conversion::Convention::workbench);
+      const dem::laws::JkrParameters p{modulus, 0.5 * radius, property(m.surface_energy, m, "surface_energy")};
+      return {dem::conversion::jkr_cohesive_work(p, scene.model.jkr_rupture), ""};
+    }
+  } catch (const std::invalid_argument& e) {
+    return {std::nullopt, e.what()};
+  }
+  return {std::nullopt, fmt::format("cohesive work is defined for linear cohesion on a linear spring and for JKR, "
+                                    "not for normal = {}, cohesion = {}",
+                                    scene.model.normal, scene.model.cohesion)};
+}
 
 breakup::BondRule scene_bond_rule(const cases::Scene& scene, const std::vector<std::size_t>& mobile) {
   const auto table = std::make_shared<dem::PairTable>(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
@@ -50,13 +100,17 @@ breakup::BondRule scene_bond_rule(const cases::Scene& scene, const std::vector<s
 
 std::optional<CohesionMetric> breakup_metric(const std::string& name, const cases::Scene& scene,
                                              const cases::RunResult& run) {
+  if (name == "cohesive_work") return cohesive_work(scene);
   if (std::find(kBreakupMetrics.begin(), kBreakupMetrics.end(), name) == kBreakupMetrics.end()) return std::nullopt;
   std::vector<std::size_t> mobile;
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     if (!scene.particles[i].fixed) mobile.push_back(i);
   }
+  // Engines take each requested snapshot at the step nearest its time, so the snapshot asked for
+  // at the end may fall half a step before it; it is the last of as many as were asked for.
   const double end = scene.integration.duration;
-  if (run.snapshots.empty() || !(run.snapshots.back().time >= end * (1.0 - 1e-6))) {
+  const bool all_taken = !scene.output.snapshot_times.empty() && run.snapshots.size() == scene.output.snapshot_times.size();
+  if (run.snapshots.empty() || !(all_taken || run.snapshots.back().time >= end * (1.0 - 1e-6))) {
     return CohesionMetric{std::nullopt, fmt::format("no snapshot at the end of the run (t = {} s)", end)};
   }
   const cases::Snapshot& last = run.snapshots.back();

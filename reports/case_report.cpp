@@ -142,18 +142,18 @@ std::string plots_section(const comparison::CaseOutcome& o, const std::filesyste
     if (t == nullptr) continue;
     const std::string style = r.engine == "analytic" ? "lines dt 2" : "lines";
     if (const auto d = comparison::axis_displacement(o.scene, r.trace)) {
-      position.series.push_back({r.engine, *t, *d, style});
+      position.series.push_back({r.engine, *t, *d, style, {}});
     }
     if (const auto ov_name = contact_column("overlap")) {
       const auto* ov = r.trace.column(*ov_name);
       const auto* fn = r.trace.column(*contact_column("fn"));
-      if (ov != nullptr) overlap.series.push_back({r.engine, *t, *ov, style});
-      if (ov != nullptr && fn != nullptr) force.series.push_back({r.engine, *ov, *fn, style});
+      if (ov != nullptr) overlap.series.push_back({r.engine, *t, *ov, style, {}});
+      if (ov != nullptr && fn != nullptr) force.series.push_back({r.engine, *ov, *fn, style, {}});
     }
     if (!r.energy.empty()) {
       const auto* te = r.energy.column("time");
       for (const auto q : cases::kEnergyQuantities) {
-        if (const auto* v = r.energy.column(q)) energy.series.push_back({std::string(q.substr(7)), *te, *v, "lines"});
+        if (const auto* v = r.energy.column(q)) energy.series.push_back({std::string(q.substr(7)), *te, *v, "lines", {}});
       }
     }
   }
@@ -178,7 +178,7 @@ std::string plots_section(const comparison::CaseOutcome& o, const std::filesyste
       const auto d = comparison::axis_displacement(o.scene, r.trace);
       const auto* t = r.trace.column("time");
       if (!d || t == nullptr || d->size() != ref_d->size()) continue;
-      reports::Series series{r.engine, *t, {}, "lines"};
+      reports::Series series{r.engine, *t, {}, "lines", {}};
       for (std::size_t k = 0; k < d->size(); ++k) series.y.push_back(((*d)[k] - (*ref_d)[k]) / scale);
       difference.series.push_back(std::move(series));
     }

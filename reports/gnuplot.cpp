@@ -40,7 +40,11 @@ std::optional<std::string> render_png(const Plot& plot, const std::filesystem::p
     bool any = false;
     for (std::size_t k = 0; k < std::min(s.x.size(), s.y.size()); ++k) {
       if (!plottable(s.x[k], s.y[k], plot)) continue;
-      dat += fmt::format("{:.17g} {:.17g}\n", s.x[k], s.y[k]);
+      if (s.y_error.empty()) {
+        dat += fmt::format("{:.17g} {:.17g}\n", s.x[k], s.y[k]);
+      } else {
+        dat += fmt::format("{:.17g} {:.17g} {:.17g}\n", s.x[k], s.y[k], k < s.y_error.size() ? s.y_error[k] : 0.0);
+      }
       any = true;
     }
     if (!any) dat += "nan nan\n";
@@ -61,8 +65,9 @@ std::optional<std::string> render_png(const Plot& plot, const std::filesystem::p
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     if (!has_points[i]) continue;
     if (!plots.empty()) plots += ", \\\n     ";
-    plots += fmt::format("{} index {} using 1:2 with {} lw 2 title {}",
-                         quoted(data.filename().string()), i, plot.series[i].style,
+    const bool bars = !plot.series[i].y_error.empty();
+    plots += fmt::format("{} index {} using {} with {} lw 2 title {}", quoted(data.filename().string()), i,
+                         bars ? "1:2:3" : "1:2", bars ? std::string(plot.series[i].style == "points" ? "yerrorbars" : "yerrorlines") : plot.series[i].style,
                          quoted(plot.series[i].title));
   }
   if (plots.empty()) return "no plottable points";

@@ -14,6 +14,7 @@ struct Series {
   std::vector<double> x;
   std::vector<double> y;
   std::string style = "lines";  ///< gnuplot style: "lines", "linespoints", "points"
+  std::vector<double> y_error;  ///< optional: an error bar (± this) per point; drawn as yerrorlines
 };
 
 /// A 2-D plot rendered to PNG by gnuplot.

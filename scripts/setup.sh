@@ -18,11 +18,12 @@ packages=(
   libbenchmark-dev                 # Google Benchmark: the micro-benchmarks (build/bench/demwb_microbench)
   gnuplot-nox                      # report plots
   pandoc                           # checks that report.md renders
+  libopenmpi-dev openmpi-bin       # MPI: `mpirun -np N demwb sweep` shares a sweep between ranks;
+                                   # `demwb bench --ranks N` runs LAMMPS on N ranks
 )
 references=(
   lammps                           # LAMMPS (GRANULAR), Debian 20220106
   yade                             # YADE 2023.02a (driven as a Python module, no servers)
-  openmpi-bin                      # mpirun: `demwb bench --ranks N` runs LAMMPS on N ranks
 )
 check_only=false
 for arg in "$@"; do

@@ -81,13 +81,13 @@ std::optional<reports::Series> gradient_line(const std::vector<reports::Series>&
   if (n == 0) return std::nullopt;
   const double cx = lx / static_cast<double>(n);
   const double cy = ly / static_cast<double>(n);
-  reports::Series line{fmt::format("gradient {}", order), {xmin, xmax}, {}, "lines dt 3 lc rgb 'gray'"};
+  reports::Series line{fmt::format("gradient {}", order), {xmin, xmax}, {}, "lines dt 3 lc rgb 'gray'", {}};
   for (const double x : line.x) line.y.push_back(std::exp(cy + order * (std::log(x) - cx)));
   return line;
 }
 
 reports::Series scheme_series(const SchemeSweep& s) {
-  reports::Series out{std::string(dem::scheme_info(s.scheme).keyword), {}, {}, "linespoints"};
+  reports::Series out{std::string(dem::scheme_info(s.scheme).keyword), {}, {}, "linespoints", {}};
   for (const auto& p : s.points) {
     if (!p.amplitude_error) continue;
     out.x.push_back(p.x);

@@ -28,6 +28,24 @@ bool redirect(const std::filesystem::path& path, int fd) {
   return ok;
 }
 
+/// True when an MPI launcher started this process (it is a rank of `mpirun demwb sweep`).
+bool inside_mpi_job() {
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMIX_RANK") != nullptr ||
+         std::getenv("PMI_RANK") != nullptr;
+}
+
+/// True for the variables through which an MPI launcher tells a process it is one of its ranks.
+/// A reference code started by a rank (LAMMPS is itself an MPI program) must not see them, or it
+/// would try to join that job; it runs as a job of its own. The permission to run mpirun as root
+/// is kept.
+bool is_mpi_rank_variable(const std::string& name) {
+  if (name.rfind("OMPI_ALLOW_RUN_AS_ROOT", 0) == 0) return false;
+  for (const char* prefix : {"OMPI_", "PMIX_", "PMI_", "OPAL_", "ORTE_"}) {
+    if (name.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::optional<std::filesystem::path> find_program(const std::string& program) {
@@ -57,10 +75,11 @@ ProcessResult run_process(const ProcessSpec& spec) {
     return result;
   }
   std::vector<std::string> env_strings;
+  const bool scrub_mpi = inside_mpi_job();
   for (char** e = environ; *e != nullptr; ++e) {
     const std::string entry(*e);
-    const auto eq = entry.find('=');
-    if (spec.environment.count(entry.substr(0, eq)) == 0) env_strings.push_back(entry);
+    const std::string name = entry.substr(0, entry.find('='));
+    if (spec.environment.count(name) == 0 && !(scrub_mpi && is_mpi_rank_variable(name))) env_strings.push_back(entry);
   }
   for (const auto& [k, v] : spec.environment) env_strings.push_back(k + "=" + v);
   std::vector<char*> argv;

@@ -29,7 +29,8 @@ struct ProcessResult {
   std::string error;         ///< why it did not start, if it did not
 };
 
-/// Runs a child in its own process group and waits for it (or the timeout).
+/// Runs a child in its own process group and waits for it (or the timeout). Inside an MPI job the
+/// child does not inherit the launcher's rank variables (OMPI_*, PMIX_*, PMI_*): it is not a rank.
 ProcessResult run_process(const ProcessSpec& spec);
 
 /// Full path of `program` found in PATH, or empty.

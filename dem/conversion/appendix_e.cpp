@@ -80,6 +80,25 @@ double jkr_separation_work(const laws::JkrParameters& p, double max_overlap,
   return laws::jkr_energy(laws::jkr_contact_radius(max_overlap, p), p) - laws::jkr_energy(end, p);
 }
 
+double linear_cohesive_work(const LinearModel& model, double radius, double effect_radius) {
+  if (!(model.normal_stiffness > model.cohesive_stiffness) || !(model.cohesive_stiffness >= 0.0)) {
+    throw std::invalid_argument(fmt::format("linear cohesive work needs 0 <= k_c < k_e (k_e = {}, k_c = {})",
+                                            model.normal_stiffness, model.cohesive_stiffness));
+  }
+  if (!(effect_radius >= radius) || !(radius > 0.0)) {
+    throw std::invalid_argument(fmt::format("linear cohesive work needs 0 < r <= r̂ (r = {}, r̂ = {})", radius, effect_radius));
+  }
+  const double reach = 2.0 * (effect_radius - radius);
+  const double equilibrium = model.cohesive_stiffness * reach / (model.normal_stiffness - model.cohesive_stiffness);
+  return 0.5 * model.cohesive_stiffness * (equilibrium + reach) * (equilibrium + reach) -
+         0.5 * model.normal_stiffness * equilibrium * equilibrium;
+}
+
+double jkr_cohesive_work(const laws::JkrParameters& p, JkrRupture rupture) noexcept {
+  const double end = rupture == JkrRupture::load ? laws::jkr_pulloff_radius(p) : laws::jkr_critical_radius(p);
+  return laws::jkr_energy(end, p) - laws::jkr_energy(laws::jkr_zero_load_radius(p), p);
+}
+
 double surface_energy_for_work(double work, double modulus, double radius, double max_overlap,
                                JkrRupture rupture) {
   require_positive(modulus, "modulus");

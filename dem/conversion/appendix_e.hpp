@@ -80,6 +80,18 @@ struct JkrModel {
 [[nodiscard]] double jkr_separation_work(const laws::JkrParameters& p, double max_overlap,
                                          JkrRupture rupture) noexcept;
 
+/// Cohesive work of the linear model (thesis fig. 5.15, for the linear law): the work that must
+/// be done on two identical spheres to separate them quasi-statically from their force-free
+/// equilibrium δ_eq = k_c Δ/(k_e − k_c) (Δ = 2(r̂ − r)) until cohesion stops acting (δ̂ = 0):
+/// ½ k_c (δ_eq + Δ)² − ½ k_e δ_eq² [J]. Throws std::invalid_argument when k_e ≤ k_c (no
+/// equilibrium) or r̂ < r.
+[[nodiscard]] double linear_cohesive_work(const LinearModel& model, double radius, double effect_radius);
+
+/// Cohesive work of JKR (thesis fig. 5.15, the shaded area): the work that must be done on the
+/// pair to separate it quasi-statically from the zero-load contact (F = 0, radius a_0) to its
+/// rupture (δ_c, or δ_f under `load`), U(a_end) − U(a_0) [J], U the closed-form JKR energy.
+[[nodiscard]] double jkr_cohesive_work(const laws::JkrParameters& p, JkrRupture rupture) noexcept;
+
 /// Surface energy γ whose JKR separation work from δ_max equals `work` [J/m²], by a bracketed
 /// TOMS 748 solve in log γ (W decreases monotonically with γ). Throws std::domain_error when
 /// no γ > 0 matches (work ≥ the Hertz work) and std::invalid_argument on bad input.

@@ -91,7 +91,7 @@ TEST(DemwbErrors, UnknownCommandsEnginesAndOptionsExitTwo) {
 
 TEST(DemwbHelp, EveryCommandHasHelp) {
   EXPECT_EQ(demwb({"--help"}).exit_code, 0);
-  for (const char* cmd : {"run", "compare", "suite", "study", "engines"}) {
+  for (const char* cmd : {"run", "compare", "suite", "sweep", "study", "engines"}) {
     const auto r = demwb({cmd, "--help"});
     EXPECT_EQ(r.exit_code, 0) << cmd;
     EXPECT_NE(r.out.find("usage: demwb"), std::string::npos) << cmd << ": " << r.out;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
@@ -124,6 +125,42 @@ TEST(AppendixE, RejectsNonPhysicalInputAndUnmatchableWork) {
   EXPECT_THROW(static_cast<void>(surface_energy_for_work(1.0, 1e7, 1e-3, 1e-4, dem::JkrRupture::displacement)),
                std::domain_error);
   EXPECT_EQ(linear_to_jkr({1e5, 0.0}, benchmark_pair(), Convention::workbench).surface_energy, 0.0);
+}
+
+TEST(AppendixE, LinearCohesiveWorkIsTheTensileAreaFromEquilibriumToTheEffectRange) {
+  // Closed form: ½ k_c (δ_eq + Δ)² − ½ k_e δ_eq² with δ_eq = k_c Δ/(k_e − k_c) simplifies to
+  // ½ k_c k_e Δ²/(k_e − k_c); table 5.1's linear pair (Δ = 2(7.5 − 5) mm) gives 1.25125e-3 J.
+  for (const auto& [ke, kc, r, rhat] : {std::tuple{1e5, 1e2, 5e-3, 7.5e-3}, std::tuple{3e4, 5e3, 2e-3, 2.2e-3},
+                                        std::tuple{1e6, 0.0, 1e-3, 1.5e-3}}) {
+    const double reach = 2.0 * (rhat - r);
+    const double expected = 0.5 * kc * ke * reach * reach / (ke - kc);
+    EXPECT_NEAR(linear_cohesive_work({ke, kc}, r, rhat), expected, 1e-12 * std::max(expected, 1e-12));
+  }
+  EXPECT_NEAR(linear_cohesive_work({1e5, 1e2}, 5e-3, 7.5e-3), 1.2512512512512513e-3, 1e-15);
+  EXPECT_THROW(static_cast<void>(linear_cohesive_work({1e2, 1e3}, 5e-3, 7.5e-3)), std::invalid_argument);
+  EXPECT_THROW(static_cast<void>(linear_cohesive_work({1e5, 1e2}, 5e-3, 4e-3)), std::invalid_argument);
+}
+
+TEST(AppendixE, JkrCohesiveWorkIsTheTensileAreaFromZeroLoadToRupture) {
+  // −∫ F dδ from the zero-load contact to rupture, by quadrature along the curve in a
+  // (δ(a), F(a) of eq 3.34–3.35): the closed-form energy difference must agree.
+  const dem::laws::JkrParameters p{8.4e7 / 1.82, 2.5e-3, 121.5};
+  for (const dem::JkrRupture rupture : {dem::JkrRupture::displacement, dem::JkrRupture::load}) {
+    const double end = rupture == dem::JkrRupture::load ? dem::laws::jkr_pulloff_radius(p)
+                                                        : dem::laws::jkr_critical_radius(p);
+    const double a0 = dem::laws::jkr_zero_load_radius(p);
+    const auto integrand = [&](double a) {
+      const double h = 1e-6 * a;
+      const double slope = (dem::laws::jkr_overlap(a + h, p) - dem::laws::jkr_overlap(a - h, p)) / (2.0 * h);
+      return -dem::laws::jkr_force(a, p) * slope;
+    };
+    // Work supplied = ∫ F dδ from δ_0 down to δ_end = −∫_{end}^{a_0} F δ'(a) da: F < 0 and δ' > 0
+    // on the stable branch, so it is positive.
+    const double expected = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(integrand, end, a0);
+    const double work = jkr_cohesive_work(p, rupture);
+    EXPECT_GT(work, 0.0);
+    EXPECT_NEAR(work, expected, 1e-6 * work);
+  }
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 #include "cases/case_loader.hpp"
 #include "compare/metrics_breakup_run.hpp"
 #include "prepare/prepare_scene.hpp"
-#include "small_agglomerate.hpp"
+#include "../small_agglomerate.hpp"
 
 namespace {
 

@@ -111,7 +111,7 @@ TEST(Gnuplot, RendersAPngAndKeepsItsDataAndScript) {
   p.xlabel = "x";
   p.ylabel = "y";
   p.log_y = true;
-  p.series.push_back({"curve", {1, 2, 3, 4}, {1, 4, 9, std::nan("")}, "linespoints"});
+  p.series.push_back({"curve", {1, 2, 3, 4}, {1, 4, 9, std::nan("")}, "linespoints", {}});
   const auto problem = reports::render_png(p, dir / "plot.png");
   ASSERT_FALSE(problem.has_value()) << *problem;
   const std::string png = support::read_file(dir / "plot.png");

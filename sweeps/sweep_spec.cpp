@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+#include "sweeps/sweep_spec.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "cases/case_loader.hpp"
+#include "cases/catalogue.hpp"
+#include "cases/toml_reader.hpp"
+#include "support/text_file.hpp"
+
+namespace sweeps {
+namespace {
+
+using cases::loader::Table;
+using cases::loader::Value;
+
+constexpr auto kTopKeys = std::to_array<std::string_view>({"sweep", "parameters"});
+constexpr auto kSweepKeys = std::to_array<std::string_view>({"name", "description", "case", "seeds", "engines", "metrics"});
+constexpr auto kAxisKeys = std::to_array<std::string_view>({"key", "label", "values", "scale"});
+constexpr std::array<std::string_view, 2> kScales{"linear", "log"};
+
+/// The keys of a sweep axis must name a value of the case file, not a table or a label.
+void check_axis_key(const Value& v, const std::string& key) {
+  static constexpr std::string_view kAllowed = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.[]-";
+  if (key.empty() || key.find_first_not_of(kAllowed) != std::string::npos || key.front() == '.' ||
+      key.back() == '.' || key.find("..") != std::string::npos) {
+    v.fail(fmt::format("'{}' is not a dotted case-file key such as \"materials.NAME.cohesive_stiffness\" or "
+                       "\"stages[0].pull\"",
+                       key));
+  }
+}
+
+}  // namespace
+
+SweepSpec load_sweep(const std::filesystem::path& file) {
+  std::string text;
+  try {
+    text = support::read_file(file);
+  } catch (const std::runtime_error& e) {
+    throw cases::CaseError(file.string(), "(file)", e.what());
+  }
+  return load_sweep_text(text, file);
+}
+
+SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& path) {
+  toml::table document;
+  try {
+    document = toml::parse(text, std::string_view(path.string()));
+  } catch (const toml::parse_error& e) {
+    throw cases::CaseError(path.string(), "(syntax)", std::string(e.description()),
+                           static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column));
+  }
+  cases::loader::Diagnostics diag(path.string());
+  const Table root(document, "", diag);
+  root.allow_only(kTopKeys);
+  SweepSpec spec;
+  spec.source_path = path;
+  spec.source_text = text;
+  const Table sweep = root.require("sweep", "table [sweep]").table();
+  sweep.allow_only(kSweepKeys);
+  spec.name = sweep.require("name").string();
+  if (const auto v = sweep.find("description")) spec.description = v->string();
+  const Value case_value = sweep.require("case");
+  spec.case_file = path.parent_path() / case_value.string();
+  if (!std::filesystem::is_regular_file(spec.case_file)) {
+    case_value.fail(fmt::format("no case file {} (paths are relative to the sweep file)", spec.case_file.string()));
+  }
+  for (const Value& s : sweep.require("seeds").elements()) {
+    const auto seed = static_cast<std::uint64_t>(s.integer(0, std::numeric_limits<std::int64_t>::max()));
+    if (std::find(spec.seeds.begin(), spec.seeds.end(), seed) != spec.seeds.end()) {
+      s.fail(fmt::format("seed {} is listed twice", seed));
+    }
+    spec.seeds.push_back(seed);
+  }
+  if (spec.seeds.empty()) sweep.fail("seeds", "must list at least one seed");
+  if (const auto v = sweep.find("engines")) {
+    for (const Value& e : v->elements()) {
+      const std::string name = e.string();
+      if (!cases::is_known_engine(name)) e.fail(fmt::format("unknown engine '{}'", name));
+      spec.engines.push_back(name);
+    }
+  }
+  if (const auto v = sweep.find("metrics")) {
+    for (const Value& m : v->elements()) {
+      const std::string name = m.string();
+      if (!cases::is_known_metric(name)) m.fail(fmt::format("unknown metric '{}'", name));
+      spec.metrics.push_back(name);
+    }
+  }
+  const Value parameters = root.require("parameters", "array of tables [[parameters]]");
+  for (const Value& entry : parameters.elements()) {
+    const Table t = entry.table();
+    t.allow_only(kAxisKeys);
+    SweepAxis axis;
+    const Value key = t.require("key");
+    axis.key = key.string();
+    check_axis_key(key, axis.key);
+    for (const SweepAxis& other : spec.axes) {
+      if (other.key == axis.key) key.fail(fmt::format("'{}' is swept twice", axis.key));
+    }
+    axis.label = t.has("label") ? t.require("label").string() : axis.key.substr(axis.key.find_last_of('.') + 1);
+    for (const Value& x : t.require("values").elements()) axis.values.push_back(x.number());
+    if (axis.values.empty()) t.fail("values", "must list at least one value");
+    if (const auto v = t.find("scale")) axis.log_scale = v->keyword(kScales, "scale") == "log";
+    if (axis.log_scale) {
+      for (const double x : axis.values) {
+        if (!(x > 0.0)) t.fail("values", fmt::format("a log-scale axis needs values > 0, got {}", x));
+      }
+    }
+    spec.axes.push_back(axis);
+  }
+  if (spec.axes.empty()) parameters.fail("must list at least one parameter");
+  std::size_t points = 1;
+  for (const SweepAxis& a : spec.axes) points *= a.values.size();
+  if (points * spec.seeds.size() > 1000000) {
+    parameters.fail(fmt::format("{} points × {} seeds is more than a million runs", points, spec.seeds.size()));
+  }
+  return spec;
+}
+
+std::vector<SweepPoint> expand(const SweepSpec& spec) {
+  std::size_t total = 1;
+  for (const SweepAxis& a : spec.axes) total *= a.values.size();
+  std::vector<SweepPoint> out;
+  out.reserve(total);
+  for (std::size_t k = 0; k < total; ++k) {
+    SweepPoint p{k, std::vector<double>(spec.axes.size())};
+    std::size_t rest = k;
+    for (std::size_t a = spec.axes.size(); a-- > 0;) {
+      const std::size_t n = spec.axes[a].values.size();
+      p.values[a] = spec.axes[a].values[rest % n];
+      rest /= n;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace sweeps
