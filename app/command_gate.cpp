@@ -46,7 +46,12 @@ void check_comparisons(const Json& c, bool allow_missing, GateFindings& g) {
                                      c.value("reason", std::string("no results"))));
     return;
   }
-  if (c["comparisons"].empty()) g.notes.push_back(name + ": no comparisons (the case lists no metrics)");
+  if (c["comparisons"].empty()) {
+    g.notes.push_back(name + (c.contains("tolerances") && !c["tolerances"].empty()
+                                  ? ": no comparison between engines (one engine); its figures are checked against the "
+                                    "committed baseline"
+                                  : ": no comparisons (the case lists no metrics)"));
+  }
   for (const auto& row : c["comparisons"]) {
     ++g.comparisons;
     const std::string status = row["status"];
@@ -67,12 +72,17 @@ void check_comparisons(const Json& c, bool allow_missing, GateFindings& g) {
   }
 }
 
-/// Tolerance of `metric` in a case document's comparison rows (the case's own), else the default.
+/// Tolerance of `metric` in a case document (the case's own: its comparison rows, else its
+/// tolerance table), else the default.
 cases::Tolerance tolerance_in(const Json& c, const std::string& metric) {
   for (const auto& row : c["comparisons"]) {
     if (row["metric"] == metric) {
       return {row["tolerance"].value("rel", 0.0), row["tolerance"].value("abs", 0.0)};
     }
+  }
+  if (c.contains("tolerances") && c["tolerances"].contains(metric)) {
+    const Json& t = c["tolerances"][metric];
+    return {t.value("rel", 0.0), t.value("abs", 0.0)};
   }
   return comparison::default_tolerance(metric);
 }

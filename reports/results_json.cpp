@@ -94,6 +94,17 @@ nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome, bool
   for (const auto& c : outcome.comparisons) rows.push_back(comparison_entry(c));
   doc["comparisons"] = rows;
   doc["status"] = std::string(comparison::to_string(comparison::worst_status(outcome)));
+  // Every listed metric's tolerance, also when no comparison row carries it (a one-engine case's
+  // figures are judged only against the committed baseline, with these tolerances).
+  Json tolerances = Json::object();
+  for (const auto& metric : outcome.scene.compare.metrics) {
+    const cases::Tolerance t = comparison::tolerance_for(outcome.scene, metric);
+    Json tol = Json::object();
+    if (t.rel > 0.0) tol["rel"] = t.rel;
+    if (t.abs > 0.0) tol["abs"] = t.abs;
+    tolerances[metric] = tol;
+  }
+  doc["tolerances"] = tolerances;
   if (!outcome.scene.warnings.empty()) doc["warnings"] = outcome.scene.warnings;
   if (!outcome.scene.stage_log.empty()) {
     Json stages = Json::array();

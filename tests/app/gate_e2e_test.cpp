@@ -93,6 +93,42 @@ TEST(DemwbGate, AnInhouseMetricThatDriftedFromAnEditedBaselineFails) {
   EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
 }
 
+TEST(DemwbGate, AOneEngineCaseDriftsByItsOwnTolerances) {
+  // One engine, so no comparison rows: the drift check must still use the case's tolerance
+  // (here 1e-6), not the default (1e-3) that a 1e-5 drift would pass.
+  const fs::path dir = scratch("gate_one_engine");
+  std::string text = support::read_file(canonical("single_collision"));
+  const auto at = text.find("contact_duration = { rel = 1.0e-3 }");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, std::string("contact_duration = { rel = 1.0e-3 }").size(), "contact_duration = { rel = 1.0e-6 }");
+  for (const auto& [old, now] : std::vector<std::pair<std::string, std::string>>{
+           {"engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\"]", "engines = [\"inhouse\"]"},
+           {"matched = [\"lammps\", \"yade\"]", "matched = []"},
+           {"reference = \"analytic\"", "reference = \"inhouse\""}}) {
+    const auto where = text.find(old);
+    ASSERT_NE(where, std::string::npos) << old;
+    text.replace(where, old.size(), now);
+  }
+  support::write_file(dir / "single_collision.toml", text);
+  const fs::path run = dir / "run";
+  ASSERT_EQ(demwb({"run", (dir / "single_collision.toml").string(), "-o", run.string()}).exit_code,
+            0);
+  const Json results = Json::parse(support::read_file(run / "results.json"));
+  ASSERT_TRUE(results["comparisons"].empty());
+  EXPECT_EQ(results["tolerances"]["contact_duration"]["rel"], 1e-6);
+  const double now = results["engines"]["inhouse"]["metrics"]["contact_duration"];
+  Json baseline;
+  baseline["case"] = "single_collision";
+  baseline["fingerprint"] = "made by the test";
+  baseline["references"] = Json::object();
+  baseline["inhouse_metrics"] = {{"contact_duration", now * (1.0 + 1e-5)}};
+  support::write_file(dir / "baseline.json", baseline.dump(1));
+  const auto r = demwb({"gate", run.string(), "--baseline", (dir / "baseline.json").string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("in-house contact_duration drifted from the baseline"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("no comparison between engines (one engine)"), std::string::npos) << r.out;
+}
+
 TEST(DemwbGate, ErrorAndMissingNeverPass) {
   const fs::path dir = scratch("gate_statuses");
   support::write_file(dir / "results.json", results_with_rows({{"lammps", "error"}, {"yade", "missing"}}).dump(2));
