@@ -55,7 +55,7 @@ void read_policies(const Table& model, dem::ModelChoice& choice) {
         *v, names, [](std::string_view k) { return dem::parse_wall_lever_arm(k); }, "wall lever-arm policy");
   }
   if (const auto v = model.find("pair_lever_arm")) {
-    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius"});
+    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius", "radius_velocity"});
     choice.pair_lever_arm = read_policy<dem::PairLeverArm>(
         *v, names, [](std::string_view k) { return dem::parse_pair_lever_arm(k); }, "pair lever-arm policy");
   }

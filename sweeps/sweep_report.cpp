@@ -98,7 +98,9 @@ std::string family_figure(const SweepResults& r, const CurveFamily& f, std::size
       plot.series.push_back(std::move(s));
     }
   }
-  return figure(plot, dir, slug(r.metrics[m] + "_vs_" + x.label));
+  // Files are named by the key's last part: labels may be symbols (μ, γ) that make poor names.
+  const std::string key_name = x.key.substr(x.key.find_last_of('.') + 1);
+  return figure(plot, dir, slug(r.metrics[m] + "_vs_" + key_name));
 }
 
 /// κDAMAGE against the cohesive work of the point (thesis figs 5.14, 5.16), a series per engine.

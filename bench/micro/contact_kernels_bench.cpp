@@ -37,7 +37,7 @@ dem::PairTable table(const char* normal, const char* damping, const char* tangen
 dem::ContactGeometry geometry() {
   const dem::SphereState p{dem::Vec3(0, 0, 0), dem::Vec3(0.1, 0.02, -0.03), dem::Vec3(1, 2, 3), 0.5, 0.5, 1.0 / 0.52};
   const dem::SphereState q{dem::Vec3(0.99, 0.01, 0.0), dem::Vec3(-0.1, 0, 0), dem::Vec3(-2, 0, 1), 0.5, 0.5, 1.0 / 0.52};
-  return dem::pair_geometry(p, q, true);
+  return dem::pair_geometry(p, q, dem::PairLeverArm::radius);
 }
 
 void evaluate(benchmark::State& state, const dem::PairTable& t) {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "dem/contact/model_choice.hpp"
 #include "dem/core/vector.hpp"
 
 namespace dem {
@@ -47,11 +48,14 @@ struct SphereState {
 };
 
 /// Contact kinematics of p and q by the common-normal method (thesis §3.3.3). Coincident
-/// centres (|x_pq| = 0) get the normal +x so the result stays finite. The lever arms are
-/// r − δ/2, or the radii r when `lever_arm_is_radius` (PairLeverArm::radius, LAMMPS
-/// gran/hooke/history). q is passed at its periodic image nearest p.
+/// centres (|x_pq| = 0) get the normal +x so the result stays finite. The lever arms (the
+/// branches, which the torque uses) are r − δ/2, or the radii r for PairLeverArm::radius (LAMMPS
+/// gran/hooke/history); the contact-point velocity uses the same arms, except under
+/// PairLeverArm::radius_velocity, where it uses r (LAMMPS pair granular). q is passed at its
+/// periodic image nearest p.
 [[nodiscard]] inline ContactGeometry pair_geometry(const SphereState& p, const SphereState& q,
-                                                   bool lever_arm_is_radius = false) noexcept {
+                                                   PairLeverArm arm = PairLeverArm::contact_point) noexcept {
+  const bool lever_arm_is_radius = arm == PairLeverArm::radius;
   ContactGeometry g;
   const Vec3 x_pq = p.position - q.position;
   g.distance = x_pq.norm();
@@ -60,8 +64,13 @@ struct SphereState {
   g.effect_overlap = p.effect_radius + q.effect_radius - g.distance;
   g.branch_p = -(lever_arm_is_radius ? p.radius : p.radius - 0.5 * g.overlap) * g.normal;
   g.branch_q = (lever_arm_is_radius ? q.radius : q.radius - 0.5 * g.overlap) * g.normal;
-  g.contact_velocity = (p.velocity + p.angular_velocity.cross(g.branch_p)) -
-                       (q.velocity + q.angular_velocity.cross(g.branch_q));
+  if (arm == PairLeverArm::radius_velocity) {
+    g.contact_velocity = (p.velocity - p.radius * p.angular_velocity.cross(g.normal)) -
+                         (q.velocity + q.radius * q.angular_velocity.cross(g.normal));
+  } else {
+    g.contact_velocity = (p.velocity + p.angular_velocity.cross(g.branch_p)) -
+                         (q.velocity + q.angular_velocity.cross(g.branch_q));
+  }
   g.normal_speed = g.contact_velocity.dot(g.normal);
   g.tangential_velocity = g.contact_velocity - g.normal_speed * g.normal;
   g.relative_angular_velocity = p.angular_velocity - q.angular_velocity;

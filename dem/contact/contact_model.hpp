@@ -85,7 +85,10 @@ struct ContactOutcome {
   switch (policy) {
     case FrictionLimit::elastic: return std::abs(elastic);
     case FrictionLimit::elastic_damping: return std::abs(elastic + damping);
-    case FrictionLimit::jkr_shifted: return std::abs(elastic + damping + cohesion + 2.0 * pulloff);
+    case FrictionLimit::jkr_shifted:
+      // LAMMPS' rule: an adhesive contact's limit is shifted by twice the pull-off force and
+      // leaves the dashpot out; a contact without adhesion keeps elastic + damping.
+      return pulloff > 0.0 ? std::abs(elastic + cohesion + 2.0 * pulloff) : std::abs(elastic + damping);
     case FrictionLimit::total: break;
   }
   return std::abs(elastic + damping + cohesion);
@@ -145,7 +148,14 @@ template <class Slots>
   // Two infinite masses (a fixed sphere driven against another, m* = ∞): a dashpot scaled by m*
   // is undefined and could change no motion anyway, so such a contact reports no damping.
   const double eta = out.contact && std::isfinite(g.reduced_mass)
-                         ? slots.damping([&](const auto& m) { return m.coefficient(g, elastic); })
+                         ? slots.damping([&](const auto& m) {
+                             // A dashpot that reads the cohesion law's contact radius (LAMMPS' under JKR).
+                             if constexpr (requires { m.coefficient(g, elastic, cohesion); }) {
+                               return m.coefficient(g, elastic, cohesion);
+                             } else {
+                               return m.coefficient(g, elastic);
+                             }
+                           })
                          : 0.0;
   double damping = -eta * g.normal_speed;
   if (policies.clamp_tensile && elastic.force + damping < 0.0) damping = -elastic.force;

@@ -39,9 +39,10 @@ constexpr std::array<std::pair<WallLeverArm, std::string_view>, 2> kLever{{
     {WallLeverArm::radius, "radius"},
 }};
 
-constexpr std::array<std::pair<PairLeverArm, std::string_view>, 2> kPairLever{{
+constexpr std::array<std::pair<PairLeverArm, std::string_view>, 3> kPairLever{{
     {PairLeverArm::contact_point, "contact_point"},
     {PairLeverArm::radius, "radius"},
+    {PairLeverArm::radius_velocity, "radius_velocity"},
 }};
 constexpr std::array<std::pair<TangentialHistory, std::string_view>, 2> kHistory{{
     {TangentialHistory::project_rescale, "project_rescale"},

@@ -28,10 +28,11 @@ enum class WallLeverArm {
 };
 
 /// Lever arm of the contact point about each sphere's centre in a sphere–sphere contact: it sets
-/// both the contact-point velocity u_c and the torque of the tangential force.
+/// the contact-point velocity u_c and the torque of the tangential force.
 enum class PairLeverArm {
-  contact_point,  ///< r − δ/2 (common-normal method, thesis §3.3.3; default)
-  radius,         ///< the body radius r, as LAMMPS gran/hooke/history
+  contact_point,    ///< r − δ/2 for both (common-normal method, thesis §3.3.3; default)
+  radius,           ///< the body radius r for both, as LAMMPS gran/hooke/history
+  radius_velocity,  ///< r for the contact-point velocity, r − δ/2 for the torque: LAMMPS pair granular
 };
 
 /// How the stored tangential slip ς follows the contact plane as the normal turns (eq 3.9).

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "dem/core/model_error.hpp"
+#include "dem/core/parallel_for.hpp"
 #include "dem/neighbors/interaction_reach.hpp"
 #include "dem/particles/spatial_order.hpp"
 
@@ -146,10 +147,8 @@ double ContactForceField::pack(const KinematicState& state) {
   PackedSphere* out = packed_.data();
   double* force = force_.data();
   double* torque = torque_.data();
-  double worst = 0.0;
   const int threads = std::max(setup_.threads, 1);
-#pragma omp parallel for schedule(static) reduction(max : worst) num_threads(threads) if (threads > 1)
-  for (std::int64_t i = 0; i < n; ++i) {
+  double worst = parallel_max(threads, n, 0.0, [&](std::int64_t i) {
     double x = position[3 * i];
     double y = position[3 * i + 1];
     double z = position[3 * i + 2];
@@ -162,13 +161,13 @@ double ContactForceField::pack(const KinematicState& state) {
     const double dx = x - built[3 * i];
     const double dy = y - built[3 * i + 1];
     const double dz = z - built[3 * i + 2];
-    worst = std::max(worst, dx * dx + dy * dy + dz * dz);
     // The evaluation's sums start from zero (cleared here, in the same pass over the spheres).
     for (int k = 0; k < 3; ++k) {
       force[3 * i + k] = 0.0;
       torque[3 * i + k] = 0.0;
     }
-  }
+    return dx * dx + dy * dy + dz * dz;
+  });
   // A sphere under prescribed motion is where its motion says, whatever the integrator did.
   for (std::size_t m = 0; m < setup_.motions.size(); ++m) {
     const std::uint32_t i = setup_.motions[m].particle;
@@ -263,7 +262,7 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
                          setup_.motions.empty() ? nullptr : motion_of_.data(),
                          motion_velocity_.data(),
                          &table_,
-                         setup_.pair_lever_arm_is_radius,
+                         setup_.pair_lever_arm,
                          elapsed,
                          commit,
                          setup_.track_energy};
@@ -283,8 +282,7 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
     // to step and with them their spheres' cache lines (2 threads: loop time ×0.65–0.77).
     for (std::uint32_t colour = 0; colour < 2; ++colour) {
       const auto half = static_cast<std::int64_t>((count - colour + 1) / 2);
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-      for (std::int64_t h = 0; h < half; ++h) run_slab(colour + 2 * static_cast<std::uint32_t>(h));
+      parallel_for(threads, half, [&](std::int64_t h) { run_slab(colour + 2 * static_cast<std::uint32_t>(h)); });
     }
   }
   if (commit) list_.finish_commit();
@@ -309,8 +307,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   const int threads = std::max(setup_.threads, 1);
   const bool gravity_only = setup_.fields.gravity_only();
 
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
+  parallel_for(threads, chunks, [&](std::uint32_t chunk) {
     EnergyTotals& sums = chunk_totals_[chunk];
     const std::uint32_t end = std::min(n, (chunk + 1) * kSphereChunk);
     for (std::uint32_t i = chunk * kSphereChunk; i < end; ++i) {
@@ -358,7 +355,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
       out.linear.col(c) = force_.col(c) / inertia_mass;
       out.angular.col(c) = props_.inverse_inertia[c] * torque_.col(c);
     }
-  }
+  });
   totals_ = EnergyTotals{};
   for (const EnergyTotals& t : chunk_totals_) totals_ += t;
 }
@@ -402,7 +399,7 @@ void ContactForceField::observe(const KinematicState& state, double elapsed) {
     } else {
       q.position -= setup_.box.minimum_image_shift(p.position - q.position);
     }
-    const ContactGeometry g = pair_geometry(p, q, setup_.pair_lever_arm_is_radius);
+    const ContactGeometry g = pair_geometry(p, q, setup_.pair_lever_arm);
     o.overlap = g.overlap;
     if (k < 0) continue;  // not listed: beyond reach
     const ContactOutcome c = evaluate_contact(table_.law(props_.material[owner], props_.material[partner]), g,

@@ -62,7 +62,7 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   const PartnerImage q = code != kNoShift ? partner_image<true>(in.packed[j], list.shifts, partner)
                                           : partner_image<false>(in.packed[j], list.shifts, partner);
   const ContactGeometry g = pair_geometry(sphere_at(in, i, pi.x, pi.y, pi.z), sphere_at(in, j, q.x, q.y, q.z),
-                                          in.lever_arm_is_radius);
+                                          in.lever_arm);
   const std::uint32_t slot = list.contact[k];
   const ContactHistory committed =
       slot == kNoContact ? ContactHistory{}

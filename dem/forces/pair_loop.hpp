@@ -30,7 +30,7 @@ struct PairLoopInput {
   const std::int32_t* motion_of;     ///< prescribed motion of each sphere or −1; null when none
   const Vec3* motion_velocity;       ///< velocity of each motion at this evaluation
   const PairTable* table;
-  bool lever_arm_is_radius;          ///< PairLeverArm::radius
+  PairLeverArm lever_arm;            ///< lever arms of the contact velocity and torque
   double elapsed;                    ///< time since the last commit [s]
   bool commit;                       ///< store the history the evaluations propose
   bool energies;                     ///< sum the contacts' energies (else the sums stay 0)

@@ -3,6 +3,7 @@
 // fused passes over the spheres, in place, with no allocation: the schemes of many-body runs.
 #include <cstdint>
 
+#include "dem/core/parallel_for.hpp"
 #include "dem/integrators/scheme_factories.hpp"
 #include "dem/integrators/state_algebra.hpp"
 
@@ -21,29 +22,27 @@ class KickDrift : public Scheme {
     const auto n = static_cast<std::int64_t>(state.position.cols());
     const bool rotation = rotation_;
     const bool orientation = rotation_ && orientation_;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
-    for (std::int64_t i = 0; i < n; ++i) {
+    parallel_for(threads_, n, [&](std::int64_t i) {
       state.velocity.col(i) += kick * acc.linear.col(i);
       if (rotation) state.angular_velocity.col(i) += kick * acc.angular.col(i);
-      if (is_fixed(static_cast<std::size_t>(i))) continue;
+      if (is_fixed(static_cast<std::size_t>(i))) return;
       state.position.col(i) += drift * state.velocity.col(i);
-      if (!orientation) continue;
+      if (!orientation) return;
       const Vec3 theta = drift * state.angular_velocity.col(i);
       const double angle = theta.norm();
       Quat& q = state.orientation[static_cast<std::size_t>(i)];
       if (angle > 0.0) q = (Quat(Eigen::AngleAxisd(angle, theta / angle)) * q).normalized();
-    }
+    });
     state.time += drift;
   }
   /// u += kick·a (and ω += kick·α) for every sphere.
   void kick(KinematicState& state, const Accelerations& acc, double kick) {
     const auto n = static_cast<std::int64_t>(state.position.cols());
     const bool rotation = rotation_;
-#pragma omp parallel for schedule(static) num_threads(threads_) if (threads_ > 1)
-    for (std::int64_t i = 0; i < n; ++i) {
+    parallel_for(threads_, n, [&](std::int64_t i) {
       state.velocity.col(i) += kick * acc.linear.col(i);
       if (rotation) state.angular_velocity.col(i) += kick * acc.angular.col(i);
-    }
+    });
   }
 
  private:

@@ -8,6 +8,8 @@
 
 #include <omp.h>
 
+#include "dem/core/parallel_for.hpp"
+
 namespace dem {
 namespace {
 
@@ -407,17 +409,16 @@ void NeighborList::remember_interacting() {
 void NeighborList::carry_history(std::span<const std::uint32_t> new_of_old, int threads) {
   const bool mapped = !new_of_old.empty();
   const auto count = static_cast<std::int64_t>(carried_.size());
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-  for (std::int64_t c = 0; c < count; ++c) {
+  parallel_for(threads, count, [&](std::int64_t c) {
     Carried& old = carried_[static_cast<std::size_t>(c)];
     const std::uint32_t i = mapped ? new_of_old[old.owner] : old.owner;
     const std::uint32_t j = mapped ? new_of_old[old.partner] : old.partner;
     bool i_owns = true;
     const std::int64_t e = find(i, j, i_owns);
-    if (e < 0) continue;  // no longer listed: beyond reach, so its history would reset anyway
+    if (e < 0) return;  // no longer listed: beyond reach, so its history would reset anyway
     contact_[static_cast<std::size_t>(e)] = static_cast<std::uint32_t>(c);
     if (!i_owns) old.slip = -old.slip;  // the slip is oriented owner → partner
-  }
+  });
 }
 
 void NeighborList::lay_out_carried() {

@@ -25,7 +25,7 @@ Simulation::Simulation(const SimulationSetup& setup)
           props_, table_,
           ForceFieldSetup{setup.walls, setup.fields, setup.motions,
                           setup.model.wall_lever_arm == WallLeverArm::radius,
-                          setup.model.pair_lever_arm == PairLeverArm::radius, setup.box,
+                          setup.model.pair_lever_arm, setup.box,
                           setup.neighbors, setup.threads, setup.track_energy})),
       scheme_(make_scheme(setup.scheme, setup.scheme_settings)),
       dt_(setup.timestep),

@@ -95,16 +95,26 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
   try {
     const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
     if (table.material_count() > 0) {
-      // The model choice is global, so every material pair has the same sub-model types.
+      // The sub-model types are global, but whether a pair maps can depend on its values (a JKR
+      // pair with γ = 0 is plain Hertz, which a wall can take): check every pair of materials
+      // the particles use, and every wall against each of them.
       const bool per_atom = lammps::classify_particles(scene).per_atom_diameter;
-      for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0), false, per_atom)) {
-        s.reasons.push_back(std::move(reason));
+      std::vector<std::size_t> used;
+      for (const auto& p : scene.particles) {
+        if (std::find(used.begin(), used.end(), p.material) == used.end()) used.push_back(p.material);
       }
-      if (!scene.walls.empty()) {
-        for (auto& reason : lammps::unmapped_sub_models(table.law(0, 0), true, per_atom)) {
+      if (used.empty()) used.push_back(0);
+      const auto add = [&](std::vector<std::string> reasons) {
+        for (auto& reason : reasons) {
           if (std::find(s.reasons.begin(), s.reasons.end(), reason) == s.reasons.end()) {
             s.reasons.push_back(std::move(reason));
           }
+        }
+      };
+      for (const std::size_t a : used) {
+        for (const std::size_t b : used) add(lammps::unmapped_sub_models(table.law(a, b), false, per_atom));
+        for (const auto& wall : scene.walls) {
+          add(lammps::unmapped_sub_models(table.law(a, wall.material), true, per_atom));
         }
       }
     }

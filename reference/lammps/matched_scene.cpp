@@ -16,6 +16,8 @@ cases::Scene matched_scene(const cases::Scene& scene) {
       adhesive ? dem::FrictionLimit::jkr_shifted : dem::FrictionLimit::elastic_damping;
   // fix wall/gran: lever arm and contact-point velocity with r, not r − δ/2.
   matched.model.wall_lever_arm = dem::WallLeverArm::radius;
+  // pair granular: contact-point velocity with r, torque with r − δ/2.
+  matched.model.pair_lever_arm = dem::PairLeverArm::radius_velocity;
   // pair granular jkr: the neck breaks at the load-controlled pull-off overlap δ_f.
   matched.model.jkr_rupture = dem::JkrRupture::load;
   return matched;

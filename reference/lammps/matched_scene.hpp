@@ -7,12 +7,13 @@ namespace reference::lammps {
 
 /// The scene the in-house core runs to reproduce LAMMPS 29 Sep 2021's numerics: velocity
 /// Verlet as `fix nve/sphere` with the pinned Δt; the Coulomb-limit basis of pair granular
-/// (FrictionLimit::elastic_damping, jkr_shifted for jkr/dmt); fix wall/gran's lever arm r
-/// (WallLeverArm::radius); pair granular's JKR rupture at δ_f (JkrRupture::load). Damping needs
-/// no change: the driver feeds LAMMPS the core's own dashpot (η, or the Tsuji e_in whose factor
-/// is the core's). Not reproduced (documented in docs/engines.md (section LAMMPS)): the pair contact
-/// velocity with full radii, the 1e-10 threshold of the history projection, JKR's damping-free
-/// friction basis, and the wall's δ = 0 contact onset.
+/// (FrictionLimit::elastic_damping, jkr_shifted for jkr/dmt, which leaves the dashpot out as
+/// LAMMPS does); fix wall/gran's lever arm r (WallLeverArm::radius); pair granular's contact
+/// velocity with full radii and torque with r − δ/2 (PairLeverArm::radius_velocity); pair
+/// granular's JKR rupture at δ_f (JkrRupture::load). Damping needs no change: the driver feeds
+/// LAMMPS the core's own dashpot (η, or the Tsuji e_in whose factor is the core's). Not
+/// reproduced (documented in docs/engines.md (section LAMMPS)): the 1e-10 threshold of the
+/// history projection and the wall's δ = 0 contact onset.
 cases::Scene matched_scene(const cases::Scene& scene);
 
 }  // namespace reference::lammps

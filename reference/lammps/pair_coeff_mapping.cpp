@@ -40,10 +40,11 @@ double lammps_youngs_modulus(double modulus, const PairContext& c) {
   return c.wall ? 2.0 * (1.0 - nu) * modulus : 2.0 * (1.0 - nu * nu) * modulus;
 }
 
-/// True for the cohesion sub-models LAMMPS folds into the normal model (jkr, dmt).
+/// True for the cohesion sub-models LAMMPS folds into the normal model (jkr, dmt); a JKR pair
+/// with γ = 0 is plain Hertz and is written as hertz/material.
 bool adhesive_normal(const dem::CohesionModel& cohesion) {
-  return std::holds_alternative<dem::JkrCohesion>(cohesion) ||
-         std::holds_alternative<dem::DmtCohesion>(cohesion);
+  if (const auto* jkr = std::get_if<dem::JkrCohesion>(&cohesion)) return jkr->adhesive();
+  return std::holds_alternative<dem::DmtCohesion>(cohesion);
 }
 
 /// Normal slot → `hooke k_e` or `hertz/material E_in η ν` (η inserted by the damping slot).
@@ -94,6 +95,9 @@ SlotProblem map_cohesion(const dem::PairLaw& law, const PairContext& c, Granular
       Overloaded{
           [](const dem::NoCohesion&) -> SlotProblem { return std::nullopt; },
           [&](const dem::JkrCohesion& m) -> SlotProblem {
+            // γ = 0: JKR is Hertz (a non-adhesive wall in a JKR model): hertz/material, and the
+            // friction limit LAMMPS uses for it (elastic + damping) is the core's for such a pair.
+            if (!m.adhesive()) return std::nullopt;
             if (c.wall) {
               return std::string(
                   "LAMMPS driver: cohesion 'jkr' on a wall is not mapped (fix wall/gran jkr in "
@@ -199,12 +203,12 @@ SlotProblem map_damping(const dem::PairLaw& law, const PairContext& c, GranularC
             return set_damping(out, "mass_velocity", m.rate, "eta/m* given (damping mass_velocity)");
           },
           [&](const dem::LammpsViscoelasticDamping& m) -> SlotProblem {
-            if (auto p = no_jkr(m.kKeyword)) return p;
+            // Under jkr both codes use the JKR contact radius a (η = η₀ a m*).
             return set_damping(out, "viscoelastic", m.rate_per_length,
                                "eta_0 given (damping viscoelastic, eta = eta_0 a m*)");
           },
           [&](const dem::LammpsTsujiDamping& m) -> SlotProblem {
-            if (auto p = no_jkr(m.kKeyword)) return p;
+            // Under jkr both codes take the stiffness (4/3) E* a with the JKR contact radius a.
             return set_damping(out, "tsuji", m.restitution, "nominal e given (damping tsuji as is)");
           },
           [](const auto& m) -> SlotProblem {

@@ -89,14 +89,15 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, do
   c["damping"] = coefficients_per_type_pair(scene, types);
   c["friction limit"] =
       has_jkr(scene) || scene.model.cohesion == "dmt"
-          ? "LAMMPS: mu |F_ne + 2 F_pulloff| (jkr/dmt; the dashpot not included) — the core's "
-            "'jkr_shifted' includes the dashpot"
+          ? "LAMMPS: mu |F_ne + 2 F_pulloff| for jkr/dmt pairs (the dashpot not included), mu |F_ne + "
+            "F_damping| for pairs without adhesion: the core's 'jkr_shifted'"
           : "LAMMPS: mu |F_elastic + F_damping| (the core's 'elastic_damping'; equals 'total' "
             "without cohesion)";
   c["tangential history"] =
       "displacement, projected onto the tangent plane and rescaled to its old length when "
       "|xi.n| k_t > 1e-10 F_crit, then xi += v_t dt; when capped xi = -(F_crit t + eta_t v_t)/k_t; "
-      "pair contact velocity uses the full radii, the torque lever r - delta/2";
+      "pair contact velocity uses the full radii, the torque lever r - delta/2 (the core's "
+      "pair_lever_arm 'radius_velocity')";
   if (!scene.walls.empty()) {
     c["walls"] =
         "fix wall/gran granular per (wall, mobile atom type), axis-aligned planes only; E_in = "

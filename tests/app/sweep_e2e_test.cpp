@@ -81,7 +81,7 @@ scale = "log"
   EXPECT_NE(rows[1], rows[2]);
   const std::string report = support::read_file(two / "report.md");
   EXPECT_NE(report.find("(n = 2)"), std::string::npos) << report;
-  EXPECT_NE(report.find("(plots/kappa_vol_vs_k_c.png)"), std::string::npos) << report;
+  EXPECT_NE(report.find("(plots/kappa_vol_vs_cohesive_stiffness.png)"), std::string::npos) << report;
   EXPECT_TRUE(fs::exists(two / "plots" / "kappa_damage_vs_cohesive_work.png"));
   // The fingerprint names the exact inputs and output.
   const auto fingerprint = nlohmann::json::parse(support::read_file(two / "sweep.json"));

@@ -11,6 +11,7 @@
 #include "dem/contact/contact_model.hpp"
 #include "dem/contact/laws/hertz.hpp"
 #include "dem/contact/laws/jkr.hpp"
+#include "dem/contact/laws/nonlinear_dashpots.hpp"
 #include "dem/simulation/simulation.hpp"
 
 namespace {
@@ -273,6 +274,79 @@ TEST(JkrContactModel, TotalNormalForceIsTheJkrForceWithHertz) {
   const dem::ContactOutcome apart = dem::evaluate_contact(law, pair_at(-1e-5), {}, 1e-6);
   EXPECT_FALSE(apart.interacting);
   EXPECT_EQ(apart.normal_force, 0.0);
+}
+
+TEST(JkrHysteresis, ReportsTheContactRadiusForTheDashpots) {
+  const JkrParameters p = benchmark();
+  for (const double delta : {-1e-5, 2e-5, 2e-4}) {
+    const auto [r, attached] = jkr_step(delta, true);
+    ASSERT_TRUE(attached);
+    const double a = jkr_contact_radius(delta, p);
+    EXPECT_EQ(r.contact_radius, a);
+    EXPECT_DOUBLE_EQ(r.radius_stiffness, 4.0 / 3.0 * p.effective_modulus * a);
+    // a exceeds the Hertz √(R*δ) at every overlap: adhesion widens the contact.
+    if (delta > 0.0) {
+      EXPECT_GT(a, std::sqrt(p.reduced_radius * delta));
+    }
+  }
+  EXPECT_EQ(jkr_step(-1e-5, false).first.contact_radius, 0.0);  // no neck, no radius
+}
+
+TEST(JkrContactModel, ZeroSurfaceEnergyIsHertz) {
+  const JkrParameters p = benchmark();
+  const dem::PairLaw jkr{dem::HertzNormal{p.effective_modulus}, dem::LammpsTsujiDamping{0.5, dem::laws::lammps_tsuji_factor(0.5)},
+                         dem::NoTangential{}, dem::JkrCohesion{p.effective_modulus, 0.0}, dem::NoRolling{}, {}};
+  const dem::PairLaw hertz{dem::HertzNormal{p.effective_modulus}, dem::LammpsTsujiDamping{0.5, dem::laws::lammps_tsuji_factor(0.5)},
+                           dem::NoTangential{}, dem::NoCohesion{}, dem::NoRolling{}, {}};
+  for (const double delta : {-1e-5, 0.0, 2e-5, 2e-4}) {
+    dem::ContactGeometry g = pair_at(delta);
+    g.normal_speed = -0.3;
+    const dem::ContactOutcome a = dem::evaluate_contact(jkr, g, {}, 1e-6);
+    const dem::ContactOutcome b = dem::evaluate_contact(hertz, g, {}, 1e-6);
+    EXPECT_EQ(a.interacting, b.interacting) << delta;
+    EXPECT_EQ(a.normal_force, b.normal_force) << delta;
+    EXPECT_FALSE(a.history.attached);
+  }
+  const dem::JkrCohesion flat{p.effective_modulus, 0.0};
+  EXPECT_FALSE(flat.adhesive());
+  EXPECT_EQ(flat.range({0.01, 0.01, 2.5e-3}), 0.01);
+}
+
+TEST(JkrContactModel, LammpsDashpotsUseTheJkrContactRadiusLikeLammps) {
+  // pair_granular.cpp (2021) under jkr: knfac = (4/3) E* a; tsuji η = α √(m* knfac), viscoelastic
+  // η = η₀ a m*, a the JKR contact radius — also in a neck at δ < 0, where Hertz gives none.
+  const JkrParameters p = benchmark();
+  const double alpha = dem::laws::lammps_tsuji_factor(0.5);
+  const dem::PairLaw tsuji{dem::HertzNormal{p.effective_modulus}, dem::LammpsTsujiDamping{0.5, alpha},
+                           dem::NoTangential{}, dem::JkrCohesion{p.effective_modulus, p.surface_energy},
+                           dem::NoRolling{}, {}};
+  const dem::PairLaw visco{dem::HertzNormal{p.effective_modulus}, dem::LammpsViscoelasticDamping{1e4},
+                           dem::NoTangential{}, dem::JkrCohesion{p.effective_modulus, p.surface_energy},
+                           dem::NoRolling{}, {}};
+  dem::ContactHistory attached;
+  attached.attached = true;
+  for (const double delta : {-1e-5, 2e-5, 2e-4}) {
+    dem::ContactGeometry g = pair_at(delta);
+    g.normal_speed = -0.2;
+    const double a = jkr_contact_radius(delta, p);
+    const double f_jkr = jkr_force(a, p);
+    const double eta_tsuji = alpha * std::sqrt(g.reduced_mass * 4.0 / 3.0 * p.effective_modulus * a);
+    const dem::ContactOutcome t = dem::evaluate_contact(tsuji, g, attached, 1e-6);
+    EXPECT_NEAR(t.normal_force, f_jkr + eta_tsuji * 0.2, 1e-12 * std::abs(f_jkr)) << delta;
+    const double eta_visco = 1e4 * a * g.reduced_mass;
+    const dem::ContactOutcome v = dem::evaluate_contact(visco, g, attached, 1e-6);
+    EXPECT_NEAR(v.normal_force, f_jkr + eta_visco * 0.2, 1e-12 * std::abs(f_jkr)) << delta;
+  }
+}
+
+TEST(JkrContactModel, ShiftedFrictionLimitLeavesTheDashpotOutOfAnAdhesiveContact) {
+  const double elastic = 2.0;
+  const double damping = 0.5;
+  const double cohesion = -0.7;
+  EXPECT_EQ(dem::friction_limit_basis(dem::FrictionLimit::jkr_shifted, elastic, damping, cohesion, 0.4),
+            std::abs(elastic + cohesion + 0.8));
+  // Without adhesion (a γ = 0 wall): LAMMPS' hertz/material limit, elastic + damping.
+  EXPECT_EQ(dem::friction_limit_basis(dem::FrictionLimit::jkr_shifted, elastic, -3.0, 0.0, 0.0), 1.0);
 }
 
 /// Two 5 mm benchmark spheres, one fixed, the other approaching at `speed`: JKR + Hertz with

@@ -29,7 +29,7 @@ sweeps::SweepSpec spec_3x2() {
   sweeps::SweepSpec s;
   s.name = "grid";
   s.seeds = {1, 2};
-  s.axes = {{"a.x", "x", {1.0, 10.0, 100.0}, true}, {"a.y", "y", {0.5, 0.25}, false}};
+  s.axes = {{"a.x", "x (m)", {1.0, 10.0, 100.0}, true}, {"a.y", "μ", {0.5, 0.25}, false}};
   return s;
 }
 
@@ -131,7 +131,7 @@ TEST(SweepReport, TablesEngineComparisonAndFigures) {
   }
   // The data beside a figure hold the means and their error bars.
   const std::string dat = support::read_file(dir / "plots" / "kappa_vol_vs_x.dat");
-  EXPECT_NE(dat.find("# lammps, y = 0.25"), std::string::npos) << dat;
+  EXPECT_NE(dat.find("# lammps, μ = 0.25"), std::string::npos) << dat;  // files named by key, curves by label
   fs::remove_all(dir);
 }
 

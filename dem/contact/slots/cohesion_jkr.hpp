@@ -65,19 +65,34 @@ struct JkrCohesion {
   [[nodiscard]] laws::JkrParameters parameters(double reduced_radius) const noexcept {
     return {modulus, reduced_radius, surface_energy};
   }
-  /// F_JKR − F_elastic while attached; updates `next.attached`.
+  /// True when the pair adheres (γ > 0). With γ = 0 JKR is Hertz: no neck, no pull-off, the
+  /// contact radius √(R*δ); that is how a non-adhesive wall sits in a JKR model.
+  [[nodiscard]] bool adhesive() const noexcept { return surface_energy > 0.0; }
+  /// F_JKR − F_elastic while attached; updates `next.attached`. Reports the contact radius a and
+  /// (4/3) E* a for the dashpots that read them (LAMMPS' under JKR).
   [[nodiscard]] CohesionResponse evaluate(const ContactInput& in, const NormalResponse& elastic,
                                           ContactHistory& next) const noexcept {
+    if (!adhesive()) {
+      next.attached = false;
+      return {};
+    }
     const laws::JkrParameters p = parameters(in.g.reduced_radius);
     const double overlap = in.g.overlap;
     next.attached = jkr_attached(in.committed.attached, overlap, p, in.policies.jkr_rupture);
     if (!next.attached) return {};
     const double a = laws::jkr_contact_radius(overlap, p);
-    return {laws::jkr_force(a, p) - elastic.force, laws::jkr_energy(a, p) - elastic.energy, true,
-            true, laws::jkr_pulloff_force(p)};
+    return {laws::jkr_force(a, p) - elastic.force,
+            laws::jkr_energy(a, p) - elastic.energy,
+            true,
+            true,
+            laws::jkr_pulloff_force(p),
+            a,
+            4.0 / 3.0 * modulus * a};
   }
-  /// Reaches |δ_c| beyond touching (δ_f < δ_c in magnitude, so this covers both policies).
+  /// Reaches |δ_c| beyond touching (δ_f < δ_c in magnitude, so this covers both policies); a
+  /// non-adhesive pair reaches the touching distance.
   [[nodiscard]] double range(const PairExtent& e) const noexcept {
+    if (!adhesive()) return e.contact_distance;
     return e.contact_distance - laws::jkr_rupture_overlap(parameters(e.reduced_radius));
   }
 };

@@ -35,11 +35,21 @@ struct LammpsTsujiDamping {
                                        "damping = 'lammps_tsuji'");
     return {e, laws::lammps_tsuji_factor(e)};
   }
-  /// Dashpot coefficient η [kg/s] for this contact.
+  /// Dashpot coefficient η [kg/s] for this contact: α_L √(m* F_el/δ), F_el/δ = (4/3) E* √(R*δ)
+  /// on Hertz.
   [[nodiscard]] double coefficient(const ContactGeometry& g,
                                    const NormalResponse& normal) const noexcept {
     return laws::tsuji_damping_coefficient(
         factor, g.reduced_mass, laws::secant_stiffness(normal.force, g.overlap, normal.stiffness));
+  }
+  /// As LAMMPS under JKR: the stiffness is (4/3) E* a with the JKR contact radius a (also in a
+  /// neck at δ < 0), not the Hertz secant; without a contact radius, as above.
+  [[nodiscard]] double coefficient(const ContactGeometry& g, const NormalResponse& normal,
+                                   const CohesionResponse& cohesion) const noexcept {
+    if (cohesion.contact_radius > 0.0) {
+      return laws::tsuji_damping_coefficient(factor, g.reduced_mass, cohesion.radius_stiffness);
+    }
+    return coefficient(g, normal);
   }
 };
 

@@ -34,6 +34,13 @@ struct LammpsViscoelasticDamping {
     return laws::lammps_viscoelastic_damping_coefficient(rate_per_length, g.reduced_radius,
                                                          g.overlap, g.reduced_mass);
   }
+  /// As LAMMPS under JKR: η = η₀ a m* with the JKR contact radius a (also in a neck at δ < 0);
+  /// without a contact radius, as above.
+  [[nodiscard]] double coefficient(const ContactGeometry& g, const NormalResponse& normal,
+                                   const CohesionResponse& cohesion) const noexcept {
+    if (cohesion.contact_radius > 0.0) return rate_per_length * cohesion.contact_radius * g.reduced_mass;
+    return coefficient(g, normal);
+  }
 };
 
 }  // namespace dem

@@ -52,6 +52,12 @@ struct CohesionResponse {
   bool active = false;         ///< the pair still interacts (keeps its history)
   bool contact = false;        ///< a physical contact exists (e.g. a JKR neck at δ < 0)
   double pulloff_force = 0.0;  ///< magnitude of the pull-off force, for FrictionLimit::jkr_shifted
+  /// Radius a of the contact area when the cohesion law sets it (an attached JKR contact), else
+  /// 0. LAMMPS' dashpots read it under JKR (docs/physics-cohesion.md).
+  double contact_radius = 0.0;
+  /// (4/3) E* a: the Hertz secant stiffness of a contact of radius a, LAMMPS' `knfac` under JKR
+  /// [N/m] (0 when contact_radius is 0).
+  double radius_stiffness = 0.0;
 };
 
 /// Normal-force information the tangential sub-model uses.

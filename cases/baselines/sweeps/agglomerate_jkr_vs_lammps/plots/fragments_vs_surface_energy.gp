@@ -1,0 +1,11 @@
+set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'
+set output "fragments_vs_surface_energy.png"
+set title "fragments against γ (J/m²)" noenhanced
+set xlabel "γ (J/m²)" noenhanced
+set ylabel "fragments" noenhanced
+set grid
+set key outside right top noenhanced
+set logscale x
+set format x '10^{%T}'
+plot "fragments_vs_surface_energy.dat" index 0 using 1:2:3 with yerrorlines lw 2 title "inhouse", \
+     "fragments_vs_surface_energy.dat" index 1 using 1:2:3 with yerrorlines lw 2 title "lammps"
