@@ -81,6 +81,10 @@ CoreSetup core_setup(const cases::Scene& scene, int threads) {
                                           in.implicit_max_iterations,
                                           smallest_radius(scene),
                                           in.leapfrog_start};
+  // A sphere's orientation enters no force and no output of a run, so it is not turned (a
+  // quaternion exponential per sphere and step). The implicit schemes keep it: their iteration
+  // advances it with the rest of the state.
+  s.scheme_settings.orientation = in.scheme == dem::SchemeId::bd1 || in.scheme == dem::SchemeId::bd2;
 
   dem::ParticleProperties props;
   dem::KinematicState initial;
