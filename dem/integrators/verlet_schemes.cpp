@@ -22,15 +22,26 @@ class KickDrift : public Scheme {
     const auto n = static_cast<std::int64_t>(state.position.cols());
     const bool rotation = rotation_;
     const bool orientation = rotation_ && orientation_;
-    parallel_for(threads_, n, [&](std::int64_t i) {
-      state.velocity.col(i) += kick * acc.linear.col(i);
-      if (rotation) state.angular_velocity.col(i) += kick * acc.angular.col(i);
+    // Raw pointers and scalars captured by value: the pass stays as tight as a plain loop (with
+    // references into the state the chute's integration pass was 25 % slower).
+    double* const x = state.position.data();
+    double* const u = state.velocity.data();
+    double* const w = state.angular_velocity.data();
+    const double* const a = acc.linear.data();
+    const double* const alpha = acc.angular.data();
+    Quat* const turn = state.orientation.data();
+    parallel_for(threads_, n, [=, this](std::int64_t i) {
+      const std::int64_t c = 3 * i;
+      for (int k = 0; k < 3; ++k) u[c + k] += kick * a[c + k];
+      if (rotation) {
+        for (int k = 0; k < 3; ++k) w[c + k] += kick * alpha[c + k];
+      }
       if (is_fixed(static_cast<std::size_t>(i))) return;
-      state.position.col(i) += drift * state.velocity.col(i);
+      for (int k = 0; k < 3; ++k) x[c + k] += drift * u[c + k];
       if (!orientation) return;
-      const Vec3 theta = drift * state.angular_velocity.col(i);
+      const Vec3 theta = drift * Vec3(w[c], w[c + 1], w[c + 2]);
       const double angle = theta.norm();
-      Quat& q = state.orientation[static_cast<std::size_t>(i)];
+      Quat& q = turn[i];
       if (angle > 0.0) q = (Quat(Eigen::AngleAxisd(angle, theta / angle)) * q).normalized();
     });
     state.time += drift;
@@ -39,9 +50,16 @@ class KickDrift : public Scheme {
   void kick(KinematicState& state, const Accelerations& acc, double kick) {
     const auto n = static_cast<std::int64_t>(state.position.cols());
     const bool rotation = rotation_;
-    parallel_for(threads_, n, [&](std::int64_t i) {
-      state.velocity.col(i) += kick * acc.linear.col(i);
-      if (rotation) state.angular_velocity.col(i) += kick * acc.angular.col(i);
+    double* const u = state.velocity.data();
+    double* const w = state.angular_velocity.data();
+    const double* const a = acc.linear.data();
+    const double* const alpha = acc.angular.data();
+    parallel_for(threads_, n, [=](std::int64_t i) {
+      const std::int64_t c = 3 * i;
+      for (int k = 0; k < 3; ++k) u[c + k] += kick * a[c + k];
+      if (rotation) {
+        for (int k = 0; k < 3; ++k) w[c + k] += kick * alpha[c + k];
+      }
     });
   }
 
