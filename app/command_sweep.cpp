@@ -197,6 +197,7 @@ std::string sweep_fingerprint(const SweepPlan& plan, const std::vector<sweeps::S
   return j.dump(2) + "\n";
 }
 
+/// The sweep command on one rank: parse, run this rank's share, gather at rank 0, which writes.
 int sweep(const std::vector<std::string>& args, const Invocation& inv, const ranks::Ranks& ranks) {
   po::options_description opts("options");
   opts.add_options()("output,o", po::value<std::string>(), "output directory (default out/sweep-<name>)")(
