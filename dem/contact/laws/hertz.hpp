@@ -24,6 +24,12 @@ namespace dem::laws {
   return 2.0 * effective_modulus * std::sqrt(reduced_radius * overlap);
 }
 
+/// Secant stiffness F/δ = 4/3 E* a [N/m] of a Hertz contact of contact radius a [m] (a = √(R*δ));
+/// LAMMPS' `knfac`, which its tsuji dashpot reads (under JKR with the JKR radius).
+[[nodiscard]] inline double hertz_secant_stiffness_at_radius(double effective_modulus, double contact_radius) noexcept {
+  return 4.0 / 3.0 * effective_modulus * contact_radius;
+}
+
 /// Elastic energy ∫F dδ = 8/15 E* √R* δ^{5/2} [J].
 [[nodiscard]] inline double hertz_energy(double effective_modulus, double reduced_radius,
                                          double overlap) noexcept {

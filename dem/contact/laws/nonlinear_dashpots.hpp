@@ -58,6 +58,13 @@ namespace dem::laws {
   return overlap > 0.0 ? rate_per_length * std::sqrt(reduced_radius * overlap) * reduced_mass : 0.0;
 }
 
+/// LAMMPS `damping viscoelastic` at a given contact radius a [m] (under JKR, the JKR radius):
+/// η = η₀ a m* [kg/s] (pair_granular.cpp, 2021).
+[[nodiscard]] inline double lammps_viscoelastic_damping_at_radius(double rate_per_length, double contact_radius,
+                                                                  double reduced_mass) noexcept {
+  return rate_per_length * contact_radius * reduced_mass;
+}
+
 /// YADE Hertz–Mindlin damping ratio β_n(e) from Thornton, Cummins & Cleary 2013, eqs B6–B7 (as
 /// `Ip2_FrictMat_FrictMat_MindlinPhys(en=e)` of YADE 2023.02a computes it):
 /// β_n = √(1/(1 − (1+e)² exp(A(e))) − 1), A(e) = Σ_{i=1..10} h_i e^i. A fit for the *clipped*

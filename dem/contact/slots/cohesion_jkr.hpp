@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "dem/contact/laws/hertz.hpp"
 #include "dem/contact/laws/jkr.hpp"
 #include "dem/contact/slots/property_access.hpp"
 #include "dem/contact/slots/responses.hpp"
@@ -87,7 +88,7 @@ struct JkrCohesion {
             true,
             laws::jkr_pulloff_force(p),
             a,
-            4.0 / 3.0 * modulus * a};
+            laws::hertz_secant_stiffness_at_radius(modulus, a)};
   }
   /// Reaches |δ_c| beyond touching (δ_f < δ_c in magnitude, so this covers both policies); a
   /// non-adhesive pair reaches the touching distance.

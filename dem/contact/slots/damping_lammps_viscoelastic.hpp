@@ -38,7 +38,9 @@ struct LammpsViscoelasticDamping {
   /// without a contact radius, as above.
   [[nodiscard]] double coefficient(const ContactGeometry& g, const NormalResponse& normal,
                                    const CohesionResponse& cohesion) const noexcept {
-    if (cohesion.contact_radius > 0.0) return rate_per_length * cohesion.contact_radius * g.reduced_mass;
+    if (cohesion.contact_radius > 0.0) {
+      return laws::lammps_viscoelastic_damping_at_radius(rate_per_length, cohesion.contact_radius, g.reduced_mass);
+    }
     return coefficient(g, normal);
   }
 };
