@@ -21,11 +21,13 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   if (matched.model.damping == "restitution" && matched.model.normal == "linear") {
     matched.model.damping = "yade_frictvisco";
   }
-  // Coulomb cap: CundallStrack on k_n δ; CundallStrackVisco and Mindlin on the whole normal
-  // force after the dashpot (and Mindlin's clip).
+  // Coulomb cap: CundallStrack on k_n δ; CundallStrackVisco on the elastic force plus its
+  // dashpot, which leaves out the linear cohesion the script adds as a separate force; Mindlin on
+  // the whole normal force after the dashpot (and its clip, and DMT adhesion).
   const YadeLaw law = map_contact_model(scene).law;
-  matched.model.friction_limit =
-      law == YadeLaw::frict ? dem::FrictionLimit::elastic : dem::FrictionLimit::total;
+  matched.model.friction_limit = law == YadeLaw::frict         ? dem::FrictionLimit::elastic
+                                 : law == YadeLaw::frict_visco ? dem::FrictionLimit::elastic_damping
+                                                               : dem::FrictionLimit::total;
   // Mindlin clips the total normal force at ≥ 0 (without adhesion).
   if (law == YadeLaw::mindlin && matched.model.cohesion == "none") matched.model.clamp_tensile = true;
   // Ig2 creates a contact at (r_p + r_q)² − d² ≥ 0 and the Law2 keeps it while δ ≥ 0: a pair

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reference/yade/model_mapping.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <type_traits>
@@ -13,8 +14,6 @@
 
 namespace reference::yade {
 namespace {
-
-/// Largest scene for the O(N²) per-step Python cohesion force.
 
 /// std::visit helper: one lambda per alternative.
 template <class... F>
@@ -338,9 +337,20 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
   check_walls(scene, out.law, out.reasons);
   for (const auto& p : out.pairs) out.python_cohesion = out.python_cohesion || p.cohesive_stiffness != 0.0;
   if (out.python_cohesion) {
-    if (!scene.walls.empty()) {
-      out.reasons.push_back("YADE driver: linear cohesion against plane walls is not mapped (the "
-                            "per-step Python force handles sphere pairs only)");
+    // The per-step Python force acts between spheres only: a wall may take part only when its
+    // material pairs with every particle material without cohesion (k_c = 0).
+    for (const auto& w : scene.walls) {
+      const bool cohesive_wall = std::any_of(scene.particles.begin(), scene.particles.end(), [&](const auto& p) {
+        return std::any_of(out.pairs.begin(), out.pairs.end(), [&](const YadePairParameters& q) {
+          return q.cohesive_stiffness != 0.0 && ((q.material_a == p.material && q.material_b == w.material) ||
+                                                 (q.material_b == p.material && q.material_a == w.material));
+        });
+      });
+      if (cohesive_wall) {
+        add_reason(out.reasons, "YADE driver: linear cohesion against plane walls is not mapped (the "
+                                "per-step Python force handles sphere pairs only; give the wall a "
+                                "material with cohesive_stiffness = 0)");
+      }
     }
     for (const auto& p : scene.particles) out.aabb_enlarge = std::max(out.aabb_enlarge, p.effect_radius / p.radius);
     out.warnings.push_back(
@@ -387,19 +397,28 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
   for (const auto& p : out.pairs) friction = friction || p.shear_stiffness != 0.0 || p.friction_angle != 0.0;
   if (friction) {
     out.warnings.push_back(tangential_warning());
-    const char* yade_basis = out.law == YadeLaw::frict ? "elastic" : "total";
+    // What YADE's cap multiplies: CundallStrack k_n δ; CundallStrackVisco the elastic force plus
+    // its dashpot; Mindlin the clipped total (with DMT adhesion). The linear cohesion the script
+    // adds as a separate force is in none of them.
+    const char* yade_basis = out.law == YadeLaw::frict         ? "elastic"
+                             : out.law == YadeLaw::frict_visco ? "elastic + damping"
+                                                               : "total";
     out.conventions["friction limit"] = fmt::format(
         "YADE caps |F_s| at tan(frictAngle)·|F_n| with the {} normal force ({}); the case asks "
         "'{}'",
         yade_basis,
-        out.law == YadeLaw::frict ? "CundallStrack: k_n δ"
-                                  : "normalForce after the dashpot (and the clip, Mindlin)",
+        out.law == YadeLaw::frict         ? "CundallStrack: k_n δ"
+        : out.law == YadeLaw::frict_visco ? "CundallStrackVisco: normalForce after the dashpot, without the Python cohesion"
+                                          : "normalForce after the dashpot (and the clip, Mindlin)",
         dem::to_string(scene.model.friction_limit));
-    const bool same = scene.model.friction_limit == dem::FrictionLimit::total ||
-                      (out.law != YadeLaw::frict &&
-                       scene.model.friction_limit == dem::FrictionLimit::elastic_damping &&
-                       out.surface_energy == 0.0) ||
-                      (out.law == YadeLaw::frict);
+    bool same = false;
+    switch (scene.model.friction_limit) {
+      case dem::FrictionLimit::total: same = !out.python_cohesion; break;
+      case dem::FrictionLimit::elastic: same = out.law == YadeLaw::frict; break;
+      case dem::FrictionLimit::elastic_damping: same = out.law != YadeLaw::mindlin || out.surface_energy == 0.0; break;
+      // No pull-off force under the linear laws: the shifted rule is elastic + damping there.
+      case dem::FrictionLimit::jkr_shifted: same = out.law != YadeLaw::mindlin; break;
+    }
     if (!same) {
       out.warnings.push_back(fmt::format(
           "friction limit: YADE caps with the {} normal force, the case's policy is '{}'",

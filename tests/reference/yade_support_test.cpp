@@ -153,3 +153,36 @@ TEST(YadeInstallation, MakeEngineKnowsYade) {
 }
 
 }  // namespace
+
+namespace {
+
+const std::filesystem::path kEnsembles = std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/ensembles";
+
+TEST(YadeSupport, LinearAgglomerateWithANonCohesiveWallIsMappedWithYadesFrictionCap) {
+  // The Python cohesion acts between spheres only: a wall whose material pairs with k_c = 0 is
+  // fine, and CundallStrackVisco caps friction with elastic + damping, the case's policy.
+  const cases::Scene scene = cases::load_case(kEnsembles / "agglomerate_linear_yade.toml");
+  const auto s = offline_engine().supports(scene);
+  EXPECT_TRUE(s.supported()) << s.explain();
+  const auto m = reference::yade::map_contact_model(scene);
+  EXPECT_TRUE(m.python_cohesion);
+  EXPECT_NE(m.conventions.at("friction limit").find("elastic + damping"), std::string::npos);
+  for (const auto& w : m.warnings) EXPECT_EQ(w.find("friction limit:"), std::string::npos) << w;
+}
+
+TEST(YadeSupport, LinearCohesionAgainstACohesiveWallIsRefused) {
+  const auto s = offline_engine().supports(cases::load_case(kCanonical / "agglomerate_linear.toml"));
+  EXPECT_TRUE(mentions(s, "linear cohesion against plane walls is not mapped")) << s.explain();
+}
+
+TEST(YadeSupport, TotalFrictionBasisWithPythonCohesionIsFlagged) {
+  // The core's `total` basis includes the cohesive pull, which YADE's cap never sees.
+  cases::Scene scene = cases::load_case(kEnsembles / "agglomerate_linear_yade.toml");
+  scene.model.friction_limit = dem::FrictionLimit::total;
+  const auto m = reference::yade::map_contact_model(scene);
+  bool flagged = false;
+  for (const auto& w : m.warnings) flagged = flagged || w.find("friction limit: YADE caps with the elastic + damping") != std::string::npos;
+  EXPECT_TRUE(flagged);
+}
+
+}  // namespace
