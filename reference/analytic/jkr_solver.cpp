@@ -79,6 +79,13 @@ struct Rig {
     return policy == dem::JkrRupture::load ? dem::laws::jkr_pulloff_overlap(jkr)
                                            : dem::laws::jkr_rupture_overlap(jkr);
   }
+  /// Contact radius at the break, in closed form: a_c (displacement control) or a_f = 9^{1/3} a_c
+  /// (load control). Not a(δ_break) solved numerically: δ_c is a fold of δ(a), where a solve
+  /// amplifies the rounding of δ to its square root (~1e-8).
+  [[nodiscard]] double break_radius() const {
+    return policy == dem::JkrRupture::load ? dem::laws::jkr_pulloff_radius(jkr)
+                                           : dem::laws::jkr_critical_radius(jkr);
+  }
   /// Attached after a monotone stretch that ends at overlap δ, starting `attached`.
   [[nodiscard]] bool attached_after(bool attached, double delta) const {
     if (delta >= 0.0) return true;
@@ -168,9 +175,9 @@ Figures exact_figures(const Rig& rig, const History& history) {
       if (breaks) {
         deepest = std::max(deepest, d0);
         f.rupture_overlap = delta_break;
-        f.rupture_force = rig.force(delta_break);
+        f.rupture_force = dem::laws::jkr_force(rig.break_radius(), rig.jkr);
         f.separation_work = dem::laws::jkr_energy(dem::laws::jkr_contact_radius(deepest, rig.jkr), rig.jkr) -
-                            dem::laws::jkr_energy(dem::laws::jkr_contact_radius(delta_break, rig.jkr), rig.jkr);
+                            dem::laws::jkr_energy(rig.break_radius(), rig.jkr);
       }
     }
     if (covered) {

@@ -2,6 +2,8 @@
 // The JKR law against its closed forms (thesis eq 3.34–3.35; docs/physics-cohesion.md), its
 // hysteresis, and the energy of a damped adhesive collision.
 #include <cmath>
+#include <limits>
+#include <random>
 #include <numbers>
 #include <utility>
 
@@ -38,6 +40,63 @@ TEST(JkrLaw, ContactRadiusInvertsTheOverlapTo1e10) {
     for (double s = 1.01; s < 50.0; s *= 1.1) {
       EXPECT_NEAR(jkr_contact_radius(jkr_overlap(s * ac, p), p), s * ac, 1e-10 * s * ac) << s;
     }
+  }
+}
+
+TEST(JkrLaw, ContactRadiusOnSeededRandomPairsInvertsTheOverlapToRounding) {
+  // Pairs nobody picked: E* over 4 decades, R* over 3, γ over 5; overlaps from just above δ_c
+  // to 10⁴ |δ_c|. a(δ) must lie on the stable branch and invert eq 3.35 to a few ulps of the
+  // larger of its two terms; the a_c-taking form is the same function.
+  std::mt19937_64 rng(20261203);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int n = 0; n < 2000; ++n) {
+    const JkrParameters p{std::pow(10.0, 6.0 + 4.0 * u(rng)), std::pow(10.0, -5.0 + 3.0 * u(rng)),
+                          std::pow(10.0, -3.0 + 5.0 * u(rng))};
+    const double ac = jkr_critical_radius(p);
+    const double dc = jkr_rupture_overlap(p);
+    const double delta = dc + std::abs(dc) * std::pow(10.0, -8.0 + 12.0 * u(rng));
+    const double a = jkr_contact_radius(delta, p);
+    ASSERT_EQ(a, jkr_contact_radius(delta, p, ac));
+    ASSERT_GE(a, ac);
+    const double scale = a * a / p.reduced_radius;  // the larger term of eq 3.35 near the root
+    EXPECT_NEAR(jkr_overlap(a, p), delta, 64.0 * std::numeric_limits<double>::epsilon() * scale)
+        << "E* " << p.effective_modulus << " R* " << p.reduced_radius << " γ " << p.surface_energy
+        << " δ " << delta;
+  }
+}
+
+TEST(JkrLaw, ForceAndEnergyFromTheRadiusRatioEqualTheRadiusForms) {
+  // F = πγR*(y⁶/3 − 2y³) and U = πγa_c²(2y¹⁰/15 − 4y⁷/3 + 2y⁴) are eq 3.34 and the energy with
+  // a = a_c y², written without a square root: the contact loop's form.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int n = 0; n < 2000; ++n) {
+    const JkrParameters p{std::pow(10.0, 6.0 + 4.0 * u(rng)), std::pow(10.0, -5.0 + 3.0 * u(rng)),
+                          std::pow(10.0, -3.0 + 5.0 * u(rng))};
+    const double ac = jkr_critical_radius(p);
+    const double y = 1.0 + 4.0 * u(rng);
+    const double a = ac * y * y;
+    const double scale_f = jkr_pulloff_force(p) * std::pow(y, 6);
+    EXPECT_NEAR(jkr_force_at_ratio(y, p), jkr_force(a, p), 1e-13 * scale_f);
+    const double scale_u = kPi * p.surface_energy * ac * ac * std::pow(y, 10);
+    EXPECT_NEAR(jkr_energy_at_ratio(y, ac, p), jkr_energy(a, p), 1e-13 * scale_u);
+    const double delta = jkr_overlap(a, p);
+    EXPECT_NEAR(jkr_radius_ratio(delta, p, ac), y, 1e-12 * y);
+  }
+  const JkrParameters p = benchmark();
+  EXPECT_NEAR(jkr_force_at_ratio(1.0, p), -5.0 / 9.0 * jkr_pulloff_force(p), 1e-15 * jkr_pulloff_force(p));
+  EXPECT_NEAR(jkr_force_at_ratio(std::cbrt(3.0), p), -jkr_pulloff_force(p), 1e-14 * jkr_pulloff_force(p));
+}
+
+TEST(JkrLaw, BreakOverlapsFromTheCriticalRadiusEqualTheCubeRootForms) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int n = 0; n < 1000; ++n) {
+    const JkrParameters p{std::pow(10.0, 6.0 + 4.0 * u(rng)), std::pow(10.0, -5.0 + 3.0 * u(rng)),
+                          std::pow(10.0, -3.0 + 5.0 * u(rng))};
+    const double ac = jkr_critical_radius(p);
+    EXPECT_NEAR(jkr_rupture_overlap_at(ac, p), jkr_rupture_overlap(p), 1e-14 * std::abs(jkr_rupture_overlap(p)));
+    EXPECT_NEAR(jkr_pulloff_overlap_at(ac, p), jkr_pulloff_overlap(p), 1e-13 * std::abs(jkr_pulloff_overlap(p)));
   }
 }
 
@@ -89,8 +148,14 @@ TEST(JkrLaw, DisplacementControlledRuptureIsAtDeltaCWithFiveNinthsOfPullOff) {
     EXPECT_NEAR(jkr_rupture_overlap(p), dc, 1e-14 * std::abs(dc));
     EXPECT_NEAR(jkr_overlap(ac, p), dc, 1e-12 * std::abs(dc));  // δ(a_c) is the minimum of δ(a)
     EXPECT_NEAR(jkr_force(ac, p), -5.0 / 9.0 * jkr_pulloff_force(p), 1e-12 * jkr_pulloff_force(p));
+    // δ_c is a fold of δ(a) (dδ/da = 0 at a_c): with y = 1 + t, D + 3 = 6t² + O(t³), so an input
+    // δ that carries a few roundings (|D + 3| ≲ 12·2⁻⁵³) moves the root by t ≲ √(2·2⁻⁵³) ≈ 1.5e-8,
+    // and the force, dF/dy = −4πγR* at y = 1, by (4/3)F_po·t. The solve at δ_c can be no closer
+    // than that; the closed form above holds at a_c itself to 1e-12.
+    const double fold = 4.0 / 3.0 * std::sqrt(2.0 * std::numeric_limits<double>::epsilon() / 2.0);
     EXPECT_NEAR(jkr_force(jkr_contact_radius(dc, p), p), -5.0 / 9.0 * jkr_pulloff_force(p),
-                1e-12 * jkr_pulloff_force(p));
+                2.0 * fold * jkr_pulloff_force(p));
+    EXPECT_GE(jkr_contact_radius(dc, p), ac);
   }
 }
 

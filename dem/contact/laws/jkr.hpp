@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "dem/core/cube_root.hpp"
+
 // The JKR adhesive contact (Johnson, Kendall & Roberts 1971; thesis eq 3.34–3.35;
 // docs/physics-cohesion.md) as pure functions of the contact radius a. γ is the surface energy *per
 // surface*; the work of adhesion is Γ = 2γ. Overlap δ > 0 means the bodies interpenetrate; force
@@ -48,7 +50,7 @@ struct JkrParameters {
 
 /// Critical contact radius, where dδ/da = 0: a_c³ = πΓR*²/(8E*) = πγR*²/(4E*) [m].
 [[nodiscard]] inline double jkr_critical_radius(const JkrParameters& p) noexcept {
-  return std::cbrt(std::numbers::pi * p.surface_energy * p.reduced_radius * p.reduced_radius /
+  return cube_root(std::numbers::pi * p.surface_energy * p.reduced_radius * p.reduced_radius /
                    (4.0 * p.effective_modulus));
 }
 
@@ -90,9 +92,49 @@ struct JkrParameters {
                    p.reduced_radius / p.effective_modulus);
 }
 
+/// δ_c from a known critical radius: −3a_c²/R* (the same value as jkr_rupture_overlap, without
+/// its cube root; what the contact loop uses, having a_c already) [m].
+[[nodiscard]] inline double jkr_rupture_overlap_at(double critical_radius, const JkrParameters& p) noexcept {
+  return -3.0 * critical_radius * critical_radius / p.reduced_radius;
+}
+
+/// δ_f from a known critical radius: at y_f = 9^{1/6}, y_f⁴ = 3y_f, so δ_f = −9^{1/6} a_c²/R*
+/// (the same value as jkr_pulloff_overlap, without its cube roots) [m].
+[[nodiscard]] inline double jkr_pulloff_overlap_at(double critical_radius, const JkrParameters& p) noexcept {
+  constexpr double kSixthRootOfNine = 1.4422495703074083;  // 9^{1/6}
+  return -kSixthRootOfNine * critical_radius * critical_radius / p.reduced_radius;
+}
+
 /// Contact radius a(δ) on the stable branch a ≥ a_c (the larger root of eq 3.35, dF/dδ > 0),
-/// by a bracketed TOMS 748 solve to double precision. δ at or below δ_c gives a_c. Defined in
-/// jkr.cpp so that Boost.Math stays out of headers.
+/// by Newton's method from a tabulated start, to rounding (docs/physics-cohesion.md). δ at or
+/// below δ_c gives a_c.
 [[nodiscard]] double jkr_contact_radius(double overlap, const JkrParameters& p) noexcept;
+
+/// The same, given a_c = jkr_critical_radius(p) (the contact loop has it already).
+[[nodiscard]] double jkr_contact_radius(double overlap, const JkrParameters& p,
+                                        double critical_radius) noexcept;
+
+/// y = √(a/a_c) on the stable branch (y ≥ 1) for overlap δ, given a_c: what jkr_contact_radius
+/// solves for; the force and energy below read it without a square root or a division.
+[[nodiscard]] double jkr_radius_ratio(double overlap, const JkrParameters& p,
+                                      double critical_radius) noexcept;
+
+/// Normal force at y = √(a/a_c), eq 3.34 with a = a_c y²: F = πγR* (y⁶/3 − 2y³) [N], repulsive
+/// positive (−5/3 πγR* at the rupture point y = 1, the largest tension −3πγR* at y³ = 3).
+[[nodiscard]] inline double jkr_force_at_ratio(double ratio, const JkrParameters& p) noexcept {
+  const double y3 = ratio * ratio * ratio;
+  return std::numbers::pi * p.surface_energy * p.reduced_radius * (y3 * y3 / 3.0 - 2.0 * y3);
+}
+
+/// Contact energy at y = √(a/a_c) (jkr_energy with a = a_c y²):
+/// U = πγa_c² (2y¹⁰/15 − 4y⁷/3 + 2y⁴) [J] (0.8πγa_c² at the rupture point).
+[[nodiscard]] inline double jkr_energy_at_ratio(double ratio, double critical_radius,
+                                                const JkrParameters& p) noexcept {
+  const double y2 = ratio * ratio;
+  const double y3 = y2 * ratio;
+  const double y4 = y2 * y2;
+  return std::numbers::pi * p.surface_energy * critical_radius * critical_radius * y4 *
+         (2.0 * y4 * y2 / 15.0 - 4.0 * y3 / 3.0 + 2.0);
+}
 
 }  // namespace dem::laws

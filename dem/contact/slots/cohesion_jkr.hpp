@@ -13,20 +13,22 @@
 namespace dem {
 
 /// Overlap below which an attached JKR contact breaks, per policy (docs/physics-cohesion.md): δ_c
-/// of the displacement-controlled rupture, or δ_f of the load-controlled pull-off (as LAMMPS) [m].
-[[nodiscard]] inline double jkr_break_overlap(const laws::JkrParameters& p,
+/// of the displacement-controlled rupture, or δ_f of the load-controlled pull-off (as LAMMPS) [m],
+/// from the contact's critical radius a_c.
+[[nodiscard]] inline double jkr_break_overlap(const laws::JkrParameters& p, double critical_radius,
                                               JkrRupture policy) noexcept {
-  return policy == JkrRupture::load ? laws::jkr_pulloff_overlap(p) : laws::jkr_rupture_overlap(p);
+  return policy == JkrRupture::load ? laws::jkr_pulloff_overlap_at(critical_radius, p)
+                                    : laws::jkr_rupture_overlap_at(critical_radius, p);
 }
 
 /// True when a JKR contact that was `attached` at the last commit is attached at overlap δ:
 /// it forms when δ reaches 0 and, once formed, holds down to δ_c (`displacement`, inclusive) or
 /// while δ > δ_f (`load`, as LAMMPS' r < r_p + r_q − δ_f).
 [[nodiscard]] inline bool jkr_attached(bool attached, double overlap, const laws::JkrParameters& p,
-                                       JkrRupture policy) noexcept {
+                                       double critical_radius, JkrRupture policy) noexcept {
   if (overlap >= 0.0) return true;
   if (!attached) return false;
-  const double limit = jkr_break_overlap(p, policy);
+  const double limit = jkr_break_overlap(p, critical_radius, policy);
   return policy == JkrRupture::load ? overlap > limit : overlap >= limit;
 }
 
@@ -79,11 +81,13 @@ struct JkrCohesion {
     }
     const laws::JkrParameters p = parameters(in.g.reduced_radius);
     const double overlap = in.g.overlap;
-    next.attached = jkr_attached(in.committed.attached, overlap, p, in.policies.jkr_rupture);
+    const double a_c = laws::jkr_critical_radius(p);  // one cube root serves the break and a(δ)
+    next.attached = jkr_attached(in.committed.attached, overlap, p, a_c, in.policies.jkr_rupture);
     if (!next.attached) return {};
-    const double a = laws::jkr_contact_radius(overlap, p);
-    return {laws::jkr_force(a, p) - elastic.force,
-            laws::jkr_energy(a, p) - elastic.energy,
+    const double y = laws::jkr_radius_ratio(overlap, p, a_c);  // √(a/a_c)
+    const double a = a_c * y * y;
+    return {laws::jkr_force_at_ratio(y, p) - elastic.force,
+            laws::jkr_energy_at_ratio(y, a_c, p) - elastic.energy,
             true,
             true,
             laws::jkr_pulloff_force(p),
