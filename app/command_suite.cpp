@@ -22,6 +22,7 @@
 #include "reports/markdown.hpp"
 #include "reports/results_json.hpp"
 #include "support/text_file.hpp"
+#include "sweeps/stored_ensembles.hpp"
 
 namespace app {
 namespace {
@@ -170,6 +171,16 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
     md += "<a id=\"" + e.outcome->scene.name + "\"></a>\n\n";
     md += reports::case_section(*e.outcome, case_dir / "plots", out, 2);
     all["cases"].push_back(reports::results_json(*e.outcome, context.wall_times));
+  }
+  // The cross-code ensembles stored beside the suite (cases/sweeps, cases/baselines/sweeps).
+  const auto ensembles = sweeps::stored_ensembles(dir.parent_path() / "sweeps", dir.parent_path() / "baselines" / "sweeps");
+  md += sweeps::stored_ensembles_section(ensembles, out);
+  all["ensembles"] = nlohmann::ordered_json::array();
+  for (const auto& e : ensembles) {
+    all["ensembles"].push_back({{"sweep", e.name},
+                                {"current", e.current},
+                                {"problem", e.problem},
+                                {"cells_beyond_two_standard_errors", e.beyond_two}});
   }
   all["status"] = std::string(comparison::to_string(worst));
   support::write_file(out / "report.md", md);
