@@ -43,6 +43,15 @@ TEST(JkrLaw, ContactRadiusInvertsTheOverlapTo1e10) {
   }
 }
 
+/// A pair nobody picked: E* over 4 decades (1e6–1e10 Pa), R* over 3 (10 µm–10 mm), γ over 5
+/// (1e-3–1e2 J/m²), log-uniform.
+JkrParameters random_pair(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double modulus = std::pow(10.0, 6.0 + 4.0 * u(rng));
+  const double radius = std::pow(10.0, -5.0 + 3.0 * u(rng));
+  return {modulus, radius, std::pow(10.0, -3.0 + 5.0 * u(rng))};
+}
+
 TEST(JkrLaw, ContactRadiusOnSeededRandomPairsInvertsTheOverlapToRounding) {
   // Pairs nobody picked: E* over 4 decades, R* over 3, γ over 5; overlaps from just above δ_c
   // to 10⁴ |δ_c|. a(δ) must lie on the stable branch and invert eq 3.35 to a few ulps of the
@@ -50,8 +59,7 @@ TEST(JkrLaw, ContactRadiusOnSeededRandomPairsInvertsTheOverlapToRounding) {
   std::mt19937_64 rng(20261203);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int n = 0; n < 2000; ++n) {
-    const JkrParameters p{std::pow(10.0, 6.0 + 4.0 * u(rng)), std::pow(10.0, -5.0 + 3.0 * u(rng)),
-                          std::pow(10.0, -3.0 + 5.0 * u(rng))};
+    const JkrParameters p = random_pair(rng);
     const double ac = jkr_critical_radius(p);
     const double dc = jkr_rupture_overlap(p);
     const double delta = dc + std::abs(dc) * std::pow(10.0, -8.0 + 12.0 * u(rng));
@@ -71,8 +79,7 @@ TEST(JkrLaw, ForceAndEnergyFromTheRadiusRatioEqualTheRadiusForms) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int n = 0; n < 2000; ++n) {
-    const JkrParameters p{std::pow(10.0, 6.0 + 4.0 * u(rng)), std::pow(10.0, -5.0 + 3.0 * u(rng)),
-                          std::pow(10.0, -3.0 + 5.0 * u(rng))};
+    const JkrParameters p = random_pair(rng);
     const double ac = jkr_critical_radius(p);
     const double y = 1.0 + 4.0 * u(rng);
     const double a = ac * y * y;
@@ -90,10 +97,8 @@ TEST(JkrLaw, ForceAndEnergyFromTheRadiusRatioEqualTheRadiusForms) {
 
 TEST(JkrLaw, BreakOverlapsFromTheCriticalRadiusEqualTheCubeRootForms) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int n = 0; n < 1000; ++n) {
-    const JkrParameters p{std::pow(10.0, 6.0 + 4.0 * u(rng)), std::pow(10.0, -5.0 + 3.0 * u(rng)),
-                          std::pow(10.0, -3.0 + 5.0 * u(rng))};
+    const JkrParameters p = random_pair(rng);
     const double ac = jkr_critical_radius(p);
     EXPECT_NEAR(jkr_rupture_overlap_at(ac, p), jkr_rupture_overlap(p), 1e-14 * std::abs(jkr_rupture_overlap(p)));
     EXPECT_NEAR(jkr_pulloff_overlap_at(ac, p), jkr_pulloff_overlap(p), 1e-13 * std::abs(jkr_pulloff_overlap(p)));
