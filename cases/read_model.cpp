@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "cases/loader_sections.hpp"
+#include "cases/names.hpp"
 #include "cases/suggestion.hpp"
 #include "dem/contact/registry.hpp"
 #include "dem/materials/mixing.hpp"
@@ -73,7 +74,7 @@ bool is_identifier(std::string_view text, bool upper) {
     return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
            (upper && c >= 'A' && c <= 'Z');
   };
-  return !text.empty() && std::all_of(text.begin(), text.end(), allowed);
+  return !text.empty() && text.size() <= kMaxNameLength && std::all_of(text.begin(), text.end(), allowed);
 }
 
 /// The member of `choice` (const or not) holding the keyword of `slot`.
@@ -159,7 +160,8 @@ void read_properties(const Table& table, Target& target, FieldOf field_of,
 dem::MaterialProperties read_material(const std::string& name, const Value& entry,
                                       const dem::ModelChoice& choice) {
   if (!is_identifier(name, true)) {
-    entry.fail(fmt::format("material name '{}' may contain only letters, digits and '_'", name));
+    entry.fail(fmt::format("material name '{}' may contain only letters, digits and '_' (at most {} characters)",
+                           name.substr(0, kMaxNameLength), kMaxNameLength));
   }
   const Table table = entry.table();
   table.allow_only(property_keys({"density"}, kMaterialField));
@@ -230,7 +232,8 @@ void read_case_section(const Table& root, Scene& scene) {
   scene.name = name.string();
   if (!is_identifier(scene.name, false)) {
     name.fail(
-        fmt::format("'{}' may contain only lowercase letters a-z, digits 0-9 and '_'", scene.name));
+        fmt::format("'{}' may contain only lowercase letters a-z, digits 0-9 and '_' (at most {} characters)",
+                    scene.name.substr(0, kMaxNameLength), kMaxNameLength));
   }
   if (const auto v = section.find("description")) scene.description = v->string();
   if (const auto v = section.find("thesis")) scene.thesis_reference = v->string();

@@ -10,6 +10,7 @@
 
 #include "cases/generators/population.hpp"
 #include "cases/loader_sections.hpp"
+#include "cases/names.hpp"
 
 namespace cases::loader {
 namespace {
@@ -107,7 +108,7 @@ SizeSpec read_size(const Table& t) {
 PopulationSpec read_population(const Table& t, const Scene& scene) {
   t.allow_only(kPopulationKeys);
   PopulationSpec p;
-  if (const auto v = t.find("name")) p.name = v->string();
+  if (const auto v = t.find("name")) p.name = read_name(*v);
   p.material = material_index(t.require("material"), scene);
   p.seed = static_cast<std::uint64_t>(t.require("seed").integer(0, INT64_MAX));
   const std::string arrangement = t.require("arrangement").keyword(kArrangements, "arrangement");

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cases/loader_sections.hpp"
+#include "cases/names.hpp"
 
 namespace cases::loader {
 namespace {
@@ -102,7 +103,7 @@ void read_stages(const Table& root, Scene& scene) {
     const Table t = entry.table();
     const std::string kind = t.require("kind").keyword(kKinds, "stage kind");
     StageSpec stage;
-    stage.name = t.has("name") ? t.require("name").string() : kind;
+    stage.name = t.has("name") ? read_name(t.require("name")) : kind;
     if (kind == "formation") {
       if (launches > 0) t.fail("kind", "a formation stage must come before the launch stage");
       stage.action = read_formation(t, scene);

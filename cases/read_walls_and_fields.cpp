@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cases/loader_sections.hpp"
+#include "cases/names.hpp"
 
 namespace cases::loader {
 namespace {
@@ -38,7 +39,7 @@ Vector3 unit_vector(const Value& value) {
 WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
   t.allow_only(kPlaneKeys);
   WallSpec w;
-  w.name = t.has("name") ? t.require("name").string() : fmt::format("wall{}", index);
+  w.name = t.has("name") ? read_name(t.require("name")) : fmt::format("wall{}", index);
   w.point = t.require("point").vector3();
   w.normal = unit_vector(t.require("normal"));
   w.material = material_index(t.require("material"), scene);
@@ -49,7 +50,7 @@ WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
 /// The inner faces of an axis-aligned box, normals pointing inwards, minus the open ones.
 std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t index) {
   t.allow_only(kBoxKeys);
-  const std::string name = t.has("name") ? t.require("name").string() : fmt::format("box{}", index);
+  const std::string name = t.has("name") ? read_name(t.require("name")) : fmt::format("box{}", index);
   const Vector3 lo = t.require("min").vector3();
   const Vector3 hi = t.require("max").vector3();
   for (int k = 0; k < 3; ++k) {

@@ -263,8 +263,8 @@ std::string case_section(const comparison::CaseOutcome& o, const std::filesystem
                          const std::filesystem::path& report_dir, int level) {
   const cases::Scene& s = o.scene;
   std::string md = heading(level, fmt::format("`{}` — {}", s.name, status_cell(comparison::worst_status(o))));
-  if (!s.description.empty()) md += s.description + "\n\n";
-  if (!s.thesis_reference.empty()) md += "Thesis: " + s.thesis_reference + ".  \n";
+  if (!s.description.empty()) md += inert_text(s.description) + "\n\n";
+  if (!s.thesis_reference.empty()) md += "Thesis: " + inert_text(s.thesis_reference) + ".  \n";
   md += fmt::format("Case file: `{}` (sha256 `{}`).\n\n", s.source_path, s.source_sha256.substr(0, 16));
   md += model_section(s, level + 1);
   md += stages_section(s, level + 1);

@@ -30,6 +30,29 @@ std::string MarkdownTable::render() const {
   return out;
 }
 
+std::string inert_text(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7f) {
+      out += ' ';
+    } else if (c == '&') {
+      out += "&amp;";
+    } else if (c == '<') {
+      out += "&lt;";
+    } else if (c == '>') {
+      out += "&gt;";
+    } else if (std::string_view("\\`*[]!#|").find(c) != std::string_view::npos) {
+      out += '\\';
+      out += c;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 std::string format_number(std::optional<double> v) {
   if (!v || !std::isfinite(*v)) return "—";
   return fmt::format("{:.6g}", *v);

@@ -35,5 +35,11 @@ std::string format_ratio(std::optional<double> v);
 std::string status_cell(comparison::Status status);
 /// Text safe inside a table cell (pipes escaped, newlines flattened).
 std::string cell_text(std::string_view text);
+/// Free text from a case file (description, thesis reference) made inert for a markdown report:
+/// control characters become spaces, `&`, `<` and `>` HTML entities, and the punctuation that
+/// makes links, images, code, emphasis, headings and table cells (backslash, backtick, '*', '[',
+/// ']', '!', '#', '|') is backslash-escaped, so the text shows as written and never becomes
+/// active markdown or HTML.
+std::string inert_text(std::string_view text);
 
 }  // namespace reports

@@ -44,11 +44,16 @@ std::string types_where(const AtomTypes& types, bool fixed) {
   return out;
 }
 
-/// `text` with every non-ASCII byte replaced by '?': LAMMPS 2021 warns about UTF-8 input.
+/// `text` as printable ASCII for a deck comment: every non-ASCII byte (LAMMPS 2021 warns about
+/// UTF-8 input) and every control byte (a newline would end the comment and start a command) is
+/// replaced by '?', and quotes (LAMMPS' `"""` opens a multi-line string) by '\''. Case-file names
+/// are validated at load time; this keeps every string a deck comment shows inert regardless.
 std::string ascii(std::string_view text) {
   std::string out(text);
   for (char& c : out) {
-    if (static_cast<unsigned char>(c) > 0x7f) c = '?';
+    const auto u = static_cast<unsigned char>(c);
+    if (u > 0x7e || u < 0x20) c = '?';
+    if (c == '"') c = '\'';
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // The LAMMPS deck writer: explicit pair coefficients, exact η per type pair, frozen fixed
 // spheres, full-precision trace columns (no LAMMPS needed).
 #include <set>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -239,6 +240,36 @@ TEST(LammpsDeck, IsAPureFunctionOfItsInputsAndPlainAscii) {
   const std::string a = write_deck(mixed_scene(), settings());
   EXPECT_EQ(a, write_deck(mixed_scene(), settings()));
   for (const char c : a) EXPECT_LT(static_cast<unsigned char>(c), 0x80);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(LammpsDeck, NamesInCommentsStayCommentsWhateverTheyHold) {
+  // The loader refuses such names (cases/names.hpp); the deck writer keeps them inert anyway: a
+  // newline would end the comment and run `shell`, `"""` would swallow the rest of the deck.
+  cases::Scene scene = mixed_scene();
+  cases::WallSpec floor;
+  floor.name = "floor\nshell touch pwned\n#\"\"\" \r\x7f";
+  floor.normal = {0.0, 0.0, 1.0};
+  floor.point = {0.0, 0.0, -1.0};
+  scene.walls.push_back(floor);
+  const std::string deck = write_deck(scene, settings());
+  EXPECT_EQ(deck.find("\"\"\""), std::string::npos);
+  EXPECT_EQ(deck.find('\r'), std::string::npos);
+  EXPECT_EQ(deck.find('\x7f'), std::string::npos);
+  bool named = false;
+  std::istringstream lines(deck);
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_NE(line.rfind("shell", 0), 0u) << line;
+    if (line.find("floor") != std::string::npos) {
+      named = true;
+      EXPECT_EQ(line.rfind('#', 0), 0u) << "the name appears outside a comment: " << line;
+      EXPECT_NE(line.find("floor?shell touch pwned?#''' ??"), std::string::npos) << line;
+    }
+  }
+  EXPECT_TRUE(named) << "the wall's comment line is expected to name it";
 }
 
 }  // namespace
