@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "reports/markdown.hpp"
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
 #include "sweeps/sweep_spec.hpp"
@@ -115,7 +116,7 @@ std::string stored_ensembles_section(const std::vector<StoredEnsemble>& ensemble
       "error; above 2 (bold) the ensembles differ by more than their spread explains.\n\n";
   for (const auto& e : ensembles) {
     md += fmt::format("### `{}`\n\n", e.name);
-    if (!e.description.empty()) md += e.description + "\n\n";
+    if (!e.description.empty()) md += reports::inert_text(e.description) + "\n\n";
     if (!e.engines.empty()) {
       std::string names;
       for (const auto& n : e.engines) names += (names.empty() ? "" : ", ") + n;

@@ -197,7 +197,7 @@ std::vector<CurveFamily> curve_families(const SweepSpec& spec) {
 
 void write_sweep_report(const SweepResults& r, const std::filesystem::path& dir) {
   std::string md = fmt::format("# Sweep `{}`\n\n", r.spec.name);
-  if (!r.spec.description.empty()) md += r.spec.description + "\n\n";
+  if (!r.spec.description.empty()) md += reports::inert_text(r.spec.description) + "\n\n";
   md += fmt::format(
       "Case `{}`; {} points × {} seeds × {} engine(s) = {} rows in {:.1f} s{}. Reproduce with:\n\n```sh\n{}\n```\n\n",
       r.spec.case_file.string(), r.points.size(), r.spec.seeds.size(), r.engines.size(), r.rows.size(), r.seconds,
