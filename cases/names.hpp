@@ -17,6 +17,10 @@ inline constexpr std::size_t kMaxNameLength = 64;
 /// (docs/case-format.md, Names).
 [[nodiscard]] bool is_name(std::string_view text) noexcept;
 
+/// True when `text` has 1 to 64 characters, each a digit, '_', a lowercase letter or (when `upper`
+/// is set) an uppercase letter: the grammar of case names (lowercase) and material names.
+[[nodiscard]] bool is_identifier(std::string_view text, bool upper) noexcept;
+
 /// The string of `value`, or a load error naming the key when it is not a name (is_name); the
 /// message shows at most the first 64 characters of the offending value.
 [[nodiscard]] std::string read_name(const loader::Value& value);

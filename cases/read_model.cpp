@@ -67,16 +67,6 @@ void read_policies(const Table& model, dem::ModelChoice& choice) {
   }
 }
 
-/// True when `text` is non-empty and every character is a digit, '_', a lowercase letter, or
-/// (when `upper` is set) an uppercase letter.
-bool is_identifier(std::string_view text, bool upper) {
-  const auto allowed = [upper](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
-           (upper && c >= 'A' && c <= 'Z');
-  };
-  return !text.empty() && text.size() <= kMaxNameLength && std::all_of(text.begin(), text.end(), allowed);
-}
-
 /// The member of `choice` (const or not) holding the keyword of `slot`.
 template <class Choice>
 auto& keyword_field(Choice& choice, dem::Slot slot) {

@@ -339,13 +339,14 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
   if (out.python_cohesion) {
     // The per-step Python force acts between spheres only: a wall may take part only when its
     // material pairs with every particle material without cohesion (k_c = 0).
+    std::vector<bool> particle_material(n, false);
+    for (const auto& p : scene.particles) particle_material[p.material] = true;
     for (const auto& w : scene.walls) {
-      const bool cohesive_wall = std::any_of(scene.particles.begin(), scene.particles.end(), [&](const auto& p) {
-        return std::any_of(out.pairs.begin(), out.pairs.end(), [&](const YadePairParameters& q) {
-          return q.cohesive_stiffness != 0.0 && ((q.material_a == p.material && q.material_b == w.material) ||
-                                                 (q.material_b == p.material && q.material_a == w.material));
-        });
-      });
+      bool cohesive_wall = false;
+      for (std::size_t m = 0; m < n; ++m) {
+        const auto* linear = std::get_if<dem::LinearCohesion>(&table->law(m, w.material).cohesion);
+        cohesive_wall = cohesive_wall || (particle_material[m] && linear != nullptr && linear->stiffness != 0.0);
+      }
       if (cohesive_wall) {
         add_reason(out.reasons, "YADE driver: linear cohesion against plane walls is not mapped (the "
                                 "per-step Python force handles sphere pairs only; give the wall a "

@@ -2,6 +2,7 @@
 // The JKR law against its closed forms (thesis eq 3.34–3.35; docs/physics-cohesion.md), its
 // hysteresis, and the energy of a damped adhesive collision.
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <numbers>
@@ -52,36 +53,41 @@ JkrParameters random_pair(std::mt19937_64& rng) {
   return {modulus, radius, std::pow(10.0, -3.0 + 5.0 * u(rng))};
 }
 
+/// Calls check(p, a_c, u) for `count` random pairs from `seed`, u a uniform draw in [0, 1) from
+/// the same stream.
+template <class Check>
+void for_random_pairs(std::uint64_t seed, int count, Check check) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  for (int n = 0; n < count; ++n) {
+    const JkrParameters p = random_pair(rng);
+    check(p, jkr_critical_radius(p), [&] { return uniform(rng); });
+  }
+}
+
 TEST(JkrLaw, ContactRadiusOnSeededRandomPairsInvertsTheOverlapToRounding) {
   // Pairs nobody picked: E* over 4 decades, R* over 3, γ over 5; overlaps from just above δ_c
   // to 10⁴ |δ_c|. a(δ) must lie on the stable branch and invert eq 3.35 to a few ulps of the
-  // larger of its two terms; the a_c-taking form is the same function.
-  std::mt19937_64 rng(20261203);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (int n = 0; n < 2000; ++n) {
-    const JkrParameters p = random_pair(rng);
-    const double ac = jkr_critical_radius(p);
+  // larger of its two terms; the radius ratio the contact loop solves gives the same radius.
+  for_random_pairs(20261203, 2000, [](const JkrParameters& p, double ac, auto u) {
     const double dc = jkr_rupture_overlap(p);
-    const double delta = dc + std::abs(dc) * std::pow(10.0, -8.0 + 12.0 * u(rng));
+    const double delta = dc + std::abs(dc) * std::pow(10.0, -8.0 + 12.0 * u());
     const double a = jkr_contact_radius(delta, p);
-    ASSERT_EQ(a, jkr_contact_radius(delta, p, ac));
+    const double y = jkr_radius_ratio(delta, p, ac);
+    ASSERT_EQ(a, ac * y * y);
     ASSERT_GE(a, ac);
     const double scale = a * a / p.reduced_radius;  // the larger term of eq 3.35 near the root
     EXPECT_NEAR(jkr_overlap(a, p), delta, 64.0 * std::numeric_limits<double>::epsilon() * scale)
         << "E* " << p.effective_modulus << " R* " << p.reduced_radius << " γ " << p.surface_energy
         << " δ " << delta;
-  }
+  });
 }
 
 TEST(JkrLaw, ForceAndEnergyFromTheRadiusRatioEqualTheRadiusForms) {
   // F = πγR*(y⁶/3 − 2y³) and U = πγa_c²(2y¹⁰/15 − 4y⁷/3 + 2y⁴) are eq 3.34 and the energy with
   // a = a_c y², written without a square root: the contact loop's form.
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  for (int n = 0; n < 2000; ++n) {
-    const JkrParameters p = random_pair(rng);
-    const double ac = jkr_critical_radius(p);
-    const double y = 1.0 + 4.0 * u(rng);
+  for_random_pairs(11, 2000, [](const JkrParameters& p, double ac, auto u) {
+    const double y = 1.0 + 4.0 * u();
     const double a = ac * y * y;
     const double scale_f = jkr_pulloff_force(p) * std::pow(y, 6);
     EXPECT_NEAR(jkr_force_at_ratio(y, p), jkr_force(a, p), 1e-13 * scale_f);
@@ -89,20 +95,17 @@ TEST(JkrLaw, ForceAndEnergyFromTheRadiusRatioEqualTheRadiusForms) {
     EXPECT_NEAR(jkr_energy_at_ratio(y, ac, p), jkr_energy(a, p), 1e-13 * scale_u);
     const double delta = jkr_overlap(a, p);
     EXPECT_NEAR(jkr_radius_ratio(delta, p, ac), y, 1e-12 * y);
-  }
+  });
   const JkrParameters p = benchmark();
   EXPECT_NEAR(jkr_force_at_ratio(1.0, p), -5.0 / 9.0 * jkr_pulloff_force(p), 1e-15 * jkr_pulloff_force(p));
   EXPECT_NEAR(jkr_force_at_ratio(std::cbrt(3.0), p), -jkr_pulloff_force(p), 1e-14 * jkr_pulloff_force(p));
 }
 
 TEST(JkrLaw, BreakOverlapsFromTheCriticalRadiusEqualTheCubeRootForms) {
-  std::mt19937_64 rng(7);
-  for (int n = 0; n < 1000; ++n) {
-    const JkrParameters p = random_pair(rng);
-    const double ac = jkr_critical_radius(p);
+  for_random_pairs(7, 1000, [](const JkrParameters& p, double ac, auto) {
     EXPECT_NEAR(jkr_rupture_overlap_at(ac, p), jkr_rupture_overlap(p), 1e-14 * std::abs(jkr_rupture_overlap(p)));
     EXPECT_NEAR(jkr_pulloff_overlap_at(ac, p), jkr_pulloff_overlap(p), 1e-13 * std::abs(jkr_pulloff_overlap(p)));
-  }
+  });
 }
 
 TEST(JkrLaw, StableBranchIsTheLargerRootWhereTensionPeaksAtDeltaF) {

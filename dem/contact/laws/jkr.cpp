@@ -50,20 +50,16 @@ constexpr std::array<JkrStartNode, kJkrStartSize> kJkrStartTable = jkr_start_tab
 }  // namespace
 
 double jkr_contact_radius(double overlap, const JkrParameters& p) noexcept {
-  return jkr_contact_radius(overlap, p, jkr_critical_radius(p));
-}
-
-double jkr_contact_radius(double overlap, const JkrParameters& p, double critical_radius) noexcept {
-  const double y = jkr_radius_ratio(overlap, p, critical_radius);
-  return critical_radius * y * y;
+  const double a_c = jkr_critical_radius(p);
+  const double y = jkr_radius_ratio(overlap, p, a_c);
+  return a_c * y * y;
 }
 
 double jkr_radius_ratio(double overlap, const JkrParameters& p, double critical_radius) noexcept {
   // Dimensionless form: with y = √(a/a_c) eq 3.35 reads g(y) = y⁴ − 4y − D = 0, D = δR*/a_c²,
   // and g is increasing on the stable branch y ≥ 1, with g(1) = −3 − D ≤ 0 whenever δ ≥ δ_c.
   // With y = 1 + t it reads 6t² + 4t³ + t⁴ = c, c = D + 3 ≥ 0.
-  const double a_c = critical_radius;
-  const double target = overlap * p.reduced_radius / (a_c * a_c);
+  const double target = overlap * p.reduced_radius / (critical_radius * critical_radius);
   const auto g = [target](double y) { return y * y * y * y - 4.0 * y - target; };
   const auto newton = [&g](double y) { return y - g(y) / (4.0 * (y * y * y - 1.0)); };
   const double c = target + 3.0;

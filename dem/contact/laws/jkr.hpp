@@ -110,12 +110,9 @@ struct JkrParameters {
 /// below δ_c gives a_c.
 [[nodiscard]] double jkr_contact_radius(double overlap, const JkrParameters& p) noexcept;
 
-/// The same, given a_c = jkr_critical_radius(p) (the contact loop has it already).
-[[nodiscard]] double jkr_contact_radius(double overlap, const JkrParameters& p,
-                                        double critical_radius) noexcept;
-
-/// y = √(a/a_c) on the stable branch (y ≥ 1) for overlap δ, given a_c: what jkr_contact_radius
-/// solves for; the force and energy below read it without a square root or a division.
+/// y = √(a/a_c) on the stable branch (y ≥ 1) for overlap δ, given a_c = jkr_critical_radius(p):
+/// what jkr_contact_radius solves for; the contact loop, having a_c already, calls it directly, and
+/// the force and energy below read it without a square root or a division.
 [[nodiscard]] double jkr_radius_ratio(double overlap, const JkrParameters& p,
                                       double critical_radius) noexcept;
 
