@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -26,12 +28,23 @@ class CaseError : public std::runtime_error {
   std::string problem_;
 };
 
-/// Loads and validates the case file at `path` into an explicit Scene. Throws CaseError on
-/// the first problem (syntax, unknown key, missing key, wrong type, unphysical value,
-/// inconsistent references). Non-fatal findings go to Scene::warnings.
-Scene load_case(const std::filesystem::path& path);
+/// Limits of one load beyond those fixed in cases/limits.hpp (docs/case-format.md, "Limits").
+struct LoadOptions {
+  /// Most bytes of output a run of the case may hold in memory (estimate_output_bytes); empty:
+  /// the machine's physical memory (physical_memory_bytes).
+  std::optional<std::uint64_t> max_output_bytes;
+};
 
-/// As load_case, from text already in memory; `path` names it in messages.
-Scene load_case_text(std::string_view text, const std::string& path);
+/// Loads and validates the case file at `path` into an explicit Scene. The file is untrusted: it
+/// must be a regular file of at most kMaxCaseFileBytes (read_case_file). Throws CaseError on the
+/// first problem (unreadable or oversized file, syntax, unknown key, missing key, wrong type,
+/// unphysical value, inconsistent references, a derived quantity out of range, a run too long or
+/// whose output would not fit `options.max_output_bytes`). Non-fatal findings go to
+/// Scene::warnings.
+Scene load_case(const std::filesystem::path& path, const LoadOptions& options = {});
+
+/// As load_case, from text already in memory (at most kMaxCaseFileBytes); `path` names it in
+/// messages.
+Scene load_case_text(std::string_view text, const std::string& path, const LoadOptions& options = {});
 
 }  // namespace cases

@@ -8,6 +8,7 @@
 
 #include "cases/scene.hpp"
 #include "cases/toml_reader.hpp"
+#include "dem/contact/pair_table.hpp"
 #include "dem/contact/registry.hpp"
 
 // The case loader's section readers, one per top-level table of a case file, in the order
@@ -44,8 +45,19 @@ void read_integration(const Table& root, Scene& scene);
 void read_compare(const Table& root, Scene& scene);
 /// Reads the optional [output] table (needs the particles, the duration and compare.pair).
 void read_output(const Table& root, Scene& scene);
-/// Checks the scene as a whole: initial overlaps, step count, buildable contact model.
+/// Checks the scene as a whole: sphere masses, initial overlaps, buildable contact model, time
+/// scales (check_sphere_masses, check_time_scales).
 void check_scene(const Table& root, const Scene& scene);
+/// Checks every sphere's mass and moment of inertia: finite and within [kMinDerived,
+/// kMaxDerived]; names the radius (or the population's size), or the density when it is at fault.
+void check_sphere_masses(const Table& root, const Scene& scene);
+/// Checks the collision stiffness and contact time of every pair that can touch, the run's time
+/// step and (for "auto" or a launch) its step count, and each formation stage's step count.
+void check_time_scales(const Table& root, const Scene& scene, const dem::PairTable& table);
+
+/// The case-file entry particle i comes from: its [[particles]] entry, or the [[populations]]
+/// entry that generated it (then `note` says so).
+Value origin_entry(const Table& root, const Scene& scene, std::size_t i, std::string& note);
 
 /// Index of the material a value names; throws naming the value when there is none.
 std::size_t material_index(const Value& name, const Scene& scene);
@@ -55,5 +67,16 @@ const std::string& slot_keyword(const dem::ModelChoice& choice, dem::Slot slot);
 std::set<std::string_view> used_properties(const dem::ModelChoice& choice);
 /// "normal = linear, damping = none, …" for messages.
 std::string describe_model(const dem::ModelChoice& choice);
+
+/// |v| = √(x² + y² + z²); std::hypot when the sum of squares overflows or underflows (1e300
+/// components must not give an infinite or zero length), so ordinary vectors keep their bits.
+[[nodiscard]] double length(const Vector3& v) noexcept;
+/// A velocity [m/s]: a 3-vector of finite numbers whose magnitude is below kSpeedOfLight.
+[[nodiscard]] Vector3 read_velocity(const Value& value);
+/// Throws at `value` when `speed` [m/s] is not below kSpeedOfLight; `what` names it ("speed").
+void check_speed(const Value& value, double speed, std::string_view what);
+/// Throws at `value` (an angular velocity [rad/s]) when the surface speed |ω| r of a sphere of
+/// radius r is not below kSpeedOfLight.
+void check_surface_speed(const Value& value, const Vector3& angular_velocity, double radius);
 
 }  // namespace cases::loader

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "cases/excerpt.hpp"
+
 namespace cases {
 
 namespace {
@@ -31,13 +33,8 @@ bool is_identifier(std::string_view text, bool upper) noexcept {
 std::string read_name(const loader::Value& value) {
   std::string text = value.string();
   if (!is_name(text)) {
-    std::string shown;
-    for (const char c : text.substr(0, kMaxNameLength)) {
-      const auto u = static_cast<unsigned char>(c);
-      shown += u < 0x20 || u == 0x7f ? fmt::format("\\x{:02x}", u) : std::string(1, c);
-    }
-    value.fail(fmt::format("'{}'{} is not a name: 1 to {} characters from A-Z, a-z, 0-9, '_', '-' and '.'",
-                           shown, text.size() > kMaxNameLength ? "…" : "", kMaxNameLength));
+    value.fail(fmt::format("'{}' is not a name: 1 to {} characters from A-Z, a-z, 0-9, '_', '-' and '.'",
+                           excerpt(text, kMaxNameLength), kMaxNameLength));
   }
   return text;
 }

@@ -22,7 +22,7 @@ inline constexpr std::size_t kMaxNameLength = 64;
 [[nodiscard]] bool is_identifier(std::string_view text, bool upper) noexcept;
 
 /// The string of `value`, or a load error naming the key when it is not a name (is_name); the
-/// message shows at most the first 64 characters of the offending value.
+/// message shows at most the first 64 bytes of the offending value (cases::excerpt).
 [[nodiscard]] std::string read_name(const loader::Value& value);
 
 }  // namespace cases

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cases/catalogue.hpp"
+#include "cases/excerpt.hpp"
 #include "cases/loader_sections.hpp"
 #include "cases/suggestion.hpp"
 #include "cases/trace.hpp"
@@ -79,7 +80,7 @@ std::string read_reference(const Table& table, const std::vector<std::string>& e
   const std::string name = value->string();
   if (contains(engines, name)) return name;
   const std::vector<std::string_view> listed(engines.begin(), engines.end());
-  value->fail(fmt::format("must be one of compare.engines ({}), got '{}'{}", join(listed), name,
+  value->fail(fmt::format("must be one of compare.engines ({}), got '{}'{}", join(listed), excerpt(name),
                           did_you_mean(name, listed)));
 }
 
@@ -157,7 +158,7 @@ std::map<std::string, Tolerance> read_tolerances(const Table& compare,
   const std::vector<std::string_view> known = metric_names();
   for (const auto& [name, value] : section->table().entries()) {
     if (!contains(known, name)) {
-      value.fail(fmt::format("unknown metric '{}'{} (known: {})", name, did_you_mean(name, known),
+      value.fail(fmt::format("unknown metric '{}'{} (known: {})", excerpt(name), did_you_mean(name, known),
                              join(known)));
     }
     if (!contains(metrics, name)) {
@@ -181,9 +182,11 @@ std::vector<std::size_t> read_trace_particles(const Table& table,
     if (out.size() > kDefaultTracedParticles) out.clear();
     return out;
   }
+  std::vector<bool> listed(particles.size(), false);  // not a search of `out`: the list may be long
   for (const Value& item : value->elements()) {
     const std::size_t index = item.index(particles.size(), "particles");
-    if (contains(out, index)) item.fail(fmt::format("particle {} is listed twice", index));
+    if (listed[index]) item.fail(fmt::format("particle {} is listed twice", index));
+    listed[index] = true;
     out.push_back(index);
   }
   return out;
@@ -226,9 +229,10 @@ std::vector<ParticlePair> read_trace_walls(const Table& table, const Scene& scen
     if (scene.compare.wall_contact) out.push_back(*scene.compare.wall_contact);
     return out;
   }
+  std::set<ParticlePair> seen;
   for (const Value& item : value->elements()) {
     const ParticlePair pw = read_wall_contact(item, scene);
-    if (contains(out, pw)) item.fail(fmt::format("the contact [{}, {}] is listed twice", pw.first, pw.second));
+    if (!seen.insert(pw).second) item.fail(fmt::format("the contact [{}, {}] is listed twice", pw.first, pw.second));
     out.push_back(pw);
   }
   return out;

@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "cases/excerpt.hpp"
+#include "cases/limits.hpp"
 #include "cases/loader_sections.hpp"
 #include "cases/names.hpp"
 #include "cases/suggestion.hpp"
@@ -151,13 +153,18 @@ dem::MaterialProperties read_material(const std::string& name, const Value& entr
                                       const dem::ModelChoice& choice) {
   if (!is_identifier(name, true)) {
     entry.fail(fmt::format("material name '{}' may contain only letters, digits and '_' (at most {} characters)",
-                           name.substr(0, kMaxNameLength), kMaxNameLength));
+                           excerpt(name, kMaxNameLength), kMaxNameLength));
   }
   const Table table = entry.table();
   table.allow_only(property_keys({"density"}, kMaterialField));
   dem::MaterialProperties material;
   material.name = name;
-  material.density = property_value(table.require("density"), dem::density_range());
+  const Value density = table.require("density");
+  material.density = property_value(density, dem::density_range());
+  if (material.density > kMaxDensity) {
+    density.fail(fmt::format("must be at most {:g} kg/m³ (denser than an atomic nucleus), got {}", kMaxDensity,
+                             material.density));
+  }
   read_properties(table, material, kMaterialField, choice);
   return material;
 }
@@ -211,7 +218,7 @@ std::size_t material_index(const Value& name, const Scene& scene) {
   if (const auto index = find_material(scene, text)) return *index;
   std::vector<std::string_view> known;
   for (const auto& m : scene.materials) known.push_back(m.name);
-  name.fail(fmt::format("unknown material '{}'{} (defined: {})", text, did_you_mean(text, known),
+  name.fail(fmt::format("unknown material '{}'{} (defined: {})", excerpt(text), did_you_mean(text, known),
                         join(known)));
 }
 
@@ -223,7 +230,7 @@ void read_case_section(const Table& root, Scene& scene) {
   if (!is_identifier(scene.name, false)) {
     name.fail(
         fmt::format("'{}' may contain only lowercase letters a-z, digits 0-9 and '_' (at most {} characters)",
-                    scene.name.substr(0, kMaxNameLength), kMaxNameLength));
+                    excerpt(scene.name, kMaxNameLength), kMaxNameLength));
   }
   if (const auto v = section.find("description")) scene.description = v->string();
   if (const auto v = section.find("thesis")) scene.thesis_reference = v->string();
@@ -261,6 +268,9 @@ void read_materials(const Table& root, Scene& scene) {
   const Table materials = root.require("materials", "table [materials.NAME]").table();
   const auto entries = materials.entries();
   if (entries.empty()) materials.fail("must define at least one material ([materials.NAME])");
+  if (entries.size() > kMaxMaterials) {
+    materials.fail(fmt::format("defines {} materials, more than the limit of {}", entries.size(), kMaxMaterials));
+  }
   for (const auto& [name, entry] : entries) {
     scene.materials.push_back(read_material(name, entry, scene.model));
   }

@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "cases/excerpt.hpp"
+#include "cases/limits.hpp"
 #include "cases/loader_sections.hpp"
 
 namespace cases::loader {
@@ -35,9 +37,6 @@ constexpr std::array<std::pair<std::string_view, dem::LeapfrogStart>, 2> kLeapfr
     {"half_kick", dem::LeapfrogStart::half_kick},
     {"given_is_half_step", dem::LeapfrogStart::given_is_half_step},
 }};
-
-/// Largest number of time steps a case may ask for.
-constexpr double kMaxSteps = 1.0e9;
 
 /// Valid range of integration.implicit_tolerance: (0, 1e-3].
 constexpr dem::ValueRange kImplicitToleranceRange{0.0, 1.0e-3, true, false};
@@ -85,7 +84,7 @@ std::vector<MotionSegmentSpec> read_motion(const Value& value) {
     const Table seg = items[k].table();
     seg.allow_only(kSegmentKeys);
     MotionSegmentSpec m;
-    m.velocity = seg.require("velocity").vector3();
+    m.velocity = read_velocity(seg.require("velocity"));
     const bool last = k + 1 == items.size();
     if (const auto d = seg.find("duration")) {
       if (last) d->fail("the last segment lasts until the end of the run; remove its duration");
@@ -113,8 +112,11 @@ ParticleSpec read_particle(const Table& table, const Scene& scene) {
     }
   }
   p.position = table.require("position").vector3();
-  if (const auto v = table.find("velocity")) p.velocity = v->vector3();
-  if (const auto v = table.find("angular_velocity")) p.angular_velocity = v->vector3();
+  if (const auto v = table.find("velocity")) p.velocity = read_velocity(*v);
+  if (const auto v = table.find("angular_velocity")) {
+    p.angular_velocity = v->vector3();
+    check_surface_speed(*v, p.angular_velocity, p.radius);
+  }
   if (const auto v = table.find("fixed")) p.fixed = v->boolean();
   if (const auto v = table.find("charge")) p.charge = v->number();
   if (const auto v = table.find("motion")) {
@@ -189,6 +191,9 @@ void read_particles(const Table& root, Scene& scene) {
   }
   const std::vector<Value> entries = section.elements();
   if (entries.empty()) section.fail("must list at least one particle ([[particles]])");
+  if (entries.size() > kMaxParticles) {
+    section.fail(fmt::format("lists {} particles, more than the limit of {}", entries.size(), kMaxParticles));
+  }
   for (const Value& entry : entries) scene.particles.push_back(read_particle(entry.table(), scene));
 }
 
@@ -202,7 +207,7 @@ void read_integration(const Table& root, Scene& scene) {
   if (duration.node().is_string()) {
     if (duration.string() != "launch") {
       duration.fail(fmt::format("expected a number of seconds > 0, or \"launch\" (set by a launch stage, eq 5.1), "
-                                "got string \"{}\"", duration.string()));
+                                "got string \"{}\"", excerpt(duration.string())));
     }
     const bool launches = std::any_of(scene.stages.begin(), scene.stages.end(), [](const StageSpec& st) {
       return std::holds_alternative<LaunchStageSpec>(st.action);

@@ -3,12 +3,14 @@
 // distributions), appended to the explicit [[particles]] in file order.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "cases/generators/population.hpp"
+#include "cases/limits.hpp"
 #include "cases/loader_sections.hpp"
 #include "cases/names.hpp"
 
@@ -131,8 +133,13 @@ PopulationSpec read_population(const Table& t, const Scene& scene) {
     if (!random) v->fail("applies to arrangement = \"random\" only");
     p.max_attempts = static_cast<std::size_t>(v->integer(1, 100'000'000));
   }
-  if (const auto v = t.find("velocity")) p.velocity = v->vector3();
-  if (const auto v = t.find("velocity_jitter")) p.velocity_jitter = v->number(non_negative_range());
+  if (const auto v = t.find("velocity")) p.velocity = read_velocity(*v);
+  if (const auto v = t.find("velocity_jitter")) {
+    p.velocity_jitter = v->number(non_negative_range());
+    // The fastest sphere moves at most |velocity| + √3 jitter.
+    check_speed(*v, length(p.velocity) + std::sqrt(3.0) * p.velocity_jitter,
+                "largest speed |velocity| + √3 velocity_jitter");
+  }
   if (const auto v = t.find("fixed")) p.fixed = v->boolean();
   if (p.fixed && (p.velocity[0] != 0.0 || p.velocity[1] != 0.0 || p.velocity[2] != 0.0 || p.velocity_jitter > 0.0)) {
     t.fail("fixed", "a fixed population must be at rest (no velocity, no velocity_jitter)");
@@ -156,7 +163,8 @@ void read_populations(const Table& root, Scene& scene) {
     const double ratio = scene.materials[spec.material].interaction_ratio.value_or(1.0);
     scene.population_first.push_back(scene.particles.size());
     try {
-      std::vector<ParticleSpec> made = generate_population(spec, scene.particles, ratio);
+      std::vector<ParticleSpec> made =
+          generate_population(spec, scene.particles, ratio, kMaxParticles - scene.particles.size());
       scene.particles.insert(scene.particles.end(), made.begin(), made.end());
     } catch (const PopulationError& e) {
       const std::string sub = e.key();

@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "cases/excerpt.hpp"
+#include "cases/limits.hpp"
 #include "cases/loader_sections.hpp"
 #include "cases/names.hpp"
 
@@ -32,7 +34,7 @@ std::size_t wall_index(const Value& v, const Scene& scene) {
     }
     std::string known;
     for (const WallSpec& w : scene.walls) known += (known.empty() ? "'" : ", '") + w.name + "'";
-    v.fail(fmt::format("no wall is named '{}' (walls: {})", name, known));
+    v.fail(fmt::format("no wall is named '{}' (walls: {})", excerpt(name), known));
   }
   return v.index(scene.walls.size(), "walls");
 }
@@ -68,15 +70,25 @@ LaunchStageSpec read_launch(const Table& t, const Scene& scene) {
   LaunchStageSpec l;
   const Value wall = t.require("wall");
   l.wall = wall_index(wall, scene);
-  l.speed = t.require("speed").number(positive_range());
+  const Value speed = t.require("speed");
+  l.speed = speed.number(positive_range());
+  check_speed(speed, l.speed, "launch speed");
   l.angle = t.require("angle").number(dem::ValueRange{0.0, 90.0, true, false});
   const WallSpec& w = scene.walls[l.wall];
   const Value direction = t.require("direction");
   Vector3 d = direction.vector3();
+  // A direction whose squares overflow or underflow is scaled to unit length first, so that the
+  // projection below stays finite (ordinary ones keep their bits).
+  if (const double squares = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]; !std::isnormal(squares)) {
+    const double n = length(d);
+    if (n > 0.0) {
+      for (double& c : d) c /= n;
+    }
+  }
   // The in-plane part of `direction`: its component along the wall normal is removed.
   const double along = d[0] * w.normal[0] + d[1] * w.normal[1] + d[2] * w.normal[2];
   for (std::size_t k = 0; k < 3; ++k) d[k] -= along * w.normal[k];
-  const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const double norm = length(d);
   if (!(norm > 1e-9)) {
     direction.fail(fmt::format("has no component in the plane of wall '{}' (normal [{}, {}, {}]); give a "
                                "direction along the wall",

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/limits.hpp"
 #include "cases/loader_sections.hpp"
 #include "cases/names.hpp"
 
@@ -28,12 +29,17 @@ constexpr auto kFluidKeys = std::to_array<std::string_view>(
 constexpr auto kPlugKeys = std::to_array<std::string_view>({"speed", "ramp_time", "zones"});
 constexpr auto kZoneKeys = std::to_array<std::string_view>({"min", "max", "direction"});
 
-/// A nonzero vector scaled to unit length; throws naming the value when it is zero.
+/// A nonzero vector scaled to unit length; throws naming the value when it is zero. Its length
+/// does not overflow (length()), so components of 1e300 do not give a zero vector.
 Vector3 unit_vector(const Value& value) {
   const Vector3 v = value.vector3();
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  const double n = length(v);
   if (!(n > 0.0)) value.fail("must be a nonzero vector");
-  return {v[0] / n, v[1] / n, v[2] / n};
+  const Vector3 u{v[0] / n, v[1] / n, v[2] / n};
+  if (!(std::fabs(length(u) - 1.0) < 1e-12)) {
+    value.fail("cannot be scaled to unit length (its components span too many orders of magnitude)");
+  }
+  return u;
 }
 
 WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
@@ -43,7 +49,7 @@ WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
   w.point = t.require("point").vector3();
   w.normal = unit_vector(t.require("normal"));
   w.material = material_index(t.require("material"), scene);
-  if (const auto v = t.find("velocity")) w.velocity = v->vector3();
+  if (const auto v = t.find("velocity")) w.velocity = read_velocity(*v);
   return w;
 }
 
@@ -103,12 +109,14 @@ FluidSpec read_fluid(const Table& t) {
   if (const auto v = t.find("buoyancy")) f.buoyancy = v->boolean();
   if (const auto v = t.find("virtual_mass")) f.virtual_mass = v->boolean();
   if (const auto v = t.find("pressure_gradient")) f.pressure_gradient = v->vector3();
-  if (const auto v = t.find("velocity")) f.velocity = v->vector3();
+  if (const auto v = t.find("velocity")) f.velocity = read_velocity(*v);
   if (const auto v = t.find("plug_flow")) {
     if (t.has("velocity")) v->fail("give either a uniform fluid velocity or plug_flow, not both");
     const Table plug = v->table();
     plug.allow_only(kPlugKeys);
-    f.plug_speed = plug.require("speed").number(positive_range());
+    const Value speed = plug.require("speed");
+    f.plug_speed = speed.number(positive_range());
+    check_speed(speed, f.plug_speed, "plug speed");
     if (const auto r = plug.find("ramp_time")) f.ramp_time = r->number(dem::ValueRange{0.0, std::numeric_limits<double>::infinity(), false, true});
     f.zones = read_zones(plug.require("zones"));
   }
@@ -128,6 +136,10 @@ void read_walls(const Table& root, Scene& scene) {
       scene.walls.push_back(read_plane(t, scene, index));
     } else {
       for (auto& w : read_box(t, scene, index)) scene.walls.push_back(std::move(w));
+    }
+    if (scene.walls.size() > kMaxWalls) {
+      entry.fail(fmt::format("makes {} plane walls (a box counts its faces), more than the limit of {}",
+                             scene.walls.size(), kMaxWalls));
     }
     ++index;
   }

@@ -33,6 +33,11 @@ std::optional<std::string_view> closest_match(std::string_view word,
   std::optional<std::string_view> best;
   std::size_t best_distance = kMaxDistance + 1;
   for (const std::string_view candidate : candidates) {
+    // The distance is at least the difference in length: skip the O(|a|·|b|) table when that
+    // alone rules the candidate out (a case file may hold a key of megabytes).
+    const std::size_t gap = word.size() > candidate.size() ? word.size() - candidate.size()
+                                                           : candidate.size() - word.size();
+    if (gap > kMaxDistance) continue;
     const std::size_t distance = edit_distance(word, candidate);
     if (distance < best_distance) {
       best = candidate;

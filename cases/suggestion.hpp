@@ -13,7 +13,8 @@ namespace cases {
 /// neighbouring characters each cost 1 ("restitutoin" is 1 away from "restitution").
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
-/// The candidate closest to `word` when it is at most 2 edits away (first one on a tie).
+/// The candidate closest to `word` when it is at most 2 edits away (first one on a tie). Costs
+/// O(|word|·|candidate|) only for candidates within 2 characters of the word's length.
 std::optional<std::string_view> closest_match(std::string_view word,
                                               std::span<const std::string_view> candidates);
 

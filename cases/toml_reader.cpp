@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "cases/case_loader.hpp"
+#include "cases/excerpt.hpp"
 #include "cases/suggestion.hpp"
 
 namespace cases::loader {
@@ -42,8 +43,11 @@ bool earlier(const toml::source_position& a, const toml::source_position& b) noe
 
 std::string located_message(std::string_view file, std::string_view key, std::string_view text,
                             int line, int column) {
-  if (line <= 0) return fmt::format("{}: {}: {}", file, key, text);
-  return fmt::format("{}:{}:{}: {}: {}", file, line, column, key, text);
+  const std::string shown_file = excerpt(file, kMaxEchoedProblem);
+  const std::string shown_key = excerpt(key, kMaxEchoedKey);
+  const std::string shown_text = excerpt(text, kMaxEchoedProblem);
+  if (line <= 0) return fmt::format("{}: {}: {}", shown_file, shown_key, shown_text);
+  return fmt::format("{}:{}:{}: {}: {}", shown_file, line, column, shown_key, shown_text);
 }
 
 void Diagnostics::fail(const std::string& key, const std::string& problem,
@@ -71,7 +75,7 @@ std::string requirement(const dem::ValueRange& range) {
 
 std::string describe(const toml::node& node) {
   if (node.is_table() || node.is_array()) return std::string(type_name(node.type()));
-  if (const auto* s = node.as_string()) return fmt::format("string \"{}\"", s->get());
+  if (const auto* s = node.as_string()) return fmt::format("string \"{}\"", excerpt(s->get()));
   std::ostringstream os;
   node.visit([&os](const auto& v) { os << v; });
   return fmt::format("{} {}", type_name(node.type()), os.str());
@@ -133,7 +137,7 @@ std::string Value::string() const {
 std::string Value::keyword(std::span<const std::string_view> known, std::string_view what) const {
   std::string word = string();
   if (std::find(known.begin(), known.end(), word) == known.end()) {
-    fail(fmt::format("unknown {} '{}'{} (known: {})", what, word, did_you_mean(word, known),
+    fail(fmt::format("unknown {} '{}'{} (known: {})", what, excerpt(word), did_you_mean(word, known),
                      join(known)));
   }
   return word;
@@ -232,8 +236,8 @@ void Table::allow_only(std::span<const std::string_view> known) const {
   if (first == nullptr) return;
   const std::string suggestion = did_you_mean(first->str(), known);
   const std::string problem =
-      suggestion.empty() ? fmt::format("unknown key '{}' (known: {})", first->str(), join(known))
-                         : fmt::format("unknown key '{}'{}", first->str(), suggestion);
+      suggestion.empty() ? fmt::format("unknown key '{}' (known: {})", excerpt(first->str()), join(known))
+                         : fmt::format("unknown key '{}'{}", excerpt(first->str()), suggestion);
   diag_->fail(key_of(first->str()), problem, first->source());
 }
 

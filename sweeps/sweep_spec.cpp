@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "cases/case_file.hpp"
 #include "cases/case_loader.hpp"
 #include "cases/catalogue.hpp"
 #include "cases/toml_reader.hpp"
-#include "support/text_file.hpp"
 
 namespace sweeps {
 namespace {
@@ -39,13 +39,8 @@ void check_axis_key(const Value& v, const std::string& key) {
 }  // namespace
 
 SweepSpec load_sweep(const std::filesystem::path& file) {
-  std::string text;
-  try {
-    text = support::read_file(file);
-  } catch (const std::runtime_error& e) {
-    throw cases::CaseError(file.string(), "(file)", e.what());
-  }
-  return load_sweep_text(text, file);
+  // Untrusted like a case file: a regular file of bounded size (cases/case_file.hpp).
+  return load_sweep_text(cases::read_case_file(file), file);
 }
 
 SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& path) {

@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <numeric>
 #include <unordered_map>
@@ -90,9 +91,25 @@ void bounds(const RegionSpec& g, Vector3& lo, Vector3& hi) {
   }
 }
 
+/// Candidate positions a lattice fill may examine per sphere it may make, and in all besides: a
+/// cylinder holds π/4 of the sites of its bounding box, and only the first and last rows of a
+/// chord are examined outside it.
+constexpr std::uint64_t kLatticeVisitsPerSphere = 3;
+/// See kLatticeVisitsPerSphere.
+constexpr std::uint64_t kLatticeVisitsSlack = 1'000'000;
+
+/// Tries random insertion may make per sphere on average before it gives up (besides one sphere's
+/// max_attempts): near jamming every placement costs more, and ten million spheres with
+/// max_attempts = 10⁸ must not keep the loader busy for hours.
+constexpr std::uint64_t kRandomTriesPerSphere = 100;
+
 /// Lattice sites of pitch a for spheres of radius r inside the region, bottom layer first (along
-/// z for a box, along the axis for a cylinder), then by row and column.
-std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double a, double r) {
+/// z for a box, along the axis for a cylinder), then by row and column; at most `wanted` of them
+/// (the first ones in that order). A row of a cylinder is walked only along its chord (from two
+/// pitches before to two after; inside() still decides each site). Throws PopulationError after
+/// `max_visits` candidate positions: a pitch too fine for the region.
+std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double a, double r, std::size_t wanted,
+                                   std::uint64_t max_visits) {
   Vector3 lo;
   Vector3 hi;
   bounds(g, lo, hi);
@@ -104,17 +121,36 @@ std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double
   const double row = hcp ? a * std::sqrt(3.0) / 2.0 : a;
   const double layer = hcp ? a * std::sqrt(2.0 / 3.0) : a;
   std::vector<Vector3> sites;
-  for (int k = 0;; ++k) {
-    const double h = lo[up] + r + k * layer;
+  std::uint64_t visits = 0;
+  for (std::int64_t k = 0; sites.size() < wanted; ++k) {
+    const double h = lo[up] + r + static_cast<double>(k) * layer;
     if (h + r > hi[up] + eps) break;
     const bool b_layer = hcp && k % 2 == 1;
-    for (int j = 0;; ++j) {
-      const double y = lo[along] + r + j * row + (b_layer ? a * std::sqrt(3.0) / 6.0 : 0.0);
+    for (std::int64_t j = 0; sites.size() < wanted; ++j) {
+      const double y = lo[along] + r + static_cast<double>(j) * row + (b_layer ? a * std::sqrt(3.0) / 6.0 : 0.0);
       if (y + r > hi[along] + eps) break;
       const double offset = (hcp && j % 2 == 1 ? 0.5 * a : 0.0) + (b_layer ? 0.5 * a : 0.0);
-      for (int i = 0;; ++i) {
-        const double x = lo[across] + r + offset + i * a;
-        if (x + r > hi[across] + eps) break;
+      const double x0 = lo[across] + r + offset;
+      std::int64_t first = 0;
+      double last = std::numeric_limits<double>::infinity();
+      if (g.shape == RegionSpec::Shape::cylinder) {
+        const double dy = y - g.base[along];
+        const double reach = g.radius + eps - r;
+        const double chord2 = reach * reach - dy * dy;
+        if (!(chord2 >= 0.0)) continue;  // the row passes beside the cylinder
+        const double half = std::sqrt(chord2);
+        const double skip = std::floor((g.base[across] - half - x0) / a) - 2.0;
+        if (skip > 0.0 && skip < 1e15) first = static_cast<std::int64_t>(skip);
+        last = g.base[across] + half + 2.0 * a;
+      }
+      for (std::int64_t i = first; sites.size() < wanted; ++i) {
+        const double x = x0 + static_cast<double>(i) * a;
+        if (x + r > hi[across] + eps || x > last) break;
+        if (++visits > max_visits) {
+          throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m examined {} positions in the "
+                                                       "region and found {} sites: the pitch is too fine for the region",
+                                                       a, max_visits, sites.size()));
+        }
         Vector3 p{};
         p[up] = h;
         p[along] = y;
@@ -156,8 +192,14 @@ class OverlapGrid {
 
  private:
   [[nodiscard]] std::array<std::int64_t, 3> cell_of(const Vector3& x) const {
-    return {static_cast<std::int64_t>(std::floor(x[0] / cell_)), static_cast<std::int64_t>(std::floor(x[1] / cell_)),
-            static_cast<std::int64_t>(std::floor(x[2] / cell_))};
+    return {cell_index(x[0]), cell_index(x[1]), cell_index(x[2])};
+  }
+  /// Cell of one coordinate, clamped into the int64 range (a region may span 1e300 m; NaN: 0).
+  [[nodiscard]] std::int64_t cell_index(double x) const {
+    constexpr double kLimit = 4.0e18;
+    const double c = std::floor(x / cell_);
+    return !(c > -kLimit) ? (c < 0.0 ? -static_cast<std::int64_t>(kLimit) : 0)
+                          : static_cast<std::int64_t>(std::min(c, kLimit));
   }
   static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
     const auto h = [](std::int64_t v) { return static_cast<std::uint64_t>(v) * 0x9E3779B97F4A7C15ULL; };
@@ -237,7 +279,7 @@ double region_volume(const RegionSpec& g) {
 
 std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
                                               const std::vector<ParticleSpec>& placed,
-                                              double interaction_ratio) {
+                                              double interaction_ratio, std::size_t max_spheres) {
   check_size(spec.size);
   RandomStream rng(spec.seed);
   const RegionSpec& g = spec.region;
@@ -256,6 +298,10 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
 
   // Radii first: one stream decides sizes, then positions, then velocities, in that order.
   std::vector<double> radii;
+  if (spec.count && *spec.count > max_spheres) {
+    throw PopulationError("count", fmt::format("asks for {} spheres; the scene may hold at most {} more", *spec.count,
+                                               max_spheres));
+  }
   if (spec.arrangement != Arrangement::random || spec.count) {
     std::size_t n = spec.count.value_or(0);
     std::vector<Vector3> sites;
@@ -266,8 +312,27 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
                                                      "neighbouring spheres would overlap",
                                                      pitch, 2.0 * r_max));
       }
-      sites = lattice_sites(g, spec.arrangement, pitch, r_max);
+      if (!spec.count) {
+        // Every site is wanted: estimate them first (a cell of volume a³, or a³/√2 close packed),
+        // so that a fine pitch in a large region is refused before any is made.
+        const double cell = spec.arrangement == Arrangement::hcp ? pitch * pitch * pitch / std::sqrt(2.0)
+                                                                 : pitch * pitch * pitch;
+        const double estimate = region_volume(g) / cell;
+        if (!(estimate <= 2.0 * static_cast<double>(max_spheres))) {
+          throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m fills the region with about {:.3g} "
+                                                       "spheres; the scene may hold at most {} more (give count)",
+                                                       pitch, estimate, max_spheres));
+        }
+      }
+      // One site more than allowed tells a region holding too many from one holding exactly enough.
+      sites = lattice_sites(g, spec.arrangement, pitch, r_max, spec.count ? *spec.count : max_spheres + 1,
+                            kLatticeVisitsPerSphere * max_spheres + kLatticeVisitsSlack);
       if (!spec.count) n = sites.size();
+      if (n > max_spheres) {
+        throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m fills the region with more than {} "
+                                                     "spheres, the most the scene may still hold (give count)",
+                                                     pitch, max_spheres));
+      }
       if (n > sites.size()) {
         throw PopulationError("count", fmt::format("asks for {} spheres; the region holds {} lattice sites of pitch "
                                                    "{:.6g} m", n, sites.size(), pitch));
@@ -284,6 +349,12 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
     const double target = spec.volume_fraction.value_or(0.0) * region_volume(g);
     double volume = 0.0;
     while (volume < target) {
+      if (radii.size() == max_spheres) {
+        throw PopulationError("volume_fraction",
+                              fmt::format("needs more than {} spheres to fill {:.3g} of the region's {:.6g} m³, the most "
+                                          "the scene may still hold",
+                                          max_spheres, spec.volume_fraction.value_or(0.0), region_volume(g)));
+      }
       const double r = draw_radius(spec.size, rng);
       radii.push_back(r);
       volume += dem::sphere_volume(r);
@@ -303,10 +374,14 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
   bounds(g, lo, hi);
   std::vector<ParticleSpec> out;
   double filled = 0.0;
+  // Tries in all: kRandomTriesPerSphere a sphere on average, and one sphere's max_attempts.
+  const std::uint64_t budget = kRandomTriesPerSphere * radii.size() + spec.max_attempts;
+  std::uint64_t tries = 0;
   for (const std::size_t k : order) {
     const double r = radii[k];
     bool done = false;
-    for (std::size_t attempt = 0; attempt < spec.max_attempts && !done; ++attempt) {
+    for (std::size_t attempt = 0; attempt < spec.max_attempts && !done && tries < budget; ++attempt) {
+      ++tries;
       Vector3 x{};
       for (int a = 0; a < 3; ++a) x[a] = rng.uniform(lo[a] + r, hi[a] - r);
       if (!inside(g, x, r) || grid.overlaps(x, r)) continue;
@@ -316,12 +391,16 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
       done = true;
     }
     if (!done) {
+      const std::string why = tries >= budget ? fmt::format("used up its {} tries ({} a sphere on average, plus "
+                                                            "max_attempts)",
+                                                            budget, kRandomTriesPerSphere)
+                                              : fmt::format("found no free spot for the next in {} tries",
+                                                            spec.max_attempts);
       throw PopulationError(spec.volume_fraction ? "volume_fraction" : "count",
-                            fmt::format("random insertion placed {} of {} spheres (volume fraction {:.3f}) and "
-                                        "found no free spot for the next in {} tries: random sequential "
-                                        "insertion jams near 0.38 for equal spheres; ask for fewer spheres "
-                                        "or a lattice",
-                                        out.size(), radii.size(), filled / region_volume(g), spec.max_attempts));
+                            fmt::format("random insertion placed {} of {} spheres (volume fraction {:.3f}) and {}: "
+                                        "random sequential insertion jams near 0.38 for equal spheres; ask for "
+                                        "fewer spheres or a lattice",
+                                        out.size(), radii.size(), filled / region_volume(g), why));
     }
   }
   assign_velocities(out, spec, rng);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/limits.hpp"
 #include "cases/scene.hpp"
 
 namespace cases {
@@ -79,9 +80,11 @@ class PopulationError : public std::runtime_error {
 /// insertion, of the spheres already `placed`, which the new ones do not overlap). Effect radii
 /// are r·interaction_ratio. Throws PopulationError on an impossible request: a region smaller
 /// than one sphere, more spheres than the region holds, a volume fraction random insertion
-/// cannot reach.
+/// cannot reach, or more than `max_spheres` spheres (found before they are made: the work done
+/// is bounded by max_spheres whatever the region and the radii).
 std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
                                               const std::vector<ParticleSpec>& placed,
-                                              double interaction_ratio);
+                                              double interaction_ratio,
+                                              std::size_t max_spheres = kMaxParticles);
 
 }  // namespace cases

@@ -76,7 +76,10 @@ void AxisCells::fill(int c, int dims, double edge, double reach, bool periodic) 
   gap.clear();
   digit.clear();
   imaged = true;
-  const int w = static_cast<int>(std::ceil(reach / edge));
+  // More than `dims` cells either way visits nothing new (and a reach of 10¹⁰ cells would not fit
+  // an int: a 1e8 m sphere beside a 1 cm one); clamped before the conversion.
+  const double span = std::ceil(reach / edge);
+  const int w = span < static_cast<double>(dims) ? static_cast<int>(span) : dims;
   if (periodic && 2 * w + 1 > dims) {
     // The stencil wraps onto itself: visit every cell once, at its nearest periodic offset.
     imaged = false;

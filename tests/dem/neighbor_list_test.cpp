@@ -170,6 +170,18 @@ TEST(NeighborList, PolydispersityDoesNotBlowUpTheSearch) {
   }
 }
 
+TEST(NeighborList, AReachOfMillionsOfCellsVisitsEveryCellOnce) {
+  // A 1e8 m sphere beside 1 cm ones (a fuzzed case file): reach / edge = 1e10 does not fit an
+  // int; the stencil is clamped to the row before the conversion.
+  dem::AxisCells open;
+  open.fill(1, 4, 0.01, 1.0e8, false);
+  EXPECT_EQ(open.cell, (std::vector<int>{0, 1, 2, 3}));
+  dem::AxisCells ring;
+  ring.fill(1, 4, 0.01, 1.0e8, true);
+  EXPECT_FALSE(ring.imaged);
+  EXPECT_EQ(ring.cell, (std::vector<int>{0, 1, 2, 3}));
+}
+
 TEST(NeighborList, MovingSpheresAreNeverMissedBetweenRebuilds) {
   // Random walks with the half-skin rule: at every step, every pair within reach (h_i + h_j) is
   // in the list, although the list was built up to many steps before.

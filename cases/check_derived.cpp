@@ -1,0 +1,255 @@
+// SPDX-License-Identifier: MIT
+// Load-time checks of the quantities the core derives from a case (docs/case-format.md,
+// "Limits"): every sphere's mass and moment of inertia, the collision stiffness and contact time
+// of every pair that can touch, the time step and the number of steps of the run and of every
+// formation stage. Each must be finite and inside [kMinDerived, kMaxDerived] (SI units), so that
+// a case such as `radius = 5e-324` or `normal_stiffness = 1e300` is refused here, naming its
+// key, instead of surfacing in a run as an infinite mass or a step count that never ends.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cases/limits.hpp"
+#include "cases/loader_sections.hpp"
+#include "cases/time_step.hpp"
+#include "dem/contact/laws/linear_dashpot.hpp"
+#include "dem/contact/registry.hpp"
+#include "dem/core/model_error.hpp"
+#include "dem/particles/particles.hpp"
+
+namespace cases::loader {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// A density no real material is far from [kg/m³]: used to tell whether a sphere's mass is out
+/// of range because of its density or because of its radius.
+constexpr double kOrdinaryDensity = 1000.0;
+
+/// True when x is finite and inside [kMinDerived, kMaxDerived].
+bool in_window(double x) noexcept { return x >= kMinDerived && x <= kMaxDerived; }
+
+/// "[1e-100, 1e+100]" for messages.
+std::string window() { return fmt::format("[{:g}, {:g}]", kMinDerived, kMaxDerived); }
+
+/// Throws about the radius of particle i: at particles[i].radius, or at the size of the
+/// population that generated it.
+[[noreturn]] void fail_at_radius(const Table& root, const Scene& scene, std::size_t i, const std::string& problem) {
+  std::string note;
+  const Value entry = origin_entry(root, scene, i, note);
+  const bool generated = !note.empty();
+  entry.table().fail(generated ? "size" : "radius", problem + note);
+}
+
+/// The [materials.NAME] table of material `m`.
+Table material_table(const Table& root, const Scene& scene, std::size_t m) {
+  return root.require("materials").table().require(scene.materials[m].name).table();
+}
+
+/// What a collision of one material pair looks like to the core's time-step control.
+struct PairScale {
+  std::size_t a = 0;             ///< material of the mobile sphere
+  std::size_t b = 0;             ///< material of the partner (sphere or wall)
+  const WallSpec* wall = nullptr;  ///< the partner wall, if the partner is one
+  dem::CollisionScale scale{};
+};
+
+/// Key a pair's stiffness comes from: the first normal-model property that its [[pairs]] entry
+/// (when it has one), else material a's, else material b's table sets; the table of material a
+/// when none sets one.
+std::pair<Table, std::string> stiffness_source(const Table& root, const Scene& scene, std::size_t a, std::size_t b) {
+  std::vector<std::string> keys;
+  if (const auto* row = dem::find_sub_model(dem::Slot::normal, scene.model.normal)) {
+    for (const std::string_view k : row->properties) keys.emplace_back(k);
+  }
+  if (root.has("pairs")) {
+    const std::vector<Value> entries = root.require("pairs").elements();
+    for (std::size_t j = 0; j < scene.pair_overrides.size() && j < entries.size(); ++j) {
+      const dem::PairOverride& o = scene.pair_overrides[j];
+      if (std::minmax(o.material_a, o.material_b) != std::minmax(a, b)) continue;
+      const Table t = entries[j].table();
+      for (const std::string& k : keys) {
+        if (t.has(k)) return {t, k};
+      }
+    }
+  }
+  // Materials give E and ν where pairs give E*.
+  std::vector<std::string> material_keys;
+  for (const std::string& k : keys) {
+    if (k == "effective_modulus" || k == "effective_shear_modulus") {
+      material_keys.insert(material_keys.end(), {"youngs_modulus", "poisson_ratio"});
+    } else {
+      material_keys.push_back(k);
+    }
+  }
+  for (const std::size_t m : {a, b}) {
+    const Table t = material_table(root, scene, m);
+    for (const std::string& k : material_keys) {
+      if (t.has(k)) return {t, k};
+    }
+  }
+  return {material_table(root, scene, a), material_keys.empty() ? std::string("density") : material_keys.front()};
+}
+
+/// Throws unless the collision stiffness and contact time of one pair lie in the window. A
+/// stiffness of zero is accepted while nothing moves (a Hertz contact met at zero speed), and an
+/// over-damped contact has no contact time to check.
+void check_pair(const Table& root, const Scene& scene, const dem::PairTable& table, const PairScale& pair) {
+  const dem::PairLaw& law = table.law(pair.a, pair.b);
+  const dem::CollisionScale& s = pair.scale;
+  const double k = dem::collision_stiffness(law, s);
+  const double eta = dem::damping_coefficient(law, s.reduced_mass, k);
+  const double t_c = k > 0.0 ? dem::laws::linear_contact_duration(k, s.reduced_mass, eta) : kInf;
+  const bool stiffness_ok = k == 0.0 ? s.impact_speed == 0.0 : in_window(k);
+  const bool time_ok = std::isnan(t_c) || std::isinf(t_c) || in_window(t_c);
+  if (stiffness_ok && time_ok) return;
+  const std::string partner =
+      pair.wall != nullptr ? fmt::format("wall '{}' of '{}'", pair.wall->name, scene.materials[pair.b].name)
+                           : fmt::format("'{}'", scene.materials[pair.b].name);
+  const auto [where, key] = stiffness_source(root, scene, pair.a, pair.b);
+  where.fail(key, fmt::format("a sphere of '{}' meeting {} has collision stiffness k = {:.6g} N/m and contact time "
+                              "t_c = {:.6g} s (reduced mass {:.6g} kg, reduced radius {:.6g} m, impact speed "
+                              "{:.6g} m/s); k and t_c must be finite and within {} (SI units)",
+                              scene.materials[pair.a].name, partner, k, t_c, s.reduced_mass, s.reduced_radius,
+                              s.impact_speed, window()));
+}
+
+/// Per material, what dem::timestep_limits reads: how many mobile and fixed spheres, the lightest
+/// mobile one's mass and the smallest radius.
+struct Census {
+  std::size_t mobile = 0;
+  std::size_t fixed = 0;
+  double lightest = kInf;
+  double smallest = kInf;
+};
+
+/// Checks the stiffness and contact time of every pair that can touch, at the collision scale the
+/// core's time-step control uses (dem::timestep_limits: lightest mobile sphere, smallest radii,
+/// twice the fastest speed or a fall through the largest diameter).
+void check_pairs(const Table& root, const Scene& scene, const dem::PairTable& table) {
+  std::vector<Census> census(scene.materials.size());
+  double fastest = 0.0;
+  double largest = 0.0;
+  for (const ParticleSpec& p : scene.particles) {
+    Census& c = census[p.material];
+    c.smallest = std::min(c.smallest, p.radius);
+    fastest = std::max(fastest, length(p.velocity));
+    largest = std::max(largest, 2.0 * p.radius);
+    if (p.fixed) {
+      ++c.fixed;
+    } else {
+      ++c.mobile;
+      c.lightest = std::min(c.lightest, dem::sphere_mass(scene.materials[p.material].density, p.radius));
+    }
+  }
+  const double g = length(scene.gravity);
+  const double speed = std::max(2.0 * fastest, std::sqrt(2.0 * g * largest));
+  for (std::size_t a = 0; a < census.size(); ++a) {
+    if (census[a].mobile == 0) continue;
+    const double m_a = census[a].lightest;
+    for (std::size_t b = 0; b < census.size(); ++b) {
+      const bool mobile_partner = a == b ? census[a].mobile >= 2 : census[b].mobile >= 1;
+      const bool fixed_partner = census[b].fixed >= 1;
+      if (!mobile_partner && !fixed_partner) continue;
+      const double r = census[a].smallest * census[b].smallest / (census[a].smallest + census[b].smallest);
+      if (fixed_partner) check_pair(root, scene, table, {a, b, nullptr, {m_a, r, speed}});
+      if (mobile_partner) {
+        const double m_b = census[b].lightest;
+        check_pair(root, scene, table, {a, b, nullptr, {m_a * m_b / (m_a + m_b), r, speed}});
+      }
+    }
+    for (const WallSpec& w : scene.walls) {
+      check_pair(root, scene, table, {a, w.material, &w, {m_a, census[a].smallest, speed}});
+    }
+  }
+}
+
+/// Checks the run's time step (given or automatic) and, for "auto", its number of steps.
+void check_run_timestep(const Table& root, const Scene& scene, const dem::PairTable& table) {
+  const Table integration = root.require("integration").table();
+  const double dt = run_timestep(scene, table);
+  const std::string kind = scene.integration.timestep ? "the time step" : "the automatic time step";
+  if (std::isinf(dt) && !scene.integration.timestep) return;  // no contact: the run says so
+  if (!in_window(dt)) {
+    integration.fail("timestep", fmt::format("{} {:.6g} s must be finite and within {} s", kind, dt, window()));
+  }
+  const double duration = run_duration(scene);
+  const double steps = duration / dt;
+  if (steps <= kMaxSteps) return;
+  if (scene.duration_from_launch) {
+    // The launch sets the duration: t_max = 4 L_A / (u sin θ).
+    for (std::size_t k = 0; k < scene.stages.size(); ++k) {
+      if (!std::holds_alternative<LaunchStageSpec>(scene.stages[k].action)) continue;
+      root.require("stages").elements()[k].table().fail(
+          "speed", fmt::format("the launch lasts about {:.6g} s (t_max = 4 L_A / (u sin θ), eq 5.1): with {} {:.6g} s "
+                               "that is {:.3g} steps, more than the limit of 1e9",
+                               duration, kind, dt, steps));
+    }
+  }
+  integration.fail("timestep", fmt::format("{} {:.6g} s over the duration {} s gives {:.3g} steps, more than the "
+                                           "limit of 1e9",
+                                           kind, dt, duration, steps));
+}
+
+/// Checks the time step and the largest number of steps of every formation stage.
+void check_formation_steps(const Table& root, const Scene& scene) {
+  for (std::size_t k = 0; k < scene.stages.size(); ++k) {
+    const auto* formation = std::get_if<FormationStageSpec>(&scene.stages[k].action);
+    if (formation == nullptr) continue;
+    const Table stage = root.require("stages").elements()[k].table();
+    double dt = kInf;
+    try {
+      dt = formation_timestep(scene, *formation);
+    } catch (const dem::ModelError& e) {
+      stage.fail(fmt::format("the contact model of the formation cannot be built: {}", e.what()));
+    }
+    if (std::isinf(dt) && !scene.integration.timestep) continue;  // no contact: the stage says so
+    if (!in_window(dt)) {
+      stage.fail("restitution", fmt::format("the formation's automatic time step {:.6g} s must be finite and within "
+                                            "{} s",
+                                            dt, window()));
+    }
+    const double steps = formation->max_duration / dt;
+    if (steps > kMaxSteps) {
+      stage.fail("max_duration", fmt::format("{} s at the time step {:.6g} s is {:.3g} steps, more than the limit "
+                                             "of 1e9",
+                                             formation->max_duration, dt, steps));
+    }
+  }
+}
+
+}  // namespace
+
+void check_sphere_masses(const Table& root, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const ParticleSpec& p = scene.particles[i];
+    const dem::MaterialProperties& material = scene.materials[p.material];
+    const double m = dem::sphere_mass(material.density, p.radius);
+    const double inertia = dem::sphere_inertia(m, p.radius);
+    if (in_window(m) && in_window(inertia)) continue;
+    const std::string problem =
+        fmt::format("particle {} (radius {} m, density {} kg/m³ of material '{}') has mass 4/3 π ρ r³ = {:.6g} kg "
+                    "and moment of inertia 2/5 m r² = {:.6g} kg·m²; both must be finite and within {} (SI units)",
+                    i, p.radius, material.density, material.name, m, inertia, window());
+    // The density is at fault when a sphere of this radius and an ordinary density is fine.
+    const double ordinary = dem::sphere_mass(kOrdinaryDensity, p.radius);
+    if (!in_window(m) && in_window(ordinary) && in_window(dem::sphere_inertia(ordinary, p.radius))) {
+      material_table(root, scene, p.material).fail("density", problem);
+    }
+    fail_at_radius(root, scene, i, problem);
+  }
+}
+
+void check_time_scales(const Table& root, const Scene& scene, const dem::PairTable& table) {
+  check_pairs(root, scene, table);
+  check_run_timestep(root, scene, table);
+  check_formation_steps(root, scene);
+}
+
+}  // namespace cases::loader
