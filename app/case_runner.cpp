@@ -10,6 +10,7 @@
 #include "app/driver_revisions.hpp"
 #include "cases/case_library.hpp"
 #include "cases/catalogue.hpp"
+#include "cases/output_budget.hpp"
 #include "store/scene_json.hpp"
 
 namespace app {
@@ -20,7 +21,17 @@ std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const
                                                 const std::filesystem::path& dir) {
   const auto file = dir / (scene.name + ".json");
   if (!std::filesystem::exists(file)) return std::nullopt;
-  const store::Baseline b = store::read_baseline(file);
+  store::Baseline b;
+  try {
+    b = store::read_baseline(file);
+  } catch (const std::exception& e) {
+    cases::RunResult r;
+    r.engine = engine;
+    r.status = cases::RunStatus::error;
+    r.source = "baseline";
+    r.reason = fmt::format("{} is not installed and its committed baseline cannot be used: {}", engine, e.what());
+    return r;
+  }
   const auto it = b.references.find(engine);
   if (it == b.references.end()) return std::nullopt;
   cases::RunResult r = it->second;
@@ -42,7 +53,7 @@ std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const
 
 /// Runs one engine, through the cache and baselines when it is a reference code.
 cases::RunResult run_one(const cases::Scene& scene, const std::string& name, const RunContext& ctx) {
-  const auto engine = reference::make_engine(name);
+  const auto engine = reference::make_engine(name, ctx.programs);
   if (!engine) throw std::invalid_argument("unknown engine '" + name + "'");
   reference::RunOptions o = ctx.options;
   o.work_dir = ctx.options.work_dir / name;
@@ -55,16 +66,25 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
       key = fmt::format("{} | driver {}", *version, name == "lammps" ? kLammpsDriverRevision : kYadeDriverRevision);
     }
   }
+  std::string distrusted;  // a cache entry that failed its checks: run again and overwrite it
   if (key && !ctx.refresh) {
     const auto start = std::chrono::steady_clock::now();
-    if (auto hit = ctx.cache->find(scene, name, *key)) {
-      hit->conventions["original wall time"] = fmt::format("{:.3f} s", hit->wall_time_s);
-      hit->wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return *hit;
+    store::ResultCache::Lookup found = ctx.cache->find(scene, name, *key);
+    if (found.hit) {
+      cases::RunResult& hit = *found.hit;
+      hit.conventions["original wall time"] = fmt::format("{:.3f} s", hit.wall_time_s);
+      hit.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return hit;
     }
+    distrusted = found.problem;
   }
   cases::RunResult result = reference::run_engine(*engine, scene, o);
   if (key && result.status == cases::RunStatus::ok) ctx.cache->store(scene, result, *key);
+  if (!distrusted.empty()) {
+    result.warnings.push_back(fmt::format("cache entry not trusted, {} ran again{}: {}", name,
+                                          result.status == cases::RunStatus::ok ? " and replaced it" : "",
+                                          distrusted));
+  }
   if (reference_code && result.status == cases::RunStatus::missing && ctx.baselines) {
     if (auto b = baseline_result(scene, name, *ctx.baselines)) return *b;
   }
@@ -79,6 +99,10 @@ comparison::CaseOutcome run_case(const cases::Scene& input, const std::vector<st
   cases::Scene scene;
   try {
     scene = prepare::prepare_scene(input, context.prepare);
+    // A launched run's duration is known only now: the output budget is checked again.
+    if (context.load.max_output_bytes) {
+      cases::check_output_budget(scene, *context.load.max_output_bytes, scene.source_path);
+    }
   } catch (const std::exception& e) {
     for (const auto& name : engines) {
       cases::RunResult r;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/case_loader.hpp"
 #include "compare/case_outcome.hpp"
 #include "prepare/prepare_scene.hpp"
 #include "reference/engine.hpp"
@@ -17,11 +18,13 @@ namespace app {
 /// How engines are run for one command.
 struct RunContext {
   reference::RunOptions options;
+  reference::ExternalPrograms programs;           ///< the LAMMPS and YADE binaries to drive
+  cases::LoadOptions load;                        ///< limits (--max-memory), checked again once a case is prepared
   prepare::PrepareOptions prepare;                ///< how a case's [[stages]] run (and are cached)
   std::optional<store::ResultCache> cache;        ///< reference-code results; none: always run
   bool refresh = false;                           ///< run reference codes even on a cache hit
   std::optional<std::filesystem::path> baselines; ///< directory of committed baselines
-  bool wall_times = true;                         ///< false: results.json without wall_time_s
+  bool wall_times = true;                         ///< false: results.json without wall times and scratch directories
   /// Called after each engine of a case finished (progress lines); may be called from several
   /// threads at once when cases run concurrently.
   std::function<void(const cases::Scene&, const cases::RunResult&)> on_engine_done;

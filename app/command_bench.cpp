@@ -35,6 +35,7 @@ struct BenchOptions {
   std::size_t particles = 10000;
   std::string chute_dir;
   double timeout_s = 3600.0;
+  std::string lammps_program = "lmp";  ///< the LAMMPS binary timed
   int repeat = 1;
   std::filesystem::path out;
 };
@@ -81,7 +82,7 @@ bench::BenchResult bench_chute(const BenchOptions& o) {
                                    (*dir / "in.chute").string());
     if (steps > 100) deck += fmt::format("run {}\n", steps - 100);
     run_lammps = [&o, deck, dir] {
-      return bench::run_lammps_bench("lmp", deck, o.out / "lammps", o.ranks, o.timeout_s, {*dir / "data.chute"});
+      return bench::run_lammps_bench(o.lammps_program, deck, o.out / "lammps", o.ranks, o.timeout_s, {*dir / "data.chute"});
     };
   }
   if (o.inhouse) {
@@ -141,7 +142,7 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
         files.push_back({settings.data_file, reference::lammps::write_atom_data(scene, settings)});
       }
       run_lammps = [&o, deck, files] {
-        return bench::run_lammps_bench("lmp", deck, o.out / "lammps", o.ranks, o.timeout_s, {}, files);
+        return bench::run_lammps_bench(o.lammps_program, deck, o.out / "lammps", o.ranks, o.timeout_s, {}, files);
       };
     } catch (const std::invalid_argument& e) {
       r.lammps = bench::LammpsRun{};
@@ -173,6 +174,7 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
       ("particles", po::value<std::size_t>()->default_value(10000), "spheres of the box scene")
       ("chute-dir", po::value<std::string>(), "where in.chute and data.chute live")
       ("timeout", po::value<double>()->default_value(3600.0), "seconds before a LAMMPS run is killed")
+      ("lammps", po::value<std::string>(), "LAMMPS binary to time (default $DEMWB_LAMMPS, else lmp in PATH)")
       ("repeat", po::value<int>()->default_value(1), "run both engines this many times, alternating; report medians")
       ("output,o", po::value<std::string>(), "output directory (default out/bench-<scene>)");
   const auto vm = parse_command(
@@ -205,6 +207,8 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   if (o.particles < 1 || o.particles > 100'000'000) throw std::invalid_argument("--particles must be between 1 and 1e8");
   if (vm->count("chute-dir") != 0) o.chute_dir = (*vm)["chute-dir"].as<std::string>();
   o.timeout_s = (*vm)["timeout"].as<double>();
+  if (!(o.timeout_s > 0.0) || o.timeout_s > 1e7) throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
+  o.lammps_program = external_programs(*vm, o.timeout_s).lammps;
   o.repeat = (*vm)["repeat"].as<int>();
   if (o.repeat < 1 || o.repeat > 100) throw std::invalid_argument("--repeat must be between 1 and 100");
   o.out = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `demwb engines`: which engines exist here and their versions.
+// `demwb engines`: which engines exist here, where their programs were found, and their versions.
 #include <iostream>
 
 #include <fmt/format.h>
@@ -13,17 +13,24 @@
 namespace app {
 
 int command_engines(const std::vector<std::string>& args, const Invocation&) {
-  const boost::program_options::options_description opts("options");
-  if (!parse_command(args, "usage: demwb engines", opts, {})) return kExitOk;
-  reports::MarkdownTable t({"engine", "status", "version"});
+  boost::program_options::options_description opts("options");
+  add_program_options(opts);
+  opts.add_options()("timeout", boost::program_options::value<double>()->default_value(10.0),
+                     "seconds a version probe may take");
+  const auto vm = parse_command(args, "usage: demwb engines [--lammps PATH] [--yade PATH]", opts, {});
+  if (!vm) return kExitOk;
+  const double timeout = (*vm)["timeout"].as<double>();
+  if (!(timeout > 0.0) || timeout > 1e7) throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
+  const reference::ExternalPrograms programs = external_programs(*vm, timeout);
+  reports::MarkdownTable t({"engine", "status", "version", "where"});
   for (const auto name : cases::engine_catalogue()) {
-    const auto engine = reference::make_engine(name);
+    const auto engine = reference::make_engine(name, programs);
     if (!engine) {
-      t.add_row({std::string(name), "no driver in this build", "—"});
+      t.add_row({std::string(name), "no driver in this build", "—", "—"});
       continue;
     }
     const auto version = engine->version();
-    t.add_row({std::string(name), version ? "installed" : "missing", version.value_or("—")});
+    t.add_row({std::string(name), version ? "installed" : "missing", version.value_or("—"), engine->location()});
   }
   std::cout << t.render();
   return kExitOk;

@@ -93,7 +93,13 @@ void check_drift(const Json& c, const std::filesystem::path& baselines, GateFind
   const std::string name = c["case"];
   const auto file = std::filesystem::is_directory(baselines) ? baselines / (name + ".json") : baselines;
   if (!std::filesystem::exists(file)) return;
-  const store::Baseline b = store::read_baseline(file);
+  store::Baseline b;
+  try {
+    b = store::read_baseline(file);
+  } catch (const std::exception& e) {
+    g.failures.push_back(fmt::format("{}: the drift check cannot use its baseline: {}", name, e.what()));
+    return;
+  }
   if (b.case_name != name) return;
   const Json& now = c["engines"]["inhouse"]["metrics"];
   for (const auto& [metric, base] : b.inhouse_metrics) {
@@ -138,7 +144,10 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
                                         fmt::format("{}", (*vm)["timeout"].as<double>())};
     if (vm->count("no-cache") != 0) suite_args.push_back("--no-cache");
     if (vm->count("reproducible") != 0) suite_args.push_back("--reproducible");
-    if (vm->count("cache") != 0) suite_args.insert(suite_args.end(), {"--cache", (*vm)["cache"].as<std::string>()});
+    for (const char* option : {"cache", "lammps", "yade"}) {
+      if (vm->count(option) != 0) suite_args.insert(suite_args.end(), {std::string("--") + option, (*vm)[option].as<std::string>()});
+    }
+    suite_args.insert(suite_args.end(), {"--threads", std::to_string((*vm)["threads"].as<int>())});
     if (vm->count("match") != 0) {
       for (const auto& m : (*vm)["match"].as<std::vector<std::string>>()) suite_args.insert(suite_args.end(), {"--match", m});
     }

@@ -13,6 +13,7 @@
 #include "cases/catalogue.hpp"
 #include "reports/markdown.hpp"
 #include "store/scene_json.hpp"
+#include "support/interrupts.hpp"
 
 namespace app {
 
@@ -32,6 +33,8 @@ int command_refresh(const std::vector<std::string>& args, const Invocation&) {
   } else {
     files = cases::case_files(cases::resolve_suite(target));
   }
+  const support::OwnedPathGuard partial =
+      support::OwnedPathGuard::if_new((*vm)["output"].as<std::string>());  // removed if interrupted
   RunContext ctx = run_context(*vm, (*vm)["output"].as<std::string>());
   ctx.refresh = true;
   const bool write = vm->count("write-baselines") != 0;
@@ -39,7 +42,7 @@ int command_refresh(const std::vector<std::string>& args, const Invocation&) {
   reports::MarkdownTable table({"case", "engine", "status", "version", "wall time (s)", "stored"});
   bool all_ok = true;
   for (const auto& file : files) {
-    const cases::Scene scene = cases::load_case(file);
+    const cases::Scene scene = cases::load_case(file, ctx.load);
     std::vector<std::string> engines;
     for (const auto& e : scene.compare.engines) {
       if (cases::is_reference_code(e)) engines.push_back(e);
@@ -61,7 +64,9 @@ int command_refresh(const std::vector<std::string>& args, const Invocation&) {
         continue;
       }
       if (ok) baseline.references[r.engine] = r;
-      all_ok = all_ok && ok;
+      // n/a is an answer (the code cannot express the case, with the reason); error and missing
+      // are failures.
+      all_ok = all_ok && (ok || r.status == cases::RunStatus::not_applicable);
       table.add_row({scene.name, r.engine, std::string(cases::to_string(r.status)), r.version,
                      fmt::format("{:.2f}", r.wall_time_s), ok && ctx.cache ? "cache" : "—"});
     }

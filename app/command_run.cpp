@@ -13,6 +13,7 @@
 #include "reports/case_outputs.hpp"
 #include "reports/case_report.hpp"
 #include "reports/markdown.hpp"
+#include "support/interrupts.hpp"
 
 namespace app {
 namespace {
@@ -20,8 +21,8 @@ namespace {
 namespace po = boost::program_options;
 
 /// Loads a case, printing its warnings; CaseError propagates to main as a usage error.
-cases::Scene load(const std::string& path) {
-  cases::Scene scene = cases::load_case(path);
+cases::Scene load(const std::string& path, const cases::LoadOptions& options) {
+  cases::Scene scene = cases::load_case(path, options);
   for (const auto& w : scene.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   return scene;
 }
@@ -68,9 +69,10 @@ void print_engine_notes(const comparison::CaseOutcome& o) {
   }
 }
 
+/// True when an engine errored or is missing: either fails a run.
 bool any_engine_error(const comparison::CaseOutcome& o) {
   for (const auto& r : o.runs) {
-    if (r.status == cases::RunStatus::error) return true;
+    if (r.status == cases::RunStatus::error || r.status == cases::RunStatus::missing) return true;
   }
   return false;
 }
@@ -85,7 +87,7 @@ int command_run(const std::vector<std::string>& args, const Invocation& inv) {
   add_run_options(opts);
   const auto vm = parse_command(args, "usage: demwb run CASE.toml [--engine E ...] [-o DIR]", opts, {"case"});
   if (!vm) return kExitOk;
-  const cases::Scene scene = with_matches(load((*vm)["case"].as<std::string>()), *vm);
+  const cases::Scene scene = with_matches(load((*vm)["case"].as<std::string>(), load_options(*vm)), *vm);
   std::vector<std::string> engines{"inhouse"};
   if (vm->count("engine") != 0) engines = split_names((*vm)["engine"].as<std::vector<std::string>>());
   engines = engines_to_run(scene, engines);
@@ -93,6 +95,7 @@ int command_run(const std::vector<std::string>& args, const Invocation& inv) {
   const std::filesystem::path out = vm->count("output") != 0
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::path("out/run") / scene.name;
+  const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(out);  // removed if interrupted
   const RunContext context = run_context(*vm, out / "work");
   comparison::CaseOutcome outcome = run_case(scene, engines, context);
   if (std::find(engines.begin(), engines.end(), scene.compare.reference) == engines.end()) {
@@ -117,7 +120,7 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
   add_run_options(opts);
   const auto vm = parse_command(args, "usage: demwb compare CASE.toml [--engines E,F] [-o DIR]", opts, {"case"});
   if (!vm) return kExitOk;
-  const cases::Scene scene = with_matches(load((*vm)["case"].as<std::string>()), *vm);
+  const cases::Scene scene = with_matches(load((*vm)["case"].as<std::string>(), load_options(*vm)), *vm);
   std::vector<std::string> engines;
   if (vm->count("engines") != 0) engines = split_names((*vm)["engines"].as<std::vector<std::string>>());
   engines = engines_to_run(scene, engines);
@@ -128,6 +131,7 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
   const std::filesystem::path out = vm->count("output") != 0
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::temp_directory_path() / "demwb-compare";
+  const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(out);  // removed if interrupted
   const RunContext context = run_context(*vm, out / "work");
   const comparison::CaseOutcome outcome = run_case(scene, engines, context);
   if (vm->count("output") != 0) {

@@ -23,6 +23,7 @@
 #include "reports/results_json.hpp"
 #include "support/text_file.hpp"
 #include "sweeps/stored_ensembles.hpp"
+#include "support/interrupts.hpp"
 
 namespace app {
 namespace {
@@ -42,7 +43,7 @@ SuiteEntry run_entry(const std::filesystem::path& file, const std::filesystem::p
   SuiteEntry e{file, std::nullopt, "", 0.0};
   const auto start = std::chrono::steady_clock::now();
   try {
-    const cases::Scene scene = with_matches(cases::load_case(file), vm);
+    const cases::Scene scene = with_matches(cases::load_case(file, ctx.load), vm);
     ctx.options.work_dir = out / scene.name / "work";
     e.outcome = run_case(scene, engines_to_run(scene, {}), ctx);
   } catch (const std::exception& ex) {
@@ -97,6 +98,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::path("out") / dir.filename();
   const unsigned jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
+  const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(out);  // removed if interrupted
   RunContext context = run_context(*vm, out);
   const auto files = cases::case_files(dir);
   if (files.empty()) throw std::runtime_error("suite " + dir.string() + " holds no *.toml case");

@@ -26,6 +26,8 @@
 #include "sweeps/sweep_report.hpp"
 #include "sweeps/sweep_rows.hpp"
 #include "sweeps/sweep_spec.hpp"
+#include "cases/case_file.hpp"
+#include "support/interrupts.hpp"
 
 namespace app {
 namespace {
@@ -43,7 +45,7 @@ sweeps::SweepRun run_job(const sweeps::SweepSpec& spec, const sweeps::SweepPoint
     std::vector<std::pair<std::string, double>> values;
     for (std::size_t a = 0; a < spec.axes.size(); ++a) values.emplace_back(spec.axes[a].key, point.values[a]);
     const std::string text = sweeps::override_case(case_text, spec.case_file.string(), values, seed);
-    cases::Scene scene = cases::load_case_text(text, spec.case_file.string());
+    cases::Scene scene = cases::load_case_text(text, spec.case_file.string(), ctx.load);
     scene.compare.metrics = metrics;
     ctx.options.work_dir = out / "work" / fmt::format("p{:04d}_s{}", point.index, seed);
     const comparison::CaseOutcome o = run_case(scene, engines, ctx);
@@ -168,10 +170,11 @@ std::vector<sweeps::SweepRow> collect_rows(const SweepPlan& plan, const std::vec
 /// revision, every engine's version — and the SHA-256 of sweep.csv itself, so a committed sweep
 /// can be checked against the files it came from.
 std::string sweep_fingerprint(const SweepPlan& plan, const std::vector<sweeps::SweepRow>& rows,
-                              const std::string& command, double seconds, int ranks) {
+                              const std::string& command, double seconds, int ranks,
+                              const reference::ExternalPrograms& programs) {
   nlohmann::json versions = nlohmann::json::object();
   for (const auto& name : plan.engines) {
-    const auto engine = reference::make_engine(name);
+    const auto engine = reference::make_engine(name, programs);
     const auto version = engine ? engine->version() : std::nullopt;
     versions[name] = version ? nlohmann::json(*version) : nlohmann::json("missing");
   }
@@ -210,9 +213,9 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
   const std::string command = reports::reproduce_command(inv.argc, inv.argv);
   SweepPlan plan;
   plan.spec = sweeps::load_sweep((*vm)["sweep"].as<std::string>());
-  plan.case_text = support::read_file(plan.spec.case_file);
+  plan.case_text = cases::read_case_file(plan.spec.case_file);
   // The base case must load as it is: its errors are the user's to fix before any run.
-  const cases::Scene base = cases::load_case_text(plan.case_text, plan.spec.case_file.string());
+  const cases::Scene base = cases::load_case_text(plan.case_text, plan.spec.case_file.string(), load_options(*vm));
   plan.engines = plan.spec.engines.empty() ? base.compare.engines : plan.spec.engines;
   if (vm->count("engines") != 0) plan.engines = split_names({(*vm)["engines"].as<std::string>()});
   for (const auto& e : plan.engines) {
@@ -226,6 +229,7 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
                                       : std::filesystem::path("out") / ("sweep-" + plan.spec.name);
   plan.jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
   plan.points = sweeps::expand(plan.spec);
+  const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(plan.out);  // removed if interrupted
   const RunContext context = run_context(*vm, plan.out / "work");
   const auto start = std::chrono::steady_clock::now();
 
@@ -239,7 +243,7 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
     support::write_file(plan.out / "sweep.toml", plan.spec.source_text);
     support::write_file(plan.out / "case.toml", plan.case_text);
     support::write_file(plan.out / "command.txt", command + "\n");
-    support::write_file(plan.out / "sweep.json", sweep_fingerprint(plan, rows, command, seconds, ranks.size()));
+    support::write_file(plan.out / "sweep.json", sweep_fingerprint(plan, rows, command, seconds, ranks.size(), context.programs));
     sweeps::write_sweep_report({plan.spec, plan.points, plan.engines, plan.metrics, rows, command, seconds, ranks.size()},
                                plan.out);
     for (const auto& r : rows) failed += r.status == "ok" ? 0 : 1;

@@ -8,6 +8,7 @@
 
 #include "app/cli.hpp"
 #include "support/build_info.hpp"
+#include "support/interrupts.hpp"
 
 namespace {
 
@@ -22,19 +23,24 @@ commands:
   gate DIR|SUITE [--baseline F] [--allow-missing]  exit 0 only when every comparison is green
   refresh [SUITE|CASE] [--write-baselines]    re-run reference codes into the cache/baselines
   bench chute|box [--threads N] [--ranks N]    the core against LAMMPS: particle-steps/s, memory
-  engines                                     installed engines and their versions
+  engines [--lammps PATH] [--yade PATH]       installed engines, their versions and where they are
   convert linear-to-jkr|jkr-to-linear ...     appendix E: linear cohesion <-> JKR
 
 options:
   -h, --help      help (also after a command: demwb run --help)
   --version       print the version
 
-exit codes: 0 all green, 1 a comparison failed or an engine errored, 2 bad usage or case file
+reference binaries: --lammps PATH / --yade PATH, else $DEMWB_LAMMPS / $DEMWB_YADE, else lmp / yade in PATH
+
+exit codes: 0 all green, 1 a comparison failed or an engine errored or is missing, 2 bad usage or
+case file, 130 / 143 interrupted by SIGINT / SIGTERM (reference runs stopped, partial outputs removed)
 )";
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  // SIGINT/SIGTERM stop the reference runs and remove partial outputs (support/interrupts.hpp).
+  support::install_interrupt_handling();
   const std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
     std::fputs(kUsage.data(), args.empty() ? stderr : stdout);

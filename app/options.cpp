@@ -2,12 +2,14 @@
 #include "app/options.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 #include <stdexcept>
 
 #include "app/cli.hpp"
 #include "app/driver_revisions.hpp"
 #include "cases/catalogue.hpp"
+#include "cases/output_budget.hpp"
 
 namespace app {
 
@@ -64,7 +66,61 @@ void add_run_options(po::options_description& opts) {
       "match", po::value<std::vector<std::string>>()->composing(),
       "also run the core with this reference code's numerics (lammps, yade) and compare the two")(
       "threads", po::value<int>()->default_value(1),
-      "OpenMP threads of the core (results are bit-identical for any count)");
+      "OpenMP threads of the core (results are bit-identical for any count)")(
+      "max-memory", po::value<std::string>(),
+      "most memory one run's output may take, e.g. 512M or 8G (default half the physical memory); larger cases are refused at load time");
+  add_program_options(opts);
+}
+
+cases::LoadOptions load_options(const po::variables_map& vm) {
+  cases::LoadOptions options;
+  if (vm.count("max-memory") == 0) {
+    options.max_output_bytes = cases::physical_memory_bytes() / 2;
+    return options;
+  }
+  const std::string text = vm["max-memory"].as<std::string>();
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  double scale = 1.0;
+  const std::string suffix = text.substr(used);
+  if (suffix == "K" || suffix == "k") scale = 1024.0;
+  if (suffix == "M") scale = 1024.0 * 1024.0;
+  if (suffix == "G") scale = 1024.0 * 1024.0 * 1024.0;
+  if (suffix == "T") scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+  const bool known_suffix = suffix.empty() || scale > 1.0;
+  if (used == 0 || !known_suffix || !(value * scale >= 1.0) || value * scale > 1.0e18) {
+    throw std::invalid_argument("--max-memory '" + text.substr(0, 40) +
+                                "': give a number of bytes, optionally with K, M, G or T (e.g. 512M)");
+  }
+  options.max_output_bytes = static_cast<std::uint64_t>(value * scale);
+  return options;
+}
+
+void add_program_options(po::options_description& opts) {
+  opts.add_options()("lammps", po::value<std::string>(),
+                     "LAMMPS binary to drive (default $DEMWB_LAMMPS, else lmp in PATH)")(
+      "yade", po::value<std::string>(), "YADE launcher script to drive (default $DEMWB_YADE, else yade in PATH)");
+}
+
+reference::ExternalPrograms external_programs(const po::variables_map& vm, double timeout_s) {
+  reference::ExternalPrograms programs;
+  const auto choose = [&](const char* option, const char* variable, std::string& program) {
+    if (vm.count(option) != 0) {
+      program = vm[option].as<std::string>();
+      if (program.empty()) throw std::invalid_argument(std::string("--") + option + ": empty path");
+    } else if (const char* v = std::getenv(variable); v != nullptr && *v != '\0') {
+      program = v;
+    }
+  };
+  choose("lammps", "DEMWB_LAMMPS", programs.lammps);
+  choose("yade", "DEMWB_YADE", programs.yade);
+  programs.probe_timeout_s = std::min(programs.probe_timeout_s, timeout_s);
+  return programs;
 }
 
 cases::Scene with_matches(cases::Scene scene, const po::variables_map& vm) {
@@ -84,6 +140,11 @@ RunContext run_context(const po::variables_map& vm, const std::filesystem::path&
   RunContext ctx;
   ctx.options.work_dir = work_dir;
   ctx.options.timeout_s = vm["timeout"].as<double>();
+  if (!(ctx.options.timeout_s > 0.0) || ctx.options.timeout_s > 1e7) {
+    throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
+  }
+  ctx.programs = external_programs(vm, ctx.options.timeout_s);
+  ctx.load = load_options(vm);
   ctx.options.threads = vm["threads"].as<int>();
   if (ctx.options.threads < 1 || ctx.options.threads > 1024) {
     throw std::invalid_argument("--threads must be between 1 and 1024");

@@ -8,12 +8,24 @@
 #include <boost/program_options.hpp>
 
 #include "app/case_runner.hpp"
+#include "cases/case_loader.hpp"
 
 namespace app {
 
 /// Adds the options every running command shares: --timeout, --cache, --no-cache, --baselines,
-/// --match.
+/// --match, --threads, --reproducible, and the binaries (add_program_options).
 void add_run_options(boost::program_options::options_description& opts);
+
+/// The case-loading limits of --max-memory: the most bytes of output (traces, energy ledger,
+/// snapshots) one run of a case may hold; default half the machine's physical memory.
+cases::LoadOptions load_options(const boost::program_options::variables_map& vm);
+
+/// Adds --lammps PATH and --yade PATH (the reference binaries to drive).
+void add_program_options(boost::program_options::options_description& opts);
+
+/// The reference binaries: --lammps / --yade, else $DEMWB_LAMMPS / $DEMWB_YADE, else `lmp` and
+/// `yade` in PATH. The version probe may take min(10 s, `timeout_s`).
+reference::ExternalPrograms external_programs(const boost::program_options::variables_map& vm, double timeout_s);
 
 /// `scene` with the reference codes of --match added to compare.matched (engines_to_run then adds
 /// each code and its matched engine to the engines run).

@@ -52,6 +52,9 @@ struct RunResult {
   std::string source = "run";                  ///< "run", "cache" or "baseline"
   double wall_time_s = 0.0;
   std::string log_tail;                        ///< last lines of the engine's log on error
+  /// Where the engine's input and output files were kept (machine-local: report.md shows it,
+  /// results.json leaves it out under --reproducible); empty when nothing was kept.
+  std::string scratch_dir;
   Trace trace;
   Trace energy;                                ///< energy ledger over time, when the case asks
   std::vector<Snapshot> snapshots;

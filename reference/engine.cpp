@@ -13,6 +13,7 @@
 #include "reference/inhouse/matched_engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/yade/yade_engine.hpp"
+#include "support/utf8.hpp"
 
 namespace reference {
 
@@ -25,11 +26,16 @@ std::string Support::explain() const {
   return out;
 }
 
-std::unique_ptr<Engine> make_engine(std::string_view name) {
+std::unique_ptr<Engine> make_engine(std::string_view name, const ExternalPrograms& programs) {
   if (name == "inhouse") return std::make_unique<InhouseEngine>();
   if (name == "analytic") return std::make_unique<AnalyticEngine>();
-  if (name == "lammps") return std::make_unique<LammpsEngine>();
-  if (name == "yade") return std::make_unique<YadeEngine>();
+  if (name == "lammps") {
+    LammpsOptions options;
+    options.program = programs.lammps;
+    options.probe_timeout_s = programs.probe_timeout_s;
+    return std::make_unique<LammpsEngine>(std::move(options));
+  }
+  if (name == "yade") return std::make_unique<YadeEngine>(YadeEngine::from_launcher(programs.yade));
   if (const auto code = cases::matched_code(name); !code.empty()) {
     return std::make_unique<MatchedInhouseEngine>(std::string(code));
   }
@@ -58,12 +64,12 @@ cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
   const auto version = engine.version();
   if (!version) {
     result.status = cases::RunStatus::missing;
-    result.reason = fmt::format("engine '{}' is not installed", engine.name());
+    result.reason = fmt::format("engine '{}' is not installed: {}", engine.name(), engine.location());
     return result;
   }
   const Support support = engine.supports(scene);
   if (!support.supported()) {
-    result.version = *version;
+    result.version = support::printable_utf8(*version);
     result.status = cases::RunStatus::not_applicable;
     result.reason = support.explain();
     return result;
@@ -77,7 +83,13 @@ cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
     result.reason = e.what();
   }
   result.engine = std::string(engine.name());
-  result.version = *version;
+  result.version = support::printable_utf8(*version);
+  // What an external program wrote may be any bytes: keep it valid, printable UTF-8 so that it
+  // can reach results.json, report.md and the terminal.
+  result.reason = support::printable_utf8(result.reason);
+  result.log_tail = support::printable_utf8(result.log_tail);
+  for (auto& w : result.warnings) w = support::printable_utf8(w);
+  for (auto& [key, value] : result.conventions) value = support::printable_utf8(value);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.status == cases::RunStatus::ok) {

@@ -38,6 +38,9 @@ class Engine {
   [[nodiscard]] virtual std::string_view name() const noexcept = 0;
   /// Version string, or empty when the engine is not installed.
   [[nodiscard]] virtual std::optional<std::string> version() const = 0;
+  /// Where the engine's program was found (or why it was not): `demwb engines` and `missing`
+  /// reasons show it.
+  [[nodiscard]] virtual std::string location() const { return "built in"; }
   /// Can the engine express `scene`?
   [[nodiscard]] virtual Support supports(const cases::Scene& scene) const = 0;
   /// Runs `scene` and returns its traces (status ok) or why not.
@@ -45,8 +48,16 @@ class Engine {
                                              const RunOptions& options) const = 0;
 };
 
-/// The engine called `name`, or nullptr when no such engine exists.
-std::unique_ptr<Engine> make_engine(std::string_view name);
+/// Which external programs the reference engines drive (docs/user-guide.md, "Choosing the
+/// reference binaries").
+struct ExternalPrograms {
+  std::string lammps = "lmp";   ///< LAMMPS binary: a path, or a name searched in PATH
+  std::string yade = "yade";    ///< YADE launcher script: a path, or a name searched in PATH
+  double probe_timeout_s = 10.0;  ///< limit of a version probe that starts a process
+};
+
+/// The engine called `name` driving `programs`, or nullptr when no such engine exists.
+std::unique_ptr<Engine> make_engine(std::string_view name, const ExternalPrograms& programs = {});
 
 /// Runs `engine` on `scene` with the common bookkeeping: `missing` when not installed,
 /// `n/a` with reasons when unsupported, `error` with the message when run() throws, and

@@ -203,6 +203,7 @@ std::string conventions_section(const comparison::CaseOutcome& o, int level) {
   MarkdownTable t({"engine", "convention", "value"});
   for (const auto& r : o.runs) {
     for (const auto& [k, v] : r.conventions) t.add_row({r.engine, k, v});
+    if (!r.scratch_dir.empty()) t.add_row({r.engine, "scratch directory", r.scratch_dir});
   }
   return t.rows() == 0 ? "" : heading(level, "Conventions") + t.render() + "\n";
 }

@@ -22,6 +22,7 @@ Json engine_entry(const cases::RunResult& run, const comparison::MetricSet& metr
   e["version"] = run.version;
   e["source"] = run.source;
   if (wall_times) e["wall_time_s"] = number(run.wall_time_s);
+  if (wall_times && !run.scratch_dir.empty()) e["scratch_directory"] = run.scratch_dir;
   if (!run.reason.empty()) e["reason"] = run.reason;
   Json values = Json::object();
   Json sources = Json::object();

@@ -31,20 +31,55 @@ std::filesystem::path ResultCache::path_of(const cases::Scene& scene, std::strin
   return dir_ / std::string(engine) / name;
 }
 
-std::optional<cases::RunResult> ResultCache::find(const cases::Scene& scene, std::string_view engine,
-                                                  const std::string& version) const {
+nlohmann::ordered_json with_checksum(nlohmann::ordered_json document) {
+  document.erase("sha256");
+  const std::string sum = support::sha256_hex(document.dump());
+  document["sha256"] = sum;
+  return document;
+}
+
+std::string checksum_problem(const nlohmann::ordered_json& document) {
+  if (!document.is_object() || !document.contains("sha256") || !document["sha256"].is_string()) {
+    return "it has no sha256 member";
+  }
+  nlohmann::ordered_json content = document;
+  content.erase("sha256");
+  const std::string expected = support::sha256_hex(content.dump());
+  if (document["sha256"].get<std::string>() != expected) {
+    return "its content does not match its sha256 (edited or damaged)";
+  }
+  return "";
+}
+
+ResultCache::Lookup ResultCache::find(const cases::Scene& scene, std::string_view engine,
+                                      const std::string& version) const {
   const auto file = path_of(scene, engine, version);
-  if (!std::filesystem::exists(file)) return std::nullopt;
+  Lookup out;
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return out;
   try {
     const auto j = nlohmann::ordered_json::parse(support::read_file(file));
-    if (j.at("fingerprint") != scene_fingerprint(scene) || j.at("version") != version) return std::nullopt;
+    if (const std::string problem = checksum_problem(j); !problem.empty()) {
+      out.problem = file.string() + ": " + problem;
+      return out;
+    }
+    if (j.at("fingerprint") != scene_fingerprint(scene) || j.at("version") != version || j.at("engine") != engine) {
+      out.problem = file.string() + ": stored for another scene, engine or version";
+      return out;
+    }
     cases::RunResult r = run_result_from_json(j.at("result"));
+    if (r.status != cases::RunStatus::ok || r.engine != engine) {
+      out.problem = file.string() + ": holds a result that is not a successful run of " + std::string(engine) +
+                    " (only those are ever stored)";
+      return out;
+    }
     r.source = "cache";
     r.conventions["result source"] = "reused from the result cache: " + file.string();
-    return r;
-  } catch (const std::exception&) {
-    return std::nullopt;  // unreadable entry: run the engine again and overwrite it
+    out.hit = std::move(r);
+  } catch (const std::exception& e) {
+    out.problem = file.string() + ": unreadable (" + e.what() + ")";
   }
+  return out;
 }
 
 void ResultCache::store(const cases::Scene& scene, const cases::RunResult& run, const std::string& version) const {
@@ -57,12 +92,15 @@ void ResultCache::store(const cases::Scene& scene, const cases::RunResult& run, 
   cases::RunResult stored = run;
   stored.source = "run";
   j["result"] = run_result_json(stored);
-  support::write_file(path_of(scene, run.engine, version), j.dump() + "\n");
+  support::write_file(path_of(scene, run.engine, version), with_checksum(std::move(j)).dump() + "\n");
 }
 
 Baseline read_baseline(const std::filesystem::path& file) {
   try {
     const auto j = nlohmann::ordered_json::parse(support::read_file(file));
+    if (const std::string problem = checksum_problem(j); !problem.empty()) {
+      throw std::runtime_error(problem + "; rewrite it with `demwb refresh --write-baselines`");
+    }
     Baseline b;
     b.case_name = j.at("case").get<std::string>();
     b.fingerprint = j.at("fingerprint").get<std::string>();
@@ -81,10 +119,14 @@ void write_baseline(const std::filesystem::path& file, const Baseline& b) {
   j["case"] = b.case_name;
   j["fingerprint"] = b.fingerprint;
   nlohmann::ordered_json refs = nlohmann::ordered_json::object();
-  for (const auto& [engine, r] : b.references) refs[engine] = run_result_json(r);
+  for (const auto& [engine, r] : b.references) {
+    cases::RunResult kept = r;
+    kept.scratch_dir.clear();  // a path on the machine that made it
+    refs[engine] = run_result_json(kept);
+  }
   j["references"] = refs;
   j["inhouse_metrics"] = b.inhouse_metrics;
-  support::write_file(file, j.dump(1) + "\n");
+  support::write_file(file, with_checksum(std::move(j)).dump(1) + "\n");
 }
 
 }  // namespace store

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include <nlohmann/json.hpp>
+
 #include "cases/run_result.hpp"
 #include "cases/scene.hpp"
 
@@ -21,11 +23,17 @@ class ResultCache {
   /// $DEMWB_CACHE_DIR, else $XDG_CACHE_HOME/demwb, else ~/.cache/demwb, else ./.demwb-cache.
   static std::filesystem::path default_dir();
 
-  /// The stored result of `engine` at `version` for `scene`, if any (source set to "cache").
-  [[nodiscard]] std::optional<cases::RunResult> find(const cases::Scene& scene, std::string_view engine,
-                                                     const std::string& version) const;
+  /// What a lookup found: a hit, nothing, or an entry that failed its checks (`problem` says
+  /// how; the caller runs the engine again, which overwrites it).
+  struct Lookup {
+    std::optional<cases::RunResult> hit;  ///< source set to "cache"
+    std::string problem;                  ///< non-empty when an entry exists but cannot be trusted
+  };
+  /// The stored result of `engine` at `version` for `scene`. An entry is used only when its
+  /// SHA-256 matches its content, its key matches the scene and version, and its status is ok.
+  [[nodiscard]] Lookup find(const cases::Scene& scene, std::string_view engine, const std::string& version) const;
   /// Stores a successful result under `version` (the engine's version and its driver's revision;
-  /// others are ignored). Throws on I/O failure.
+  /// others are ignored), with the SHA-256 of the entry, atomically. Throws on I/O failure.
   void store(const cases::Scene& scene, const cases::RunResult& run, const std::string& version) const;
   /// Where the result of `engine` at `version` for `scene` lives.
   [[nodiscard]] std::filesystem::path path_of(const cases::Scene& scene, std::string_view engine,
@@ -47,9 +55,16 @@ struct Baseline {
   std::map<std::string, double> inhouse_metrics;
 };
 
-/// Reads a baseline file; throws std::runtime_error naming the file on failure.
+/// Reads a baseline file; throws std::runtime_error naming the file when it cannot be read or
+/// fails its SHA-256 check (an edited or damaged baseline is never used).
 Baseline read_baseline(const std::filesystem::path& file);
-/// Writes a baseline file.
+/// Writes a baseline file with the SHA-256 of its content (scratch directories left out).
 void write_baseline(const std::filesystem::path& file, const Baseline& baseline);
+
+/// `document` with a "sha256" member: the SHA-256 of the document's compact JSON text without
+/// that member (docs/security.md, "Cache and baselines").
+nlohmann::ordered_json with_checksum(nlohmann::ordered_json document);
+/// Empty when `document`'s "sha256" member matches its content; otherwise what is wrong.
+std::string checksum_problem(const nlohmann::ordered_json& document);
 
 }  // namespace store

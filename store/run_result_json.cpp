@@ -54,6 +54,7 @@ nlohmann::ordered_json run_result_json(const cases::RunResult& run) {
   j["source"] = run.source;
   j["wall_time_s"] = run.wall_time_s;
   j["log_tail"] = run.log_tail;
+  if (!run.scratch_dir.empty()) j["scratch_dir"] = run.scratch_dir;
   j["conventions"] = run.conventions;
   j["warnings"] = run.warnings;
   j["exact_metrics"] = run.exact_metrics;
@@ -90,6 +91,7 @@ cases::RunResult run_result_from_json(const nlohmann::ordered_json& j) {
     r.source = j.value("source", std::string("run"));
     r.wall_time_s = j.at("wall_time_s").get<double>();
     r.log_tail = j.at("log_tail").get<std::string>();
+    r.scratch_dir = j.value("scratch_dir", std::string());
     r.conventions = j.at("conventions").get<std::map<std::string, std::string>>();
     r.warnings = j.at("warnings").get<std::vector<std::string>>();
     r.exact_metrics = j.at("exact_metrics").get<std::map<std::string, double>>();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "support/process.hpp"
 
+#include "support/interrupts.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -18,10 +20,10 @@
 namespace support {
 namespace {
 
-/// Opens `path` for a child's stdout/stderr (or /dev/null) and dup2s it onto `fd`.
-bool redirect(const std::filesystem::path& path, int fd) {
-  const std::string target = path.empty() ? "/dev/null" : path.string();
-  const int file = ::open(target.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+/// Opens `target` for a child's stdout/stderr and dup2s it onto `fd` (async-signal-safe: it runs
+/// between fork and exec).
+bool redirect(const char* target, int fd) {
+  const int file = ::open(target, O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (file < 0) return false;
   const bool ok = ::dup2(file, fd) >= 0;
   ::close(file);
@@ -89,6 +91,11 @@ ProcessResult run_process(const ProcessSpec& spec) {
   for (auto& e : env_strings) envp.push_back(e.data());
   envp.push_back(nullptr);
   const std::string program_path = program->string();
+  // Everything the child needs is made before fork: between fork and exec it may only call
+  // async-signal-safe functions (another thread may hold the allocator's lock).
+  const std::string stdout_target = spec.stdout_file.empty() ? "/dev/null" : spec.stdout_file.string();
+  const std::string stderr_target = spec.stderr_file.empty() ? "/dev/null" : spec.stderr_file.string();
+  const std::string work_dir = spec.working_directory.string();
 
   // The child reports an exec failure through a close-on-exec pipe.
   int report[2];
@@ -97,7 +104,15 @@ ProcessResult run_process(const ProcessSpec& spec) {
     return result;
   }
   const auto start = std::chrono::steady_clock::now();
+  // Forked and registered under the interrupt registry's lock, so that SIGINT/SIGTERM either
+  // finds the child registered or arrives before it exists (support/interrupts.hpp).
+  std::unique_lock registry_lock(child_registry_mutex());
   const pid_t pid = ::fork();
+  if (pid > 0) {
+    ::setpgid(pid, pid);  // also done by the child; whichever runs first makes the group
+    register_child_group(pid);
+  }
+  registry_lock.unlock();
   if (pid < 0) {
     result.error = std::string("fork: ") + std::strerror(errno);
     ::close(report[0]);
@@ -107,11 +122,15 @@ ProcessResult run_process(const ProcessSpec& spec) {
   if (pid == 0) {
     ::close(report[0]);
     ::setpgid(0, 0);
+    // demwb blocks SIGINT/SIGTERM for its watcher thread; the child gets the default mask back.
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
     int err = 0;
     // Output files first, so relative paths mean the caller's directory, not the child's.
-    if (!redirect(spec.stdout_file, STDOUT_FILENO) || !redirect(spec.stderr_file, STDERR_FILENO)) {
+    if (!redirect(stdout_target.c_str(), STDOUT_FILENO) || !redirect(stderr_target.c_str(), STDERR_FILENO)) {
       err = errno;
-    } else if (!spec.working_directory.empty() && ::chdir(spec.working_directory.c_str()) != 0) {
+    } else if (!work_dir.empty() && ::chdir(work_dir.c_str()) != 0) {
       err = errno;
     } else {
       const int devnull = ::open("/dev/null", O_RDONLY);
@@ -129,6 +148,7 @@ ProcessResult run_process(const ProcessSpec& spec) {
   ::close(report[0]);
   if (got == static_cast<ssize_t>(sizeof child_errno)) {
     ::waitpid(pid, nullptr, 0);
+    unregister_child_group(pid);
     result.error = program_path + ": cannot start (" + std::strerror(child_errno) + ")";
     return result;
   }
@@ -148,6 +168,7 @@ ProcessResult run_process(const ProcessSpec& spec) {
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+  unregister_child_group(pid);
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);

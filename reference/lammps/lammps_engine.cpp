@@ -21,6 +21,8 @@
 #include "reference/lammps/snapshots.hpp"
 #include "reference/lammps/trace_columns.hpp"
 #include "reference/lammps/wall_mapping.hpp"
+#include "support/interrupts.hpp"
+#include "support/process.hpp"
 #include "support/text_file.hpp"
 
 namespace reference {
@@ -52,8 +54,16 @@ std::string first_non_finite(const cases::Trace& trace) {
 
 }  // namespace
 
-std::optional<std::string> LammpsEngine::version() const {
-  return lammps::lammps_version(options_.program);
+const lammps::LammpsProbe& LammpsEngine::probe() const {
+  std::call_once(probed_, [this] { probe_ = lammps::probe_lammps(options_.program, options_.probe_timeout_s); });
+  return probe_;
+}
+
+std::optional<std::string> LammpsEngine::version() const { return probe().version; }
+
+std::string LammpsEngine::location() const {
+  if (const auto path = support::find_program(options_.program)) return path->string();
+  return fmt::format("'{}' not found (choose the binary with --lammps PATH or DEMWB_LAMMPS)", options_.program);
 }
 
 Support LammpsEngine::supports(const cases::Scene& scene) const {
@@ -125,6 +135,15 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
 }
 
 cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& options) const {
+  // The version probe counts against the run's time limit; a binary that hung on an empty input
+  // is not given the deck.
+  const lammps::LammpsProbe& checked = probe();
+  if (checked.timed_out) return failure(*checked.version + ": not run", "");
+  const double time_left = options.timeout_s - checked.seconds;
+  if (time_left <= 0.0) {
+    return failure(fmt::format("LAMMPS timed out: its version probe used the whole time limit ({:.3g} s)", options.timeout_s),
+                   "");
+  }
   const CoreSetup setup = core_setup(scene);
   const double dt = setup.simulation.timestep;
   const std::uint64_t steps = step_count(scene.integration.duration, dt);
@@ -135,12 +154,13 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
   const std::string deck = lammps::write_deck(scene, settings);
 
   const std::filesystem::path dir = lammps::make_run_directory(options.work_dir);
+  const support::OwnedPathGuard partial(dir);  // removed if interrupted mid-run
   support::write_file(dir / lammps::kDeckFile, deck);
   if (lammps::atoms_in_data_file(scene)) {
     support::write_file(dir / settings.data_file, lammps::write_atom_data(scene, settings));
   }
   const lammps::LammpsRunOutcome outcome =
-      lammps::run_lammps(options_.program, dir, options.timeout_s);
+      lammps::run_lammps(options_.program, dir, time_left);
   if (!outcome.ok) return failure(outcome.reason, outcome.log_tail);
 
   cases::RunResult result;
@@ -185,8 +205,9 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
   }
   result.status = cases::RunStatus::ok;
   result.conventions =
-      lammps::run_conventions(scene, dt, steps, outcome.version.value_or("unknown"), dir);
+      lammps::run_conventions(scene, dt, steps, outcome.version.value_or("unknown"));
   result.inexpressible_metrics = lammps::inexpressible_metrics(scene);
+  result.scratch_dir = dir.string();
   return result;
 }
 

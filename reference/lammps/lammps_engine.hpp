@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <mutex>
 #include <string>
 
 #include "reference/engine.hpp"
+#include "reference/lammps/lammps_runner.hpp"
 
 namespace reference {
 
@@ -11,6 +13,7 @@ namespace reference {
 struct LammpsOptions {
   std::string program = "lmp";  ///< searched in PATH (or a path)
   std::string extra_commands;   ///< LAMMPS commands inserted just before `run` (diagnostics, tests)
+  double probe_timeout_s = lammps::kProbeTimeout;  ///< limit of the version probe
 };
 
 /// LAMMPS (Debian 20220106, "29 Sep 2021 - Update 2", pair_style granular) as an engine: writes
@@ -19,19 +22,27 @@ struct LammpsOptions {
 /// spring–dashpot; other sub-models are reported as not mapped (n/a) with the reason.
 class LammpsEngine final : public Engine {
  public:
-  LammpsEngine() = default;
+  LammpsEngine() : LammpsEngine(LammpsOptions{}) {}
   /// An engine driving `options.program`.
   explicit LammpsEngine(LammpsOptions options) : options_(std::move(options)) {}
 
   [[nodiscard]] std::string_view name() const noexcept override { return "lammps"; }
-  /// The banner version of the installed binary, empty when it is not in PATH.
+  /// The banner version of the binary, empty when it is not found. The binary is probed once per
+  /// engine object (an empty run, at most options.probe_timeout_s).
   [[nodiscard]] std::optional<std::string> version() const override;
+  /// The binary's full path, or why it was not found.
+  [[nodiscard]] std::string location() const override;
   [[nodiscard]] Support supports(const cases::Scene& scene) const override;
   [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
                                      const RunOptions& options) const override;
 
  private:
+  /// The probe of the binary, run on first use.
+  const lammps::LammpsProbe& probe() const;
+
   LammpsOptions options_;
+  mutable std::once_flag probed_;
+  mutable lammps::LammpsProbe probe_;
 };
 
 }  // namespace reference

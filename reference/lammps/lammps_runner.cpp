@@ -10,8 +10,10 @@
 #include <fmt/format.h>
 
 #include "reference/lammps/log_scan.hpp"
+#include "support/interrupts.hpp"
 #include "support/process.hpp"
 #include "support/text_file.hpp"
+#include "support/utf8.hpp"
 
 namespace reference::lammps {
 namespace {
@@ -60,26 +62,43 @@ std::filesystem::path make_run_directory(const std::filesystem::path& parent) {
   return pattern;
 }
 
-std::optional<std::string> lammps_version(const std::string& program) {
-  if (!support::find_program(program)) return std::nullopt;
+LammpsProbe probe_lammps(const std::string& program, double timeout_s) {
+  LammpsProbe probe;
+  if (!support::find_program(program)) return probe;
   std::filesystem::path dir;
   try {
     dir = make_run_directory({});
   } catch (const std::exception& e) {
-    return fmt::format("LAMMPS (version unknown: {})", e.what());
+    probe.version = fmt::format("LAMMPS (version unknown: {})", e.what());
+    return probe;
   }
+  const support::OwnedPathGuard partial(dir);
   support::ProcessSpec spec;
   spec.argv = {program, "-in", "/dev/null", "-log", (dir / kLogFile).string(), "-screen", "none"};
   spec.environment = {{"OMP_NUM_THREADS", "1"}};
-  spec.timeout_s = 60.0;
+  spec.timeout_s = timeout_s;
   const support::ProcessResult r = support::run_process(spec);
+  probe.seconds = r.wall_time_s;
+  probe.timed_out = r.timed_out;
   const std::optional<std::string> banner = banner_version(read_or_empty(dir / kLogFile));
   std::error_code ignored;
   std::filesystem::remove_all(dir, ignored);
-  if (banner) return banner;
-  if (!r.started) return fmt::format("LAMMPS (version unknown: {})", r.error);
-  return fmt::format("LAMMPS (version unknown: {} wrote no banner, exit status {})", program,
-                     r.exit_code);
+  if (r.timed_out) {
+    probe.version = fmt::format("LAMMPS (version unknown: {} did not finish an empty run within {:.3g} s)",
+                                program, timeout_s);
+  } else if (banner) {
+    probe.version = support::printable_utf8(*banner);
+  } else if (!r.started) {
+    probe.version = fmt::format("LAMMPS (version unknown: {})", r.error);
+  } else {
+    probe.version = fmt::format("LAMMPS (version unknown: {} wrote no banner, exit status {})", program,
+                                r.exit_code);
+  }
+  return probe;
+}
+
+std::optional<std::string> lammps_version(const std::string& program, double timeout_s) {
+  return probe_lammps(program, timeout_s).version;
 }
 
 LammpsRunOutcome run_lammps(const std::string& program, const std::filesystem::path& dir,

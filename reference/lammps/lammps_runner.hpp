@@ -14,10 +14,24 @@ inline constexpr const char* kLogFile = "log.lammps";
 inline constexpr const char* kStdoutFile = "stdout.txt";
 inline constexpr const char* kStderrFile = "stderr.txt";
 
-/// Version of the LAMMPS binary `program` ("LAMMPS 29 Sep 2021 - Update 2"), read from the log
-/// banner of an empty run (`-in /dev/null -log … -screen none`); empty when `program` is not
-/// found in PATH. A binary that runs but prints no banner gives "LAMMPS (version unknown: …)".
-std::optional<std::string> lammps_version(const std::string& program);
+/// Seconds the version probe may take by default: an empty run prints its banner in well under
+/// one second, so a binary that has not answered in ten is hung.
+inline constexpr double kProbeTimeout = 10.0;
+
+/// What asking a LAMMPS binary for its version found.
+struct LammpsProbe {
+  std::optional<std::string> version;  ///< empty when the program is not found
+  bool timed_out = false;              ///< the binary did not finish the empty run in time
+  double seconds = 0.0;                ///< how long the probe took
+};
+
+/// Runs `program` on an empty input (`-in /dev/null -log … -screen none`, killed after
+/// `timeout_s`) and reads the version from its log banner ("LAMMPS 29 Sep 2021 - Update 2").
+/// A binary that runs but prints no banner gives "LAMMPS (version unknown: …)".
+LammpsProbe probe_lammps(const std::string& program, double timeout_s);
+
+/// The version of probe_lammps(program, timeout_s), empty when `program` is not found.
+std::optional<std::string> lammps_version(const std::string& program, double timeout_s = kProbeTimeout);
 
 /// How one LAMMPS run ended.
 struct LammpsRunOutcome {

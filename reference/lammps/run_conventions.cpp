@@ -58,8 +58,7 @@ bool has_jkr(const cases::Scene& scene) { return scene.model.cohesion == "jkr"; 
 
 std::map<std::string, std::string> run_conventions(const cases::Scene& scene, double dt,
                                                    std::uint64_t steps,
-                                                   const std::string& version,
-                                                   const std::filesystem::path& dir) {
+                                                   const std::string& version) {
   const AtomTypes types = classify_particles(scene);
   std::map<std::string, std::string> c;
   std::string integrator = fmt::format(
@@ -135,7 +134,6 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, do
       "every column printed as $(formula:%.17g) with its formula written out: LAMMPS 2021 "
       "passes v_name references through %.15g";
   c["LAMMPS version"] = version;
-  c["run directory"] = dir.string();
   return c;
 }
 

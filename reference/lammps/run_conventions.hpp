@@ -13,11 +13,10 @@ namespace reference::lammps {
 /// The conventions and workarounds of a LAMMPS run of `scene`, for reports (RunResult::
 /// conventions): integrator, time step, rotation, contact onset, fix freeze and m_eff, explicit
 /// pair coefficients, η per type pair, the registry's mapping text of each chosen sub-model, box,
-/// gravity, where each trace column comes from, output precision, version and run directory.
+/// gravity, where each trace column comes from, output precision and version (the run directory is RunResult::scratch_dir).
 std::map<std::string, std::string> run_conventions(const cases::Scene& scene, double dt,
                                                    std::uint64_t steps,
-                                                   const std::string& version,
-                                                   const std::filesystem::path& dir);
+                                                   const std::string& version);
 
 /// Metrics of `scene` that LAMMPS cannot produce as the case defines them, with the reason:
 /// with JKR cohesion and jkr_rupture = "displacement", LAMMPS 2021 breaks the neck at the

@@ -59,8 +59,27 @@ std::vector<cases::Snapshot> read_snapshots(const std::filesystem::path& dir,
 
 YadeEngine::YadeEngine(yade::YadeInstallation install) : install_(std::move(install)) {}
 
+YadeEngine YadeEngine::from_launcher(const std::string& program) {
+  const yade::LauncherLookup found = yade::find_yade_installation(program);
+  YadeEngine engine(found.install.value_or(yade::YadeInstallation{}));
+  engine.launcher_ = found.launcher.string();
+  engine.problem_ = found.problem;
+  return engine;
+}
+
 std::optional<std::string> YadeEngine::version() const {
+  if (!problem_.empty()) return std::nullopt;
   return yade::detect_yade_version(install_);
+}
+
+std::string YadeEngine::location() const {
+  if (!problem_.empty()) return problem_;
+  const std::string where = fmt::format("python {}, modules {}", install_.python.string(), install_.module_dir.string());
+  if (!yade::detect_yade_version(install_)) {
+    return fmt::format("{}{}: the interpreter is not executable or yade/config.py names no version",
+                       launcher_.empty() ? "" : launcher_ + " → ", where);
+  }
+  return launcher_.empty() ? where : fmt::format("{} → {}", launcher_, where);
 }
 
 Support YadeEngine::supports(const cases::Scene& scene) const {
@@ -71,8 +90,15 @@ Support YadeEngine::supports(const cases::Scene& scene) const {
 }
 
 cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& options) const {
-  const yade::YadeRunPlan plan = yade::make_run_plan(scene);
   cases::RunResult result;
+  // The script writer assumes a supported scene (e.g. axis-aligned walls); a caller that skipped
+  // supports() gets n/a, never a script written from a scene it cannot express.
+  if (Support s{yade::unsupported_scene_features(scene)}; !s.supported()) {
+    result.status = cases::RunStatus::not_applicable;
+    result.reason = s.explain();
+    return result;
+  }
+  const yade::YadeRunPlan plan = yade::make_run_plan(scene);
   result.status = cases::RunStatus::error;
   if (!plan.model.reasons.empty()) {
     result.status = cases::RunStatus::not_applicable;
@@ -83,7 +109,7 @@ cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& op
   const yade::YadeProcessOutcome outcome =
       yade::run_yade_script(install_, script, options.work_dir, options.timeout_s);
   result.conventions = plan.conventions;
-  result.conventions["work directory"] = outcome.directory.string();
+  result.scratch_dir = outcome.directory.string();
   result.warnings = plan.warnings;
   for (auto& w : yade::unproduced_outputs(scene)) result.warnings.push_back(std::move(w));
   result.log_tail = outcome.log_tail;
@@ -112,7 +138,7 @@ cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& op
   if (options.work_dir.empty()) {  // no place to keep it: a temporary directory, removed
     std::error_code ec;
     std::filesystem::remove_all(outcome.directory, ec);
-    result.conventions["work directory"] = "temporary, removed after the run";
+    result.scratch_dir.clear();
   }
   return result;
 }

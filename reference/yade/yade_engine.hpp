@@ -15,15 +15,22 @@ class YadeEngine final : public Engine {
  public:
   /// The engine for the YADE found at `install` (the Debian layout by default).
   explicit YadeEngine(yade::YadeInstallation install = yade::default_yade_installation());
+  /// The engine for the YADE whose launcher script is `program` (a path or a name in PATH); a
+  /// launcher that is absent or unreadable gives an engine that is `missing`, with the reason.
+  static YadeEngine from_launcher(const std::string& program);
 
   [[nodiscard]] std::string_view name() const noexcept override { return "yade"; }
   [[nodiscard]] std::optional<std::string> version() const override;
+  /// The launcher, interpreter and module directory, or why YADE was not found.
+  [[nodiscard]] std::string location() const override;
   [[nodiscard]] Support supports(const cases::Scene& scene) const override;
   [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
                                      const RunOptions& options) const override;
 
  private:
   yade::YadeInstallation install_;
+  std::string launcher_;  ///< the launcher the installation was read from, if any
+  std::string problem_;   ///< why there is no installation (the engine is then missing)
 };
 
 }  // namespace reference

@@ -19,6 +19,22 @@ struct YadeInstallation {
 /// The Debian 2023.02a layout: /usr/bin/python3.11 and the double-precision build's modules.
 YadeInstallation default_yade_installation();
 
+/// What a `yade` launcher script says about its installation: the interpreter of its `#!` line
+/// (with `/usr/bin/env NAME`, the bare NAME) and the module directory of its
+/// `sys.path.insert(1,'…')` line. Empty when the text is not such a script. Pure.
+std::optional<YadeInstallation> parse_yade_launcher(std::string_view launcher_text);
+
+/// A YADE installation found from its launcher, or why not.
+struct LauncherLookup {
+  std::optional<YadeInstallation> install;
+  std::filesystem::path launcher;  ///< full path of the launcher, when found
+  std::string problem;             ///< why there is no installation (empty when found)
+};
+
+/// Finds the launcher `program` (a path, or a name searched in PATH), reads its first 64 KiB and
+/// resolves its interpreter in PATH when the `#!` line names it through env.
+LauncherLookup find_yade_installation(const std::string& program);
+
 /// The value of `version='…'` in the text of yade/config.py, or empty. Pure.
 std::optional<std::string> parse_config_version(std::string_view config_text);
 

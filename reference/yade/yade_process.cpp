@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "reference/yade/runner_script.hpp"
+#include "support/interrupts.hpp"
 #include "support/text_file.hpp"
 
 namespace reference::yade {
@@ -61,6 +62,7 @@ YadeProcessOutcome run_yade_script(const YadeInstallation& install, std::string_
                                          ? std::filesystem::temp_directory_path() / "demwb-yade"
                                          : work_root;
   out.directory = unique_directory(std::filesystem::absolute(root));
+  const support::OwnedPathGuard partial(out.directory);  // removed if interrupted mid-run
   support::write_file(out.directory / "runner.py", yade_runner_script(install.module_dir));
   support::write_file(out.directory / "script.py", script);
 

@@ -15,6 +15,7 @@
 
 namespace {
 
+using demwb_e2e::canonical;
 using demwb_e2e::demwb;
 using demwb_e2e::scratch;
 namespace fs = std::filesystem;
@@ -69,6 +70,27 @@ TEST(DemwbBadInput, ACoarseTimestepIsAWarningNamingTheKeyNotAnError) {
   const auto r = demwb({"run", file.string(), "--engine", "inhouse", "-o", scratch("coarse_out").string()});
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE((r.out + r.err).find("integration.timestep"), std::string::npos) << r.out << r.err;
+}
+
+TEST(DemwbBadInput, ADeviceOrDirectoryIsRefusedWithoutReadingIt) {
+  for (const std::string& path : std::vector<std::string>{"/dev/zero", std::filesystem::temp_directory_path().string()}) {
+    const auto r = demwb({"run", path}, {}, 30);
+    EXPECT_EQ(r.exit_code, 2) << path;
+    EXPECT_NE(r.err.find(path), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("must be a regular file"), std::string::npos) << r.err;
+  }
+}
+
+TEST(DemwbBadInput, ARunWhoseOutputExceedsMaxMemoryIsRefusedNamingTheKeys) {
+  const auto r = demwb({"run", canonical("single_collision"), "--max-memory", "64K", "-o", scratch("max_memory").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("single_collision.toml"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("output.trace_every"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("more than the limit of 65536 bytes"), std::string::npos) << r.err;
+  EXPECT_EQ(demwb({"run", canonical("single_collision"), "--max-memory", "1M", "-o", scratch("max_memory_ok").string()}).exit_code, 0);
+  const auto bad = demwb({"run", canonical("single_collision"), "--max-memory", "lots"});
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--max-memory 'lots'"), std::string::npos) << bad.err;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "demwb_process.hpp"
+#include "support/sha256.hpp"
 #include "support/text_file.hpp"
 
 namespace {
@@ -17,6 +18,13 @@ using demwb_e2e::demwb;
 using demwb_e2e::scratch;
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
+
+/// `baseline` signed as the workbench signs baselines: "sha256" over its compact text without it.
+std::string signed_baseline(Json baseline) {
+  baseline.erase("sha256");
+  baseline["sha256"] = support::sha256_hex(baseline.dump());
+  return baseline.dump(1);
+}
 
 /// A suite folder holding the canonical single collision with one tolerance replaced.
 fs::path strict_suite(const std::string& name, const std::string& from, const std::string& to) {
@@ -82,15 +90,24 @@ TEST(DemwbGate, AnInhouseMetricThatDriftedFromAnEditedBaselineFails) {
   baseline["references"] = Json::object();
   baseline["inhouse_metrics"] = {{"contact_duration", now * 1.01}};  // 1 % off, tolerance 0.1 %
   const fs::path file = scratch("gate_drift_baseline") / "single_collision.json";
-  support::write_file(file, baseline.dump(1));
+  support::write_file(file, signed_baseline(baseline));
   const auto r = demwb({"gate", run.string(), "--baseline", file.string()});
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("in-house contact_duration drifted from the baseline"), std::string::npos) << r.out;
 
   baseline["inhouse_metrics"] = {{"contact_duration", now}};
-  support::write_file(file, baseline.dump(1));
+  support::write_file(file, signed_baseline(baseline));
   const auto same = demwb({"gate", run.string(), "--baseline", file.string()});
   EXPECT_EQ(same.exit_code, 0) << same.out << same.err;
+
+  // Edited by hand without its checksum: refused, never read as a baseline that agrees.
+  Json edited = Json::parse(signed_baseline(baseline));
+  edited["inhouse_metrics"]["contact_duration"] = now * 1.01;
+  support::write_file(file, edited.dump(1));
+  const auto tampered = demwb({"gate", run.string(), "--baseline", file.string()});
+  EXPECT_EQ(tampered.exit_code, 1) << tampered.out << tampered.err;
+  EXPECT_NE(tampered.out.find("the drift check cannot use its baseline"), std::string::npos) << tampered.out;
+  EXPECT_NE(tampered.out.find("does not match its sha256"), std::string::npos) << tampered.out;
 }
 
 TEST(DemwbGate, AOneEngineCaseDriftsByItsOwnTolerances) {
@@ -122,7 +139,7 @@ TEST(DemwbGate, AOneEngineCaseDriftsByItsOwnTolerances) {
   baseline["fingerprint"] = "made by the test";
   baseline["references"] = Json::object();
   baseline["inhouse_metrics"] = {{"contact_duration", now * (1.0 + 1e-5)}};
-  support::write_file(dir / "baseline.json", baseline.dump(1));
+  support::write_file(dir / "baseline.json", signed_baseline(baseline));
   const auto r = demwb({"gate", run.string(), "--baseline", (dir / "baseline.json").string()});
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("in-house contact_duration drifted from the baseline"), std::string::npos) << r.out;

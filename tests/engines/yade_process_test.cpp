@@ -127,7 +127,8 @@ TEST(YadeProcess, ConcurrentRunsUseTheirOwnDirectories) {
   const auto rb = b.get();
   ASSERT_EQ(ra.status, cases::RunStatus::ok) << ra.reason << "\n" << ra.log_tail;
   ASSERT_EQ(rb.status, cases::RunStatus::ok) << rb.reason << "\n" << rb.log_tail;
-  EXPECT_NE(ra.conventions.at("work directory"), rb.conventions.at("work directory"));
+  EXPECT_NE(ra.scratch_dir, rb.scratch_dir);
+  EXPECT_FALSE(ra.scratch_dir.empty());
   for (const auto& name : ra.trace.columns()) {
     EXPECT_EQ(*ra.trace.column(name), *rb.trace.column(name)) << name;
   }

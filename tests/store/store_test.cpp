@@ -2,6 +2,7 @@
 // Results that outlive a run: RunResult JSON round trip, the reference-result cache and baselines.
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <limits>
 
 #include <unistd.h>
@@ -103,21 +104,24 @@ TEST(ResultCache, ReturnsAStoredResultOnlyForTheSameSceneEngineAndVersion) {
   const store::ResultCache cache(scratch("cache"));
   const cases::Scene scene = single_collision();
   const cases::RunResult r = sample_result();
-  EXPECT_FALSE(cache.find(scene, "lammps", r.version));
+  EXPECT_FALSE(cache.find(scene, "lammps", r.version).hit);
   cache.store(scene, r, r.version);
-  const auto hit = cache.find(scene, "lammps", r.version);
-  ASSERT_TRUE(hit);
-  EXPECT_EQ(hit->source, "cache");
-  EXPECT_EQ(hit->trace.values(1)[0], 0.1 + 0.2);
-  EXPECT_EQ(hit->calibrations.size(), 1U);
-  EXPECT_FALSE(cache.find(scene, "lammps", "LAMMPS 2 Aug 2023"));
-  EXPECT_FALSE(cache.find(scene, "yade", r.version));
+  const auto found = cache.find(scene, "lammps", r.version);
+  ASSERT_TRUE(found.hit) << found.problem;
+  EXPECT_EQ(found.problem, "");
+  EXPECT_EQ(found.hit->source, "cache");
+  EXPECT_EQ(found.hit->trace.values(1)[0], 0.1 + 0.2);
+  EXPECT_EQ(found.hit->calibrations.size(), 1U);
+  EXPECT_FALSE(cache.find(scene, "lammps", "LAMMPS 2 Aug 2023").hit);
+  EXPECT_FALSE(cache.find(scene, "yade", r.version).hit);
   cases::Scene changed = scene;
   changed.integration.timestep = 2.0 * *scene.integration.timestep;
-  EXPECT_FALSE(cache.find(changed, "lammps", r.version));
+  EXPECT_FALSE(cache.find(changed, "lammps", r.version).hit);
+  // Absent is not a problem; only an entry that exists and cannot be trusted is.
+  EXPECT_EQ(cache.find(changed, "lammps", r.version).problem, "");
 }
 
-TEST(ResultCache, KeepsOnlySuccessfulRunsAndTreatsACorruptEntryAsAbsent) {
+TEST(ResultCache, KeepsOnlySuccessfulRunsAndReportsACorruptEntry) {
   const store::ResultCache cache(scratch("corrupt"));
   const cases::Scene scene = single_collision();
   cases::RunResult failed = sample_result();
@@ -127,7 +131,57 @@ TEST(ResultCache, KeepsOnlySuccessfulRunsAndTreatsACorruptEntryAsAbsent) {
   const cases::RunResult ok = sample_result();
   cache.store(scene, ok, ok.version);
   support::write_file(cache.path_of(scene, "lammps", ok.version), "{ not json");
-  EXPECT_FALSE(cache.find(scene, "lammps", ok.version));
+  const auto found = cache.find(scene, "lammps", ok.version);
+  EXPECT_FALSE(found.hit);
+  EXPECT_NE(found.problem.find("unreadable"), std::string::npos) << found.problem;
+}
+
+/// The stored entry of `r` for `scene`, parsed.
+nlohmann::ordered_json stored_entry(const store::ResultCache& cache, const cases::Scene& scene, const cases::RunResult& r) {
+  return nlohmann::ordered_json::parse(support::read_file(cache.path_of(scene, r.engine, r.version)));
+}
+
+TEST(ResultCache, DetectsEveryKindOfTamperingWithAnEntry) {
+  const store::ResultCache cache(scratch("tamper"));
+  const cases::Scene scene = single_collision();
+  const cases::RunResult r = sample_result();
+  const fs::path file = cache.path_of(scene, r.engine, r.version);
+  using Json = nlohmann::ordered_json;
+  // Each edit: what a careless or malicious hand might change. A forged "error" status, a trace
+  // scaled by 1 + 1e-5, a forged exact metric, a removed checksum, a checksum recomputed over a
+  // result that is not a success.
+  const std::vector<std::pair<std::string, std::function<Json(Json)>>> edits = {
+      {"trace scaled", [](Json j) { j["result"]["trace"]["p0.x"][1] = j["result"]["trace"]["p0.x"][1].get<double>() * (1 + 1e-5); return j; }},
+      {"exact metric forged", [](Json j) { j["result"]["exact_metrics"]["restitution"] = 0.75; return j; }},
+      {"status forged", [](Json j) { j["result"]["status"] = "error"; return j; }},
+      {"checksum removed", [](Json j) { j.erase("sha256"); return j; }},
+      {"error re-signed", [](Json j) { j["result"]["status"] = "error"; return store::with_checksum(j); }},
+      {"engine re-signed", [](Json j) { j["engine"] = "yade"; return store::with_checksum(j); }},
+  };
+  for (const auto& [what, edit] : edits) {
+    cache.store(scene, r, r.version);
+    ASSERT_TRUE(cache.find(scene, r.engine, r.version).hit) << what;
+    const Json entry = stored_entry(cache, scene, r);
+    ASSERT_TRUE(entry.contains("result")) << what;
+    support::write_file(file, edit(entry).dump());
+    const auto found = cache.find(scene, r.engine, r.version);
+    EXPECT_FALSE(found.hit) << what;
+    EXPECT_NE(found.problem.find(file.string()), std::string::npos) << what << ": " << found.problem;
+  }
+}
+
+TEST(ResultCache, WritesEntriesAtomicallyAndLeavesNoTemporaryFiles) {
+  const store::ResultCache cache(scratch("atomic"));
+  const cases::Scene scene = single_collision();
+  const cases::RunResult r = sample_result();
+  for (int i = 0; i < 3; ++i) cache.store(scene, r, r.version);
+  std::size_t files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(cache.dir())) {
+    if (!entry.is_regular_file()) continue;
+    ++files;
+    EXPECT_EQ(entry.path().string().find(".tmp-"), std::string::npos) << entry.path();
+  }
+  EXPECT_EQ(files, 1U);
 }
 
 TEST(Baseline, RoundTripsAndNamesTheFileWhenUnreadable) {
@@ -144,6 +198,17 @@ TEST(Baseline, RoundTripsAndNamesTheFileWhenUnreadable) {
   EXPECT_EQ(back.inhouse_metrics, b.inhouse_metrics);
   ASSERT_EQ(back.references.count("lammps"), 1U);
   EXPECT_EQ(back.references.at("lammps").calibrations.size(), 1U);
+  // An edited baseline fails its checksum and is refused, naming the file.
+  auto edited = nlohmann::ordered_json::parse(support::read_file(dir / "single_collision.json"));
+  edited["inhouse_metrics"]["restitution"] = 0.99995;
+  support::write_file(dir / "edited.json", edited.dump(1));
+  try {
+    static_cast<void>(store::read_baseline(dir / "edited.json"));
+    FAIL() << "an edited baseline was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("edited.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("sha256"), std::string::npos) << e.what();
+  }
   support::write_file(dir / "broken.json", "[]");
   try {
     static_cast<void>(store::read_baseline(dir / "broken.json"));

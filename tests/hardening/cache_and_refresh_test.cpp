@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// With the real reference codes: `refresh canonical` exits 0 (n/a is an answer, not a failure), a
+// tampered cache entry is detected and run again, a tampered baseline is refused, and two
+// --reproducible runs write byte-identical results.json.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "support/process.hpp"
+#include "tests/app/demwb_process.hpp"
+
+namespace {
+
+using demwb_e2e::canonical;
+using demwb_e2e::demwb;
+using demwb_e2e::scratch;
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+bool have_lammps() { return support::find_program("lmp").has_value(); }
+bool have_yade() { return support::find_program("yade").has_value(); }
+
+TEST(Refresh, TheCanonicalSuiteExitsZeroWithItsNotApplicableRows) {
+  if (!have_lammps() || !have_yade()) GTEST_SKIP() << "needs LAMMPS and YADE (scripts/setup.sh installs them)";
+  const auto r = demwb({"refresh", "canonical", "--cache", scratch("refresh-cache").string(), "-o",
+                        scratch("refresh-out").string()});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("| n/a |"), std::string::npos) << "the suite has cases a code cannot express: " << r.out;
+  EXPECT_EQ(r.out.find("| error |"), std::string::npos) << r.out;
+}
+
+TEST(Refresh, AMissingReferenceCodeFailsIt) {
+  const auto r = demwb({"refresh", canonical("single_collision"), "--lammps", "/nonexistent/lmp", "--cache",
+                        scratch("refresh-missing-cache").string(), "-o", scratch("refresh-missing-out").string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("| lammps | missing |"), std::string::npos) << r.out;
+}
+
+/// The single cache entry of `engine` under `cache`.
+fs::path only_entry(const fs::path& cache, const std::string& engine) {
+  std::vector<fs::path> found;
+  for (const auto& e : fs::directory_iterator(cache / engine)) found.push_back(e.path());
+  EXPECT_EQ(found.size(), 1U);
+  return found.empty() ? fs::path() : found.front();
+}
+
+TEST(Cache, ATamperedEntryIsDetectedRunAgainAndReplaced) {
+  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
+  const fs::path cache = scratch("tamper-cache");
+  const std::vector<std::string> base{"run", canonical("single_collision"), "--engine", "analytic,lammps", "--cache",
+                                      cache.string()};
+  const fs::path first = scratch("tamper-first");
+  const fs::path second_out = scratch("tamper-second");
+  const fs::path third_out = scratch("tamper-third");
+  auto with_out = [&](const fs::path& out) {
+    auto a = base;
+    a.insert(a.end(), {"-o", out.string()});
+    return a;
+  };
+  ASSERT_EQ(demwb(with_out(first)).exit_code, 0);
+  const fs::path entry = only_entry(cache, "lammps");
+  const std::string genuine = support::read_file(entry);
+  // Scale every position of the stored trace by 1 + 1e-5: valid JSON, plausible numbers.
+  Json j = Json::parse(genuine);
+  for (auto& v : j["result"]["trace"]["p0.x"]) v = v.get<double>() * (1 + 1e-5);
+  support::write_file(entry, j.dump());
+  const auto second = demwb(with_out(second_out));
+  EXPECT_EQ(second.exit_code, 0) << second.out << second.err;
+  const Json results = Json::parse(support::read_file(second_out / "results.json"));
+  const Json& lammps = results["engines"]["lammps"];
+  EXPECT_EQ(lammps["source"], "run") << "the tampered entry was served";
+  EXPECT_NE(lammps["warnings"].dump().find("cache entry not trusted"), std::string::npos) << lammps.dump(1);
+  // Replaced by a genuine entry again: a third run is a cache hit.
+  EXPECT_EQ(Json::parse(support::read_file(entry))["result"]["trace"], Json::parse(genuine)["result"]["trace"]);
+  ASSERT_EQ(demwb(with_out(third_out)).exit_code, 0);
+  const Json third = Json::parse(support::read_file(third_out / "results.json"));
+  EXPECT_EQ(third["engines"]["lammps"]["source"], "cache");
+}
+
+TEST(Baselines, AnEditedBaselineIsRefusedNotUsed) {
+  // LAMMPS "absent", so the run falls back to the committed baseline, which has been edited.
+  const fs::path dir = scratch("edited-baselines");
+  fs::create_directories(dir);
+  Json b = Json::parse(support::read_file(fs::path(DEMWB_SOURCE_DIR) / "cases/baselines/single_collision.json"));
+  ASSERT_TRUE(b.contains("sha256")) << "committed baselines carry their checksum";
+  b["references"]["lammps"]["trace"]["p0.x"][10] = 0.0;
+  support::write_file(dir / "single_collision.json", b.dump(1));
+  const fs::path out = scratch("edited-baselines-out");
+  const auto r = demwb({"run", canonical("single_collision"), "--engine", "analytic,lammps", "--lammps",
+                        "/nonexistent/lmp", "--no-cache", "--baselines", dir.string(), "-o", out.string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  const Json results = Json::parse(support::read_file(out / "results.json"));
+  EXPECT_EQ(results["engines"]["lammps"]["status"], "error");
+  EXPECT_NE(results["engines"]["lammps"]["reason"].get<std::string>().find("sha256"), std::string::npos)
+      << results["engines"]["lammps"].dump(1);
+}
+
+TEST(Reproducible, TwoFreshRunsWriteIdenticalResults) {
+  if (!have_lammps() || !have_yade()) GTEST_SKIP() << "needs LAMMPS and YADE (scripts/setup.sh installs them)";
+  std::vector<std::string> texts;
+  for (const char* name : {"repro-a", "repro-b"}) {
+    const fs::path out = scratch(name);
+    const auto r = demwb({"run", canonical("single_collision"), "--no-cache", "--reproducible", "-o", out.string()});
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+    texts.push_back(support::read_file(out / "results.json"));
+  }
+  EXPECT_EQ(texts[0], texts[1]);
+  EXPECT_EQ(texts[0].find("scratch_directory"), std::string::npos);
+  EXPECT_EQ(texts[0].find("wall_time_s"), std::string::npos);
+}
+
+}  // namespace

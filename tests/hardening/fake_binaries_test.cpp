@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: MIT
+// Reference binaries chosen with --lammps/--yade (or DEMWB_LAMMPS/DEMWB_YADE) that fail, hang or
+// write damaged output: every fault is an `error` (absent: `missing`) that fails the run, and a
+// hung binary is reported within --timeout + 10 s.
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "reference/yade/yade_installation.hpp"
+#include "fake_engines.hpp"
+#include "tests/app/demwb_process.hpp"
+
+namespace {
+
+using namespace demwb_hardening;
+using demwb_e2e::canonical;
+using demwb_e2e::demwb;
+using demwb_e2e::scratch;
+using Json = nlohmann::json;
+
+/// True when the process `pid` has ended (gone, or a zombie nobody has reaped yet).
+bool ended(const std::string& pid) {
+  std::ifstream stat("/proc/" + pid + "/stat");
+  if (!stat) return true;
+  std::string line;
+  std::getline(stat, line);
+  const auto close = line.rfind(')');
+  return close != std::string::npos && line.size() > close + 2 && line[close + 2] == 'Z';
+}
+
+/// Every pid listed in `file` (one per line) has ended.
+void expect_all_ended(const fs::path& file) {
+  std::ifstream in(file);
+  std::string pid;
+  int seen = 0;
+  while (in >> pid) {
+    ++seen;
+    EXPECT_TRUE(ended(pid)) << "process " << pid << " of a fake binary is still running";
+  }
+  EXPECT_GT(seen, 0) << "the fake binary never started (" << file << ")";
+}
+
+/// What one run of single_collision on `engine` reported.
+struct Reported {
+  int exit_code;
+  std::string status;
+  std::string reason;
+  double seconds;
+  std::string output;
+};
+
+/// Runs single_collision on `engine` alone with `extra` options (no cache), timing it.
+Reported run_single(const std::string& engine, std::vector<std::string> extra, const std::string& name,
+                    const std::map<std::string, std::string>& env = {}) {
+  const fs::path out = scratch(name);
+  std::vector<std::string> args{"run", canonical("single_collision"), "--engine", engine, "--no-cache", "-o", out.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = demwb(args, env, 120);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Reported rep{r.exit_code, "", "", seconds, r.out + r.err};
+  std::error_code ec;
+  if (fs::exists(out / "results.json", ec)) {
+    const Json j = Json::parse(support::read_file(out / "results.json"));
+    rep.status = j["engines"][engine]["status"];
+    rep.reason = j["engines"][engine].value("reason", "");
+  }
+  return rep;
+}
+
+bool have_lammps() { return support::find_program("lmp").has_value(); }
+
+TEST(FakeLammps, EveryFaultIsAnErrorThatFailsTheRun) {
+  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
+  const fs::path lmp = *support::find_program("lmp");
+  const std::vector<std::pair<Fault, std::string>> faults = {
+      {Fault::exit_1, "deliberate failure of a fake lmp"},
+      {Fault::garbage, ""},
+      {Fault::nan, "non-finite"},
+      {Fault::truncated, ""},
+  };
+  for (const auto& [fault, says] : faults) {
+    const auto label = std::to_string(static_cast<int>(fault));
+    const fs::path fake = fake_lammps(scratch("fake-lmp-" + label), fault, lmp, scratch("fake-lmp-pid-" + label));
+    const Reported r = run_single("lammps", {"--lammps", fake.string()}, "fake-lmp-run-" + label);
+    EXPECT_EQ(r.exit_code, 1) << label << r.output;
+    EXPECT_EQ(r.status, "error") << label << ": " << r.reason;
+    EXPECT_NE(r.reason.find(says), std::string::npos) << label << ": " << r.reason;
+  }
+}
+
+TEST(FakeLammps, AnAbsentBinaryIsMissingAndFailsTheRun) {
+  // No baselines to fall back on (an empty directory): the absent code is `missing`.
+  const std::string none = scratch("no-baselines").string();
+  fs::create_directories(none);
+  const Reported flag = run_single("lammps", {"--lammps", "/nonexistent/lmp", "--baselines", none}, "absent-lmp");
+  EXPECT_EQ(flag.exit_code, 1) << flag.output;
+  EXPECT_EQ(flag.status, "missing");
+  EXPECT_NE(flag.reason.find("/nonexistent/lmp"), std::string::npos) << flag.reason;
+  const Reported env =
+      run_single("lammps", {"--baselines", none}, "absent-lmp-env", {{"DEMWB_LAMMPS", "/nonexistent/lmp-from-env"}});
+  EXPECT_EQ(env.status, "missing");
+  EXPECT_NE(env.reason.find("lmp-from-env"), std::string::npos) << env.reason;
+}
+
+TEST(FakeLammps, AHungRunIsReportedWithinTheTimeoutAndKilled) {
+  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
+  const fs::path pids = scratch("hang-lmp-pid");
+  const fs::path fake = fake_lammps(scratch("hang-lmp"), Fault::hang, *support::find_program("lmp"), pids);
+  const Reported r = run_single("lammps", {"--lammps", fake.string(), "--timeout", "3"}, "hang-lmp-run");
+  EXPECT_EQ(r.status, "error");
+  EXPECT_NE(r.reason.find("timed out"), std::string::npos) << r.reason;
+  EXPECT_LT(r.seconds, 3 + 10);
+  expect_all_ended(pids);
+}
+
+TEST(FakeLammps, ABinaryThatHangsOnTheVersionProbeIsReportedWithinTheTimeout) {
+  const fs::path pids = scratch("hang-probe-pid");
+  const fs::path fake = fake_lammps(scratch("hang-probe"), Fault::hang_probe, "/bin/false", pids);
+  const Reported r = run_single("lammps", {"--lammps", fake.string(), "--timeout", "4"}, "hang-probe-run");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.status, "error");
+  EXPECT_NE(r.reason.find("did not finish an empty run within 4 s"), std::string::npos) << r.reason;
+  EXPECT_LT(r.seconds, 4 + 10);
+  expect_all_ended(pids);
+}
+
+/// The installed YADE's interpreter and modules, if any.
+std::optional<reference::yade::YadeInstallation> installed_yade() {
+  return reference::yade::find_yade_installation("yade").install;
+}
+
+TEST(FakeYade, EveryFaultIsAnErrorThatFailsTheRun) {
+  const auto yade = installed_yade();
+  if (!yade) GTEST_SKIP() << "YADE is not installed (scripts/setup.sh installs it)";
+  const std::vector<std::pair<Fault, std::string>> faults = {
+      {Fault::exit_1, "deliberate failure of a fake python"},
+      {Fault::garbage, ""},
+      {Fault::nan, ""},
+      {Fault::truncated, ""},
+  };
+  for (const auto& [fault, says] : faults) {
+    const auto label = std::to_string(static_cast<int>(fault));
+    const fs::path fake =
+        fake_yade(scratch("fake-yade-" + label), fault, yade->python, yade->module_dir, scratch("fake-yade-pid-" + label));
+    const Reported r = run_single("yade", {"--yade", fake.string()}, "fake-yade-run-" + label);
+    EXPECT_EQ(r.exit_code, 1) << label << r.output;
+    EXPECT_EQ(r.status, "error") << label << ": " << r.reason;
+    EXPECT_NE(r.reason.find(says), std::string::npos) << label << ": " << r.reason;
+  }
+}
+
+TEST(FakeYade, AnAbsentOrForeignLauncherIsMissingAndFailsTheRun) {
+  const std::string none = scratch("no-yade-baselines").string();
+  fs::create_directories(none);
+  const Reported absent = run_single("yade", {"--yade", "/nonexistent/yade", "--baselines", none}, "absent-yade");
+  EXPECT_EQ(absent.exit_code, 1) << absent.output;
+  EXPECT_EQ(absent.status, "missing");
+  EXPECT_NE(absent.reason.find("/nonexistent/yade"), std::string::npos) << absent.reason;
+  const Reported foreign = run_single("yade", {"--baselines", none}, "foreign-yade", {{"DEMWB_YADE", "/bin/sh"}});
+  EXPECT_EQ(foreign.status, "missing");
+  EXPECT_NE(foreign.reason.find("not a YADE launcher"), std::string::npos) << foreign.reason;
+}
+
+TEST(FakeYade, AHungRunIsReportedWithinTheTimeoutAndKilled) {
+  const auto yade = installed_yade();
+  if (!yade) GTEST_SKIP() << "YADE is not installed (scripts/setup.sh installs it)";
+  const fs::path pids = scratch("hang-yade-pid");
+  const fs::path fake = fake_yade(scratch("hang-yade"), Fault::hang, yade->python, yade->module_dir, pids);
+  const Reported r = run_single("yade", {"--yade", fake.string(), "--timeout", "3"}, "hang-yade-run");
+  EXPECT_EQ(r.status, "error");
+  EXPECT_NE(r.reason.find("timed out"), std::string::npos) << r.reason;
+  EXPECT_LT(r.seconds, 3 + 10);
+  expect_all_ended(pids);
+}
+
+TEST(Engines, ShowsWhereEachBinaryWasFound) {
+  const auto r = demwb({"engines", "--lammps", "/nonexistent/lmp", "--yade", "/bin/sh"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("| lammps | missing | — | '/nonexistent/lmp' not found"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("/bin/sh is not a YADE launcher"), std::string::npos) << r.out;
+  if (installed_yade()) {
+    const auto found = demwb({"engines"});
+    EXPECT_NE(found.out.find("| yade | installed |"), std::string::npos) << found.out;
+    EXPECT_NE(found.out.find("modules "), std::string::npos) << found.out;
+  }
+}
+
+}  // namespace
