@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <functional>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -22,16 +23,6 @@ using demwb_e2e::demwb;
 using demwb_e2e::scratch;
 using Json = nlohmann::json;
 
-/// True when the process `pid` has ended (gone, or a zombie nobody has reaped yet).
-bool ended(const std::string& pid) {
-  std::ifstream stat("/proc/" + pid + "/stat");
-  if (!stat) return true;
-  std::string line;
-  std::getline(stat, line);
-  const auto close = line.rfind(')');
-  return close != std::string::npos && line.size() > close + 2 && line[close + 2] == 'Z';
-}
-
 /// Every pid listed in `file` (one per line) has ended.
 void expect_all_ended(const fs::path& file) {
   std::ifstream in(file);
@@ -39,7 +30,7 @@ void expect_all_ended(const fs::path& file) {
   int seen = 0;
   while (in >> pid) {
     ++seen;
-    EXPECT_TRUE(ended(pid)) << "process " << pid << " of a fake binary is still running";
+    EXPECT_TRUE(process_ended(pid)) << "process " << pid << " of a fake binary is still running";
   }
   EXPECT_GT(seen, 0) << "the fake binary never started (" << file << ")";
 }
@@ -74,23 +65,36 @@ Reported run_single(const std::string& engine, std::vector<std::string> extra, c
 
 bool have_lammps() { return support::find_program("lmp").has_value(); }
 
-TEST(FakeLammps, EveryFaultIsAnErrorThatFailsTheRun) {
-  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
-  const fs::path lmp = *support::find_program("lmp");
+/// Runs single_collision on `engine` with a fake made by `make_fake(fault, label)` for each fault
+/// that returns (fails, garbage, NaN, truncated) and checks each is an error saying what went
+/// wrong; `failure_says` is the fake's own failure message.
+void expect_every_fault_an_error(const std::string& engine, const std::function<fs::path(Fault, const std::string&)>& make_fake,
+                                 const std::string& failure_says) {
   const std::vector<std::pair<Fault, std::string>> faults = {
-      {Fault::exit_1, "deliberate failure of a fake lmp"},
-      {Fault::garbage, ""},
+      {Fault::exit_1, failure_says},
+      {Fault::garbage, "trace."},  // the trace file's name and line: it does not parse
       {Fault::nan, "non-finite"},
-      {Fault::truncated, ""},
+      {Fault::truncated, "values"},  // "13 values for 17 columns" / "expected 15 values, found 11"
   };
   for (const auto& [fault, says] : faults) {
-    const auto label = std::to_string(static_cast<int>(fault));
-    const fs::path fake = fake_lammps(scratch("fake-lmp-" + label), fault, lmp, scratch("fake-lmp-pid-" + label));
-    const Reported r = run_single("lammps", {"--lammps", fake.string()}, "fake-lmp-run-" + label);
+    const auto label = engine + "-" + std::to_string(static_cast<int>(fault));
+    const fs::path fake = make_fake(fault, label);
+    const Reported r = run_single(engine, {"--" + engine, fake.string()}, "fake-run-" + label);
     EXPECT_EQ(r.exit_code, 1) << label << r.output;
     EXPECT_EQ(r.status, "error") << label << ": " << r.reason;
     EXPECT_NE(r.reason.find(says), std::string::npos) << label << ": " << r.reason;
   }
+}
+
+TEST(FakeLammps, EveryFaultIsAnErrorThatFailsTheRun) {
+  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
+  const fs::path lmp = *support::find_program("lmp");
+  expect_every_fault_an_error(
+      "lammps",
+      [&](Fault fault, const std::string& label) {
+        return fake_lammps(scratch("fake-" + label), fault, lmp, scratch("fake-pid-" + label));
+      },
+      "deliberate failure of a fake lmp");
 }
 
 TEST(FakeLammps, AnAbsentBinaryIsMissingAndFailsTheRun) {
@@ -137,21 +141,12 @@ std::optional<reference::yade::YadeInstallation> installed_yade() {
 TEST(FakeYade, EveryFaultIsAnErrorThatFailsTheRun) {
   const auto yade = installed_yade();
   if (!yade) GTEST_SKIP() << "YADE is not installed (scripts/setup.sh installs it)";
-  const std::vector<std::pair<Fault, std::string>> faults = {
-      {Fault::exit_1, "deliberate failure of a fake python"},
-      {Fault::garbage, ""},
-      {Fault::nan, ""},
-      {Fault::truncated, ""},
-  };
-  for (const auto& [fault, says] : faults) {
-    const auto label = std::to_string(static_cast<int>(fault));
-    const fs::path fake =
-        fake_yade(scratch("fake-yade-" + label), fault, yade->python, yade->module_dir, scratch("fake-yade-pid-" + label));
-    const Reported r = run_single("yade", {"--yade", fake.string()}, "fake-yade-run-" + label);
-    EXPECT_EQ(r.exit_code, 1) << label << r.output;
-    EXPECT_EQ(r.status, "error") << label << ": " << r.reason;
-    EXPECT_NE(r.reason.find(says), std::string::npos) << label << ": " << r.reason;
-  }
+  expect_every_fault_an_error(
+      "yade",
+      [&](Fault fault, const std::string& label) {
+        return fake_yade(scratch("fake-" + label), fault, yade->python, yade->module_dir, scratch("fake-pid-" + label));
+      },
+      "deliberate failure of a fake python");
 }
 
 TEST(FakeYade, AnAbsentOrForeignLauncherIsMissingAndFailsTheRun) {

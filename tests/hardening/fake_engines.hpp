@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -40,6 +41,17 @@ inline std::string damage(Fault fault, const std::string& trace) {
     default:
       return "";
   }
+}
+
+/// True when the process `pid` has ended: gone, or a zombie nobody has reaped yet (a fake whose
+/// parent died is reparented, and in a container nobody may reap it).
+inline bool process_ended(const std::string& pid) {
+  std::ifstream stat("/proc/" + pid + "/stat");
+  if (!stat) return true;
+  std::string line;
+  std::getline(stat, line);
+  const auto close = line.rfind(')');
+  return close != std::string::npos && line.size() > close + 2 && line[close + 2] == 'Z';
 }
 
 /// Writes an executable script `path` with `body`.

@@ -59,16 +59,6 @@ std::vector<std::string> pids_in(const fs::path& file) {
   return out;
 }
 
-/// True when `pid` is gone or a zombie.
-bool ended(const std::string& pid) {
-  std::ifstream stat("/proc/" + pid + "/stat");
-  if (!stat) return true;
-  std::string line;
-  std::getline(stat, line);
-  const auto close = line.rfind(')');
-  return close != std::string::npos && line.size() > close + 2 && line[close + 2] == 'Z';
-}
-
 /// Interrupts a suite while fake lmp processes hang, and checks the clean stop.
 void interrupt_suite(int signal_number, int expected_exit, const std::string& name) {
   const fs::path pids = scratch(name + "-pids");
@@ -95,7 +85,7 @@ void interrupt_suite(int signal_number, int expected_exit, const std::string& na
   ASSERT_TRUE(WIFEXITED(status)) << "demwb died of a signal instead of exiting";
   EXPECT_EQ(WEXITSTATUS(status), expected_exit);
   for (const auto& pid : pids_in(pids)) {
-    EXPECT_TRUE(wait_for([&] { return ended(pid); }, 2)) << "fake lmp " << pid << " survived demwb";
+    EXPECT_TRUE(wait_for([&] { return process_ended(pid); }, 2)) << "fake lmp " << pid << " survived demwb";
   }
   EXPECT_FALSE(fs::exists(out)) << "the partial output directory it created was left behind";
   const std::string said = support::read_file(log);
