@@ -18,6 +18,7 @@
 #include "reference/lammps/deck_writer.hpp"
 #include "reports/case_outputs.hpp"
 #include "support/text_file.hpp"
+#include "cases/time_step.hpp"
 
 namespace app {
 namespace {
@@ -206,8 +207,7 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   o.particles = (*vm)["particles"].as<std::size_t>();
   if (o.particles < 1 || o.particles > 100'000'000) throw std::invalid_argument("--particles must be between 1 and 1e8");
   if (vm->count("chute-dir") != 0) o.chute_dir = (*vm)["chute-dir"].as<std::string>();
-  o.timeout_s = (*vm)["timeout"].as<double>();
-  if (!(o.timeout_s > 0.0) || o.timeout_s > 1e7) throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
+  o.timeout_s = timeout_option(*vm);
   o.lammps_program = external_programs(*vm, o.timeout_s).lammps;
   o.repeat = (*vm)["repeat"].as<int>();
   if (o.repeat < 1 || o.repeat > 100) throw std::invalid_argument("--repeat must be between 1 and 100");
@@ -223,7 +223,7 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   } else if (o.scene.ends_with(".toml")) {
     const cases::Scene scene = cases::load_case(o.scene);
     const std::uint64_t steps =
-        o.steps.value_or(reference::step_count(scene.integration.duration, reference::core_setup(scene).simulation.timestep));
+        o.steps.value_or(cases::step_count(scene.integration.duration, reference::core_setup(scene).simulation.timestep));
     result = bench_scene(o, scene, steps);
     result.scene = scene.name;
   } else {

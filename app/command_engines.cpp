@@ -19,9 +19,7 @@ int command_engines(const std::vector<std::string>& args, const Invocation&) {
                      "seconds a version probe may take");
   const auto vm = parse_command(args, "usage: demwb engines [--lammps PATH] [--yade PATH]", opts, {});
   if (!vm) return kExitOk;
-  const double timeout = (*vm)["timeout"].as<double>();
-  if (!(timeout > 0.0) || timeout > 1e7) throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
-  const reference::ExternalPrograms programs = external_programs(*vm, timeout);
+  const reference::ExternalPrograms programs = external_programs(*vm, timeout_option(*vm));
   reports::MarkdownTable t({"engine", "status", "version", "where"});
   for (const auto name : cases::engine_catalogue()) {
     const auto engine = reference::make_engine(name, programs);

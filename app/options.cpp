@@ -101,6 +101,14 @@ cases::LoadOptions load_options(const po::variables_map& vm) {
   return options;
 }
 
+double timeout_option(const po::variables_map& vm) {
+  const double timeout = vm["timeout"].as<double>();
+  if (!(timeout > 0.0) || timeout > 1e7) {
+    throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
+  }
+  return timeout;
+}
+
 void add_program_options(po::options_description& opts) {
   opts.add_options()("lammps", po::value<std::string>(),
                      "LAMMPS binary to drive (default $DEMWB_LAMMPS, else lmp in PATH)")(
@@ -139,10 +147,7 @@ cases::Scene with_matches(cases::Scene scene, const po::variables_map& vm) {
 RunContext run_context(const po::variables_map& vm, const std::filesystem::path& work_dir) {
   RunContext ctx;
   ctx.options.work_dir = work_dir;
-  ctx.options.timeout_s = vm["timeout"].as<double>();
-  if (!(ctx.options.timeout_s > 0.0) || ctx.options.timeout_s > 1e7) {
-    throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
-  }
+  ctx.options.timeout_s = timeout_option(vm);
   ctx.programs = external_programs(vm, ctx.options.timeout_s);
   ctx.load = load_options(vm);
   ctx.options.threads = vm["threads"].as<int>();

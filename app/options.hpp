@@ -20,6 +20,9 @@ void add_run_options(boost::program_options::options_description& opts);
 /// snapshots) one run of a case may hold; default half the machine's physical memory.
 cases::LoadOptions load_options(const boost::program_options::variables_map& vm);
 
+/// The value of --timeout, checked: seconds in (0, 1e7].
+double timeout_option(const boost::program_options::variables_map& vm);
+
 /// Adds --lammps PATH and --yade PATH (the reference binaries to drive).
 void add_program_options(boost::program_options::options_description& opts);
 

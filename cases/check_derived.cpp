@@ -27,6 +27,7 @@ namespace cases::loader {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+static_assert(kMaxSteps == 1.0e9, "the messages below say 1e9");
 
 /// A density no real material is far from [kg/m³]: used to tell whether a sphere's mass is out
 /// of range because of its density or because of its radius.
@@ -37,15 +38,6 @@ bool in_window(double x) noexcept { return x >= kMinDerived && x <= kMaxDerived;
 
 /// "[1e-100, 1e+100]" for messages.
 std::string window() { return fmt::format("[{:g}, {:g}]", kMinDerived, kMaxDerived); }
-
-/// Throws about the radius of particle i: at particles[i].radius, or at the size of the
-/// population that generated it.
-[[noreturn]] void fail_at_radius(const Table& root, const Scene& scene, std::size_t i, const std::string& problem) {
-  std::string note;
-  const Value entry = origin_entry(root, scene, i, note);
-  const bool generated = !note.empty();
-  entry.table().fail(generated ? "size" : "radius", problem + note);
-}
 
 /// The [materials.NAME] table of material `m`.
 Table material_table(const Table& root, const Scene& scene, std::size_t m) {
@@ -120,57 +112,20 @@ void check_pair(const Table& root, const Scene& scene, const dem::PairTable& tab
                               s.impact_speed, window()));
 }
 
-/// Per material, what dem::timestep_limits reads: how many mobile and fixed spheres, the lightest
-/// mobile one's mass and the smallest radius.
-struct Census {
-  std::size_t mobile = 0;
-  std::size_t fixed = 0;
-  double lightest = kInf;
-  double smallest = kInf;
-};
-
-/// Checks the stiffness and contact time of every pair that can touch, at the collision scale the
-/// core's time-step control uses (dem::timestep_limits: lightest mobile sphere, smallest radii,
-/// twice the fastest speed or a fall through the largest diameter).
+/// Checks the stiffness and contact time of every pair that can touch, at the collision scales
+/// the core's time-step control weighs (dem::for_each_weighed_collision: lightest mobile sphere,
+/// smallest radii, twice the fastest speed or a fall through the largest diameter).
 void check_pairs(const Table& root, const Scene& scene, const dem::PairTable& table) {
-  std::vector<Census> census(scene.materials.size());
-  double fastest = 0.0;
-  double largest = 0.0;
-  for (const ParticleSpec& p : scene.particles) {
-    Census& c = census[p.material];
-    c.smallest = std::min(c.smallest, p.radius);
-    fastest = std::max(fastest, length(p.velocity));
-    largest = std::max(largest, 2.0 * p.radius);
-    if (p.fixed) {
-      ++c.fixed;
-    } else {
-      ++c.mobile;
-      c.lightest = std::min(c.lightest, dem::sphere_mass(scene.materials[p.material].density, p.radius));
-    }
-  }
-  const double g = length(scene.gravity);
-  const double speed = std::max(2.0 * fastest, std::sqrt(2.0 * g * largest));
-  for (std::size_t a = 0; a < census.size(); ++a) {
-    if (census[a].mobile == 0) continue;
-    const double m_a = census[a].lightest;
-    for (std::size_t b = 0; b < census.size(); ++b) {
-      const bool mobile_partner = a == b ? census[a].mobile >= 2 : census[b].mobile >= 1;
-      const bool fixed_partner = census[b].fixed >= 1;
-      if (!mobile_partner && !fixed_partner) continue;
-      const double r = census[a].smallest * census[b].smallest / (census[a].smallest + census[b].smallest);
-      if (fixed_partner) check_pair(root, scene, table, {a, b, nullptr, {m_a, r, speed}});
-      if (mobile_partner) {
-        const double m_b = census[b].lightest;
-        check_pair(root, scene, table, {a, b, nullptr, {m_a * m_b / (m_a + m_b), r, speed}});
-      }
-    }
-    for (const WallSpec& w : scene.walls) {
-      check_pair(root, scene, table, {a, w.material, &w, {m_a, census[a].smallest, speed}});
-    }
-  }
+  const SphereCensus census = sphere_census(scene.particles, scene.materials, scene.gravity);
+  dem::for_each_weighed_collision(census.materials, census.impact_speed, wall_materials(scene.walls),
+                                  [&](const dem::WeighedCollision& c) {
+                                    const WallSpec* wall = c.wall ? &scene.walls[*c.wall] : nullptr;
+                                    if (c.fixed_partner) check_pair(root, scene, table, {c.a, c.b, wall, c.scale});
+                                    if (c.mobile) check_pair(root, scene, table, {c.a, c.b, nullptr, *c.mobile});
+                                  });
 }
 
-/// Checks the run's time step (given or automatic) and, for "auto", its number of steps.
+/// Checks the run's time step (given or automatic) and its number of steps.
 void check_run_timestep(const Table& root, const Scene& scene, const dem::PairTable& table) {
   const Table integration = root.require("integration").table();
   const double dt = run_timestep(scene, table);
@@ -182,15 +137,13 @@ void check_run_timestep(const Table& root, const Scene& scene, const dem::PairTa
   const double duration = run_duration(scene);
   const double steps = duration / dt;
   if (steps <= kMaxSteps) return;
-  if (scene.duration_from_launch) {
+  for (std::size_t k = 0; k < scene.stages.size() && scene.duration_from_launch; ++k) {
     // The launch sets the duration: t_max = 4 L_A / (u sin θ).
-    for (std::size_t k = 0; k < scene.stages.size(); ++k) {
-      if (!std::holds_alternative<LaunchStageSpec>(scene.stages[k].action)) continue;
-      root.require("stages").elements()[k].table().fail(
-          "speed", fmt::format("the launch lasts about {:.6g} s (t_max = 4 L_A / (u sin θ), eq 5.1): with {} {:.6g} s "
-                               "that is {:.3g} steps, more than the limit of 1e9",
-                               duration, kind, dt, steps));
-    }
+    if (!std::holds_alternative<LaunchStageSpec>(scene.stages[k].action)) continue;
+    root.require("stages").elements()[k].table().fail(
+        "speed", fmt::format("the launch lasts about {:.6g} s (t_max = 4 L_A / (u sin θ), eq 5.1): with {} {:.6g} s "
+                             "that is {:.3g} steps, more than the limit of 1e9",
+                             duration, kind, dt, steps));
   }
   integration.fail("timestep", fmt::format("{} {:.6g} s over the duration {} s gives {:.3g} steps, more than the "
                                            "limit of 1e9",
@@ -242,7 +195,7 @@ void check_sphere_masses(const Table& root, const Scene& scene) {
     if (!in_window(m) && in_window(ordinary) && in_window(dem::sphere_inertia(ordinary, p.radius))) {
       material_table(root, scene, p.material).fail("density", problem);
     }
-    fail_at_radius(root, scene, i, problem);
+    fail_at_particle(root, scene, i, problem, "radius", "size");
   }
 }
 

@@ -59,6 +59,11 @@ void check_time_scales(const Table& root, const Scene& scene, const dem::PairTab
 /// entry that generated it (then `note` says so).
 Value origin_entry(const Table& root, const Scene& scene, std::size_t i, std::string& note);
 
+/// Throws a CaseError about particle i at its origin_entry; with `listed_key`, at that key of a
+/// [[particles]] entry, or at `generated_key` of the [[populations]] entry that made it.
+[[noreturn]] void fail_at_particle(const Table& root, const Scene& scene, std::size_t i, const std::string& problem,
+                                   std::string_view listed_key = {}, std::string_view generated_key = {});
+
 /// Index of the material a value names; throws naming the value when there is none.
 std::size_t material_index(const Value& name, const Scene& scene);
 /// Keyword chosen for `slot` in `choice`.

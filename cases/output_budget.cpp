@@ -77,9 +77,7 @@ OutputEstimate estimate_output(const Scene& scene) {
   const OutputSpec& out = scene.output;
   e.duration = run_duration(scene);
   e.timestep = run_timestep(scene);
-  const double ratio = e.duration / e.timestep;
-  // As reference::step_count: ⌈duration / Δt⌉ with a rounding allowance, at least one step.
-  e.steps = std::isfinite(ratio) ? std::max<std::uint64_t>(1, saturate(std::ceil(ratio * (1.0 - 1e-12)))) : 1;
+  e.steps = step_count(e.duration, e.timestep);
   e.trace_rows = e.steps / std::max<std::uint64_t>(1, out.trace_every) + 1;
   e.trace_columns = 1 + std::size(kParticleQuantities) * out.trace_particles.size() +
                     std::size(kPairQuantities) * (out.trace_pairs.size() + out.trace_walls.size()) +
@@ -88,11 +86,10 @@ OutputEstimate estimate_output(const Scene& scene) {
   e.snapshots = out.snapshot_times.size() + (scene.duration_from_launch ? 2 : 0);
   e.snapshot_values = 1 + 9 * scene.particles.size();
   e.engines = std::max<std::uint64_t>(1, scene.compare.engines.size() + scene.compare.matched.size());
-  const double rows = static_cast<double>(e.trace_rows);
-  const double traced = rows * static_cast<double>(e.trace_columns + e.energy_columns);
-  const double snapshot = static_cast<double>(e.snapshots) * static_cast<double>(e.snapshot_values);
-  const double engine_bytes = kBytesPerValue * (traced + snapshot);
-  const double text_bytes = static_cast<double>(kCsvBytesPerValue) * traced;
+  e.traced_numbers = static_cast<double>(e.trace_rows) * static_cast<double>(e.trace_columns + e.energy_columns);
+  e.snapshot_numbers = static_cast<double>(e.snapshots) * static_cast<double>(e.snapshot_values);
+  const double engine_bytes = kBytesPerValue * (e.traced_numbers + e.snapshot_numbers);
+  const double text_bytes = static_cast<double>(kCsvBytesPerValue) * e.traced_numbers;
   e.engine_bytes = saturate(engine_bytes);
   e.text_bytes = saturate(text_bytes);
   e.bytes = saturate(static_cast<double>(e.engines) * engine_bytes + text_bytes);
@@ -104,12 +101,10 @@ std::uint64_t estimate_output_bytes(const Scene& scene) { return estimate_output
 void check_output_budget(const Scene& scene, std::uint64_t max_bytes, const std::string& file) {
   const OutputEstimate e = estimate_output(scene);
   if (e.bytes <= max_bytes) return;
-  const double traced = static_cast<double>(e.trace_rows) * static_cast<double>(e.trace_columns + e.energy_columns);
-  const double snapshot = static_cast<double>(e.snapshots) * static_cast<double>(e.snapshot_values);
   // Blame what holds the most: the traces (their rows), or the snapshots.
   const std::optional<toml::table> document = reparse(scene.source_text);
   std::string key = "output.trace_every";
-  if (snapshot > traced) {
+  if (e.snapshot_numbers > e.traced_numbers) {
     key = document && document->at_path("output.snapshot_every").node() != nullptr ? "output.snapshot_every"
                                                                                    : "output.snapshot_times";
   }

@@ -28,6 +28,8 @@ struct OutputEstimate {
   std::uint64_t snapshots = 0;        ///< output.snapshot_times (+2 at 0 and the end of a launched run)
   std::uint64_t snapshot_values = 0;  ///< numbers per snapshot: time and 9 per particle
   std::uint64_t engines = 0;          ///< compare.engines plus one inhouse@<code> per compare.matched
+  double traced_numbers = 0.0;        ///< rows × (trace + energy columns), per engine
+  double snapshot_numbers = 0.0;      ///< snapshots × snapshot_values, per engine
   std::uint64_t engine_bytes = 0;     ///< 8 × (rows × (trace + energy columns) + snapshots × values)
   std::uint64_t text_bytes = 0;       ///< kCsvBytesPerValue × rows × (trace + energy columns)
   std::uint64_t bytes = 0;            ///< engines × engine_bytes + text_bytes (saturates at 2⁶⁴ − 1)

@@ -141,17 +141,6 @@ std::optional<double> read_timestep(const Value& value) {
   value.fail("expected a number > 0 or \"auto\", got " + describe(value.node()));
 }
 
-/// Throws when a fixed timestep would need more than kMaxSteps steps.
-void check_step_count(const Table& table, const IntegrationSpec& spec) {
-  if (!spec.timestep) return;
-  const double steps = spec.duration / *spec.timestep;
-  if (steps > kMaxSteps) {
-    table.fail("timestep", fmt::format("{} s over the duration {} s gives {:.3g} steps, more "
-                                       "than the limit of 1e9",
-                                       *spec.timestep, spec.duration, steps));
-  }
-}
-
 /// Warns about settings the chosen scheme never reads.
 void warn_ineffective_settings(const Table& table, const IntegrationSpec& spec) {
   const dem::SchemeInfo& info = dem::scheme_info(spec.scheme);
@@ -235,7 +224,6 @@ void read_integration(const Table& root, Scene& scene) {
   if (const auto v = table.find("leapfrog_start")) {
     spec.leapfrog_start = read_choice(*v, kLeapfrogStarts, "leapfrog start");
   }
-  if (!scene.duration_from_launch) check_step_count(table, spec);
   warn_ineffective_settings(table, spec);
 }
 

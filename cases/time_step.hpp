@@ -1,17 +1,34 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "cases/scene.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "dem/timestep/timestep_control.hpp"
 
 namespace cases {
 
+/// What the core's time-step control reads from a scene's spheres: per material the census
+/// (dem::MaterialCensus) and the expected impact speed under `gravity`, with the core's arithmetic
+/// (masses as dem::build_particles makes them, speeds as Eigen norms), so that limits computed from
+/// it equal the in-house engine's bit for bit. O(N) time, O(materials) memory.
+struct SphereCensus {
+  std::vector<dem::MaterialCensus> materials;
+  double impact_speed = 0.0;  ///< dem::expected_impact_speed of the spheres [m/s]
+};
+
+/// The census of `particles` of `materials` under `gravity`.
+[[nodiscard]] SphereCensus sphere_census(const std::vector<ParticleSpec>& particles,
+                                         const std::vector<dem::MaterialProperties>& materials, const Vector3& gravity);
+
+/// The plane walls' materials, in wall order, as the time-step control takes them.
+[[nodiscard]] std::vector<std::uint32_t> wall_materials(const std::vector<WallSpec>& walls);
+
 /// The core's time-step limits for the scene (dem::timestep_limits over its spheres, plane walls,
 /// gravity and contact model `table`), exactly as the in-house engine computes them before a run
-/// (reference/inhouse/scene_to_core.cpp). The limits read only extremes (per material the lightest
-/// mobile sphere, the smallest radius, whether it has two mobile or one fixed sphere; the fastest
-/// and the largest sphere), so they are computed from those few spheres: O(N) time, O(1) memory.
+/// (reference/inhouse/scene_to_core.cpp).
 [[nodiscard]] dem::TimestepLimits scene_timestep_limits(const Scene& scene, const dem::PairTable& table);
 
 /// The time step a run of the scene takes [s]: integration.timestep, or for "auto" the core's
@@ -24,9 +41,8 @@ namespace cases {
 [[nodiscard]] double run_timestep(const Scene& scene);
 
 /// The time step of the formation stage `stage` of the scene [s]: integration.timestep, or the
-/// automatic step of the scene as the stage runs it (every material's restitution replaced by the
-/// stage's, no friction unless it keeps it, its own gravity, walls only when it keeps them; see
-/// prepare/formation.cpp). +∞ when no contact can occur.
+/// automatic step of the scene as the stage runs it (formation_materials, formation_model, its own
+/// gravity, walls only when it keeps them; see prepare/formation.cpp). +∞ when no contact can occur.
 [[nodiscard]] double formation_timestep(const Scene& scene, const FormationStageSpec& stage);
 
 /// The simulated time of a run of the scene [s]: integration.duration, or, when a launch stage
@@ -34,5 +50,9 @@ namespace cases {
 /// as listed, before any formation gathers them (an upper estimate: formation only brings them
 /// closer).
 [[nodiscard]] double run_duration(const Scene& scene);
+
+/// Steps of a run of `duration` at `dt`: ⌈duration / Δt⌉ with a 1e-12 relative allowance for
+/// round-off, at least one; a ratio that is not a finite count saturates (NaN: one step).
+[[nodiscard]] std::uint64_t step_count(double duration, double dt) noexcept;
 
 }  // namespace cases

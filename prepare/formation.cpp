@@ -9,6 +9,7 @@
 #include <Eigen/SVD>
 #include <fmt/format.h>
 
+#include "cases/formation_model.hpp"
 #include "dem/fields/central_pull.hpp"
 #include "dem/simulation/simulation.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
@@ -79,11 +80,8 @@ double internal_kinetic_energy(const dem::Simulation& sim) {
 
 cases::Scene formation_scene(const cases::Scene& scene, const cases::FormationStageSpec& stage) {
   cases::Scene s = scene;
-  for (dem::MaterialProperties& m : s.materials) m.restitution = stage.restitution;
-  if (!stage.friction) {
-    s.model.tangential = "none";
-    s.model.rolling = "none";
-  }
+  s.materials = cases::formation_materials(std::move(s.materials), stage);
+  s.model = cases::formation_model(std::move(s.model), stage);
   if (!stage.walls) s.walls.clear();
   s.gravity = stage.gravity;
   s.fluid.reset();

@@ -69,7 +69,7 @@ cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
   }
   const Support support = engine.supports(scene);
   if (!support.supported()) {
-    result.version = support::printable_utf8(*version);
+    result.version = *version;
     result.status = cases::RunStatus::not_applicable;
     result.reason = support.explain();
     return result;
@@ -83,9 +83,9 @@ cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
     result.reason = e.what();
   }
   result.engine = std::string(engine.name());
-  result.version = support::printable_utf8(*version);
+  result.version = *version;  // drivers clean what a binary printed (probe_lammps, detect_yade_version)
   // What an external program wrote may be any bytes: keep it valid, printable UTF-8 so that it
-  // can reach results.json, report.md and the terminal.
+  // can reach results.json, report.md and the terminal (versions are cleaned where they are read).
   result.reason = support::printable_utf8(result.reason);
   result.log_tail = support::printable_utf8(result.log_tail);
   for (auto& w : result.warnings) w = support::printable_utf8(w);

@@ -31,10 +31,18 @@ std::filesystem::path ResultCache::path_of(const cases::Scene& scene, std::strin
   return dir_ / std::string(engine) / name;
 }
 
-nlohmann::ordered_json with_checksum(nlohmann::ordered_json document) {
+namespace {
+
+/// SHA-256 of `document`'s compact JSON text without its "sha256" member.
+std::string content_checksum(nlohmann::ordered_json document) {
   document.erase("sha256");
-  const std::string sum = support::sha256_hex(document.dump());
-  document["sha256"] = sum;
+  return support::sha256_hex(document.dump());
+}
+
+}  // namespace
+
+nlohmann::ordered_json with_checksum(nlohmann::ordered_json document) {
+  document["sha256"] = content_checksum(document);
   return document;
 }
 
@@ -42,10 +50,7 @@ std::string checksum_problem(const nlohmann::ordered_json& document) {
   if (!document.is_object() || !document.contains("sha256") || !document["sha256"].is_string()) {
     return "it has no sha256 member";
   }
-  nlohmann::ordered_json content = document;
-  content.erase("sha256");
-  const std::string expected = support::sha256_hex(content.dump());
-  if (document["sha256"].get<std::string>() != expected) {
+  if (document["sha256"].get<std::string>() != content_checksum(document)) {
     return "its content does not match its sha256 (edited or damaged)";
   }
   return "";

@@ -15,14 +15,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// What one material contributes: how many mobile and fixed spheres, the lightest and smallest.
-struct MaterialCensus {
-  std::size_t mobile = 0;
-  std::size_t fixed = 0;
-  double lightest_mobile = kInf;
-  double smallest_radius = kInf;
-};
-
 /// Contact duration of a law for a collision of the given scale, with the law's damping.
 double collision_duration(const PairLaw& law, const CollisionScale& scale) {
   const double k = collision_stiffness(law, scale);
@@ -30,68 +22,78 @@ double collision_duration(const PairLaw& law, const CollisionScale& scale) {
   return laws::linear_contact_duration(k, scale.reduced_mass, eta);
 }
 
-/// Largest normal approach speed to expect: twice the fastest particle, or a fall through the
-/// largest diameter under gravity, whichever is larger.
-double expected_impact_speed(const ParticleProperties& props, const KinematicState& state,
-                             const Vec3& gravity) {
-  double fastest = 0.0;
-  double largest = 0.0;
-  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props.size()); ++i) {
-    fastest = std::max(fastest, state.velocity.col(i).norm());
-    largest = std::max(largest, 2.0 * props.radius[i]);
+}  // namespace
+
+void add_to_census(MaterialCensus& census, double mass, double radius, bool fixed) noexcept {
+  census.smallest_radius = std::min(census.smallest_radius, radius);
+  if (fixed) {
+    ++census.fixed;
+  } else {
+    ++census.mobile;
+    census.lightest_mobile = std::min(census.lightest_mobile, mass);
   }
-  return std::max(2.0 * fastest, std::sqrt(2.0 * gravity.norm() * largest));
 }
 
-}  // namespace
+double expected_impact_speed(double fastest_speed, double largest_diameter, double g) noexcept {
+  return std::max(2.0 * fastest_speed, std::sqrt(2.0 * g * largest_diameter));
+}
+
+void for_each_weighed_collision(const std::vector<MaterialCensus>& census, double speed,
+                                const std::vector<std::uint32_t>& wall_materials,
+                                const std::function<void(const WeighedCollision&)>& visit) {
+  for (std::size_t a = 0; a < census.size(); ++a) {
+    if (census[a].mobile == 0) continue;
+    const double m_a = census[a].lightest_mobile;
+    const double r_a = census[a].smallest_radius;
+    for (std::size_t b = 0; b < census.size(); ++b) {
+      const double r_b = census[b].smallest_radius;
+      const bool mobile_partner = a == b ? census[a].mobile >= 2 : census[b].mobile >= 1;
+      const bool fixed_partner = census[b].fixed >= 1;
+      if (!mobile_partner && !fixed_partner) continue;
+      WeighedCollision c{a, b, std::nullopt, {m_a, r_a * r_b / (r_a + r_b), speed}, fixed_partner, std::nullopt};
+      if (mobile_partner) {
+        const double m_b = census[b].lightest_mobile;
+        c.mobile = CollisionScale{m_a * m_b / (m_a + m_b), c.scale.reduced_radius, speed};
+      }
+      visit(c);
+    }
+    // A wall is a fixed partner of infinite radius: R* = r, m* = m.
+    for (std::size_t w = 0; w < wall_materials.size(); ++w) {
+      visit(WeighedCollision{a, wall_materials[w], w, {m_a, r_a, speed}, true, std::nullopt});
+    }
+  }
+}
+
+TimestepLimits timestep_limits(const std::vector<MaterialCensus>& census, double speed, const PairTable& table,
+                               bool rotation, double steps_per_collision,
+                               const std::vector<std::uint32_t>& wall_materials) {
+  double sqrt_m_over_k = kInf;
+  double t_c = kInf;
+  for_each_weighed_collision(census, speed, wall_materials, [&](const WeighedCollision& c) {
+    const PairLaw& law = table.law(c.a, c.b);
+    sqrt_m_over_k = std::min(sqrt_m_over_k, std::sqrt(c.scale.reduced_mass / collision_stiffness(law, c.scale)));
+    if (c.mobile) t_c = std::min(t_c, collision_duration(law, *c.mobile));
+    if (c.fixed_partner) t_c = std::min(t_c, collision_duration(law, c.scale));
+  });
+  return TimestepLimits{sqrt_m_over_k, (rotation ? 0.22 : 0.34) * sqrt_m_over_k, t_c,
+                        t_c / steps_per_collision, steps_per_collision, rotation};
+}
 
 TimestepLimits timestep_limits(const ParticleProperties& props, const KinematicState& state,
                                const PairTable& table, const Vec3& gravity, bool rotation,
                                double steps_per_collision,
                                const std::vector<std::uint32_t>& wall_materials) {
   std::vector<MaterialCensus> census(table.material_count());
+  double fastest = 0.0;
+  double largest = 0.0;
   for (std::size_t i = 0; i < props.size(); ++i) {
-    MaterialCensus& c = census[props.material[i]];
     const auto k = static_cast<Eigen::Index>(i);
-    c.smallest_radius = std::min(c.smallest_radius, props.radius[k]);
-    if (props.fixed[i] != 0) {
-      ++c.fixed;
-    } else {
-      ++c.mobile;
-      c.lightest_mobile = std::min(c.lightest_mobile, props.mass[k]);
-    }
+    add_to_census(census[props.material[i]], props.mass[k], props.radius[k], props.fixed[i] != 0);
+    fastest = std::max(fastest, state.velocity.col(k).norm());
+    largest = std::max(largest, 2.0 * props.radius[k]);
   }
-  const double speed = expected_impact_speed(props, state, gravity);
-  double sqrt_m_over_k = kInf;
-  double t_c = kInf;
-  for (std::size_t a = 0; a < census.size(); ++a) {
-    if (census[a].mobile == 0) continue;
-    for (std::size_t b = 0; b < census.size(); ++b) {
-      const PairLaw& law = table.law(a, b);
-      const double m_a = census[a].lightest_mobile;
-      const double r_a = census[a].smallest_radius;
-      const double r_b = census[b].smallest_radius;
-      const bool mobile_partner = a == b ? census[a].mobile >= 2 : census[b].mobile >= 1;
-      const bool fixed_partner = census[b].fixed >= 1;
-      if (!mobile_partner && !fixed_partner) continue;
-      const CollisionScale scale{m_a, r_a * r_b / (r_a + r_b), speed};
-      sqrt_m_over_k = std::min(sqrt_m_over_k, std::sqrt(m_a / collision_stiffness(law, scale)));
-      if (mobile_partner) {
-        const double m_b = census[b].lightest_mobile;
-        t_c = std::min(t_c, collision_duration(law, {m_a * m_b / (m_a + m_b), scale.reduced_radius, speed}));
-      }
-      if (fixed_partner) t_c = std::min(t_c, collision_duration(law, scale));
-    }
-    // A wall is a fixed partner of infinite radius: R* = r, m* = m.
-    for (const std::uint32_t w : wall_materials) {
-      const PairLaw& law = table.law(a, w);
-      const CollisionScale scale{census[a].lightest_mobile, census[a].smallest_radius, speed};
-      sqrt_m_over_k = std::min(sqrt_m_over_k, std::sqrt(scale.reduced_mass / collision_stiffness(law, scale)));
-      t_c = std::min(t_c, collision_duration(law, scale));
-    }
-  }
-  return TimestepLimits{sqrt_m_over_k, (rotation ? 0.22 : 0.34) * sqrt_m_over_k, t_c,
-                        t_c / steps_per_collision, steps_per_collision, rotation};
+  return timestep_limits(census, expected_impact_speed(fastest, largest, gravity.norm()), table, rotation,
+                         steps_per_collision, wall_materials);
 }
 
 double automatic_timestep(const TimestepLimits& limits) noexcept {

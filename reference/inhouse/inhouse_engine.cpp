@@ -10,6 +10,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
 #include "support/build_info.hpp"
+#include "cases/time_step.hpp"
 
 namespace reference {
 namespace {
@@ -160,7 +161,7 @@ cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&
     }
   };
 
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
+  const std::uint64_t steps = cases::step_count(scene.integration.duration, dt);
   const bool energy = scene.output.trace_energy;
   if (energy) result.energy = make_energy_trace();
   const auto record_all = [&] {

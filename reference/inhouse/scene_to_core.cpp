@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dem/contact/pair_table.hpp"
+#include "cases/time_step.hpp"
 
 namespace reference {
 namespace {
@@ -110,14 +111,9 @@ CoreSetup core_setup(const cases::Scene& scene, int threads) {
   return out;
 }
 
-std::uint64_t step_count(double duration, double dt) {
-  const double n = std::ceil(duration / dt * (1.0 - 1e-12));
-  return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(n));
-}
-
 SampleGrid sample_grid(const cases::Scene& scene) {
   const double dt = core_setup(scene).simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
+  const std::uint64_t steps = cases::step_count(scene.integration.duration, dt);
   return {dt, steps, std::max<std::uint64_t>(1, scene.output.trace_every), static_cast<double>(steps) * dt};
 }
 

@@ -23,9 +23,6 @@ struct CoreSetup {
 /// dem::ModelError on an incomplete model.
 CoreSetup core_setup(const cases::Scene& scene, int threads = 1);
 
-/// Number of steps that cover the scene's duration with time step dt (at least 1).
-std::uint64_t step_count(double duration, double dt);
-
 /// The time grid every engine samples a scene on: the core's resolved Δt, the step count, the
 /// trace interval in steps and the end time steps·Δt.
 struct SampleGrid {

@@ -24,6 +24,7 @@
 #include "support/interrupts.hpp"
 #include "support/process.hpp"
 #include "support/text_file.hpp"
+#include "cases/time_step.hpp"
 
 namespace reference {
 namespace {
@@ -146,7 +147,7 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
   }
   const CoreSetup setup = core_setup(scene);
   const double dt = setup.simulation.timestep;
-  const std::uint64_t steps = step_count(scene.integration.duration, dt);
+  const std::uint64_t steps = cases::step_count(scene.integration.duration, dt);
   lammps::DeckSettings settings;
   settings.timestep = dt;
   settings.steps = steps;

@@ -5,6 +5,7 @@
 #include "reference/yade/matched_calibration.hpp"
 #include "reference/yade/model_mapping.hpp"
 #include "reference/yade/restitution_calibration.hpp"
+#include "cases/time_step.hpp"
 
 namespace reference::yade {
 
@@ -39,7 +40,7 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   // repeats that calibration on its own replica and takes the ε' whose β(ε')/2 is that betan.
   const YadeModelMapping mapping = map_contact_model(scene);
   const auto calibration =
-      plan_calibration(scene, mapping, step_count(scene.integration.duration, *matched.integration.timestep));
+      plan_calibration(scene, mapping, cases::step_count(scene.integration.duration, *matched.integration.timestep));
   if (calibration) {
     if (const auto e = matched_calibrated_restitution(matched, *calibration)) {
       matched.materials[calibration->material].restitution = *e;

@@ -8,6 +8,7 @@
 
 #include "cases/trace.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
+#include "cases/time_step.hpp"
 
 namespace reference::yade {
 namespace {
@@ -100,7 +101,7 @@ YadeRunPlan make_run_plan(const cases::Scene& scene) {
   YadeRunPlan plan;
   const CoreSetup setup = core_setup(scene);
   plan.timestep = setup.simulation.timestep;
-  plan.steps = step_count(scene.integration.duration, plan.timestep);
+  plan.steps = cases::step_count(scene.integration.duration, plan.timestep);
   plan.snapshot_iterations = snapshot_iterations(scene.output.snapshot_times, plan.timestep, plan.steps);
   plan.trace_columns = trace_columns(scene);
   plan.model = map_contact_model(scene);

@@ -2,6 +2,7 @@
 #include "reference/yade/script_writer.hpp"
 
 #include <iterator>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -171,8 +172,12 @@ void write_walls(std::string& s, const cases::Scene& scene) {
   s += "# Plane walls, body id = len(PARTICLES) + wall index: (position along the axis, axis, sense,\n"
        "# material). sense = +1/-1: only the side the case's normal points to interacts.\n"
        "WALLS = [\n";
-  for (const auto& w : scene.walls) {
+  for (std::size_t k = 0; k < scene.walls.size(); ++k) {
+    const auto& w = scene.walls[k];
     const WallAxis a = wall_axis(w.normal);
+    if (a.axis < 0) {  // utils.wall is axis-aligned; supports() refuses such a scene first
+      throw std::invalid_argument(fmt::format("walls[{}]: the YADE driver writes axis-aligned plane walls only", k));
+    }
     fmt::format_to(out, "    ({}, {}, {}, {}),\n", py_float(w.point[static_cast<std::size_t>(a.axis)]),
                    a.axis, a.sense, w.material);
   }

@@ -90,15 +90,8 @@ Support YadeEngine::supports(const cases::Scene& scene) const {
 }
 
 cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& options) const {
-  cases::RunResult result;
-  // The script writer assumes a supported scene (e.g. axis-aligned walls); a caller that skipped
-  // supports() gets n/a, never a script written from a scene it cannot express.
-  if (Support s{yade::unsupported_scene_features(scene)}; !s.supported()) {
-    result.status = cases::RunStatus::not_applicable;
-    result.reason = s.explain();
-    return result;
-  }
   const yade::YadeRunPlan plan = yade::make_run_plan(scene);
+  cases::RunResult result;
   result.status = cases::RunStatus::error;
   if (!plan.model.reasons.empty()) {
     result.status = cases::RunStatus::not_applicable;

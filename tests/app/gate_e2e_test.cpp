@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "demwb_process.hpp"
-#include "support/sha256.hpp"
+#include "store/result_cache.hpp"
 #include "support/text_file.hpp"
 
 namespace {
@@ -19,12 +19,8 @@ using demwb_e2e::scratch;
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
-/// `baseline` signed as the workbench signs baselines: "sha256" over its compact text without it.
-std::string signed_baseline(Json baseline) {
-  baseline.erase("sha256");
-  baseline["sha256"] = support::sha256_hex(baseline.dump());
-  return baseline.dump(1);
-}
+/// `baseline` signed as the workbench signs baselines.
+std::string signed_baseline(const Json& baseline) { return store::with_checksum(baseline).dump(1); }
 
 /// A suite folder holding the canonical single collision with one tolerance replaced.
 fs::path strict_suite(const std::string& name, const std::string& from, const std::string& to) {

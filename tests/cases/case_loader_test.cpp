@@ -10,11 +10,13 @@
 
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
+#include "case_texts.hpp"
 
 namespace {
 
 using cases::CaseError;
 using cases::load_case_text;
+using case_texts::error_of;
 
 // A complete case exercising every section; materials deliberately not in alphabetical order.
 constexpr std::string_view kFullCase = R"(# Full case used by the loader tests.
@@ -101,17 +103,6 @@ duration = 1.0e-3
 /// kMinimalCase with `extra` appended (a further table, or keys of [integration]).
 std::string minimal_with(std::string_view extra) {
   return std::string(kMinimalCase) + std::string(extra);
-}
-
-/// The CaseError that loading `text` throws; fails the test when nothing is thrown.
-CaseError error_of(std::string_view text) {
-  try {
-    static_cast<void>(load_case_text(text, "case.toml"));
-  } catch (const CaseError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no CaseError for:\n" << text;
-  return CaseError("case.toml", "(none)", "no error");
 }
 
 /// True when some line contains both `a` and `b`.

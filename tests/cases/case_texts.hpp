@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Case texts and helpers the loader tests share.
+#include <string>
+#include <string_view>
+
+#include <gtest/gtest.h>
+
+#include "cases/case_loader.hpp"
+
+namespace case_texts {
+
+/// Two glass spheres, one moving at 1 m/s towards the other, fixed one; 100 steps of 1e-5 s.
+inline constexpr std::string_view kPair = R"([case]
+name = "pair"
+
+[model]
+normal = "linear"
+
+[materials.glass]
+density = 2500.0
+normal_stiffness = 1.0e5
+
+[[particles]]
+radius = 0.01
+material = "glass"
+position = [0.0, 0.0, 0.0]
+velocity = [1.0, 0.0, 0.0]
+
+[[particles]]
+radius = 0.01
+material = "glass"
+position = [0.05, 0.0, 0.0]
+fixed = true
+
+[integration]
+scheme = "velocity_verlet"
+timestep = 1.0e-5
+duration = 1.0e-3
+)";
+
+/// `text` with the first occurrence of `from` replaced by `to` (which must be there).
+inline std::string replaced(std::string text, std::string_view from, std::string_view to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+/// The CaseError loading `text` (named case.toml) throws; fails the test when nothing is thrown.
+inline cases::CaseError error_of(std::string_view text) {
+  try {
+    static_cast<void>(cases::load_case_text(text, "case.toml"));
+  } catch (const cases::CaseError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no CaseError for:\n" << text.substr(0, 2000);
+  return cases::CaseError("case.toml", "(none)", "no error");
+}
+
+}  // namespace case_texts
