@@ -16,37 +16,74 @@
 namespace app {
 namespace {
 
-/// The committed baseline result of `engine` for `scene`, if one exists and fits the scene.
-std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const std::string& engine,
-                                                const std::filesystem::path& dir) {
+/// Why a reference code's result is taken from its committed baseline.
+enum class BaselineUse {
+  not_installed,  ///< the code is missing here
+  fast_tier,      ///< a `full` case in the fast tier: the in-house side runs, the reference is stored
+};
+
+/// The command that renews the committed baseline of `scene`.
+std::string refresh_command(const cases::Scene& scene) {
+  return fmt::format("demwb refresh {} --write-baselines",
+                     scene.source_path.empty() ? scene.name + ".toml" : scene.source_path);
+}
+
+/// The committed baseline result of `engine` for `scene`. Empty when there is none and the code
+/// is merely not installed (the run stays `missing`); an `error` naming the refresh command when
+/// the baseline is unreadable, absent in the fast tier, or stale: made from another version of
+/// the case, or from another input than the driver writes for it now.
+std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const reference::Engine& engine,
+                                                const std::filesystem::path& dir, BaselineUse use) {
+  const std::string name(engine.name());
   const auto file = dir / (scene.name + ".json");
-  if (!std::filesystem::exists(file)) return std::nullopt;
+  const std::string why = use == BaselineUse::not_installed
+                              ? fmt::format("{} is not installed", name)
+                              : fmt::format("case '{}' is in the full tier and this is a fast-tier run", scene.name);
+  cases::RunResult r;
+  r.engine = name;
+  r.source = "baseline";
+  r.status = cases::RunStatus::error;
+  if (!std::filesystem::exists(file)) {
+    if (use == BaselineUse::not_installed) return std::nullopt;
+    r.reason = fmt::format("{}, and there is no committed baseline {}; run `{}` where {} is installed", why,
+                           file.string(), refresh_command(scene), name);
+    return r;
+  }
   store::Baseline b;
   try {
     b = store::read_baseline(file);
   } catch (const std::exception& e) {
-    cases::RunResult r;
-    r.engine = engine;
-    r.status = cases::RunStatus::error;
-    r.source = "baseline";
-    r.reason = fmt::format("{} is not installed and its committed baseline cannot be used: {}", engine, e.what());
+    r.reason = fmt::format("{}, and its committed baseline cannot be used: {}", why, e.what());
     return r;
   }
-  const auto it = b.references.find(engine);
-  if (it == b.references.end()) return std::nullopt;
-  cases::RunResult r = it->second;
-  r.source = "baseline";
+  const auto it = b.references.find(name);
+  if (it == b.references.end()) {
+    if (use == BaselineUse::not_installed) return std::nullopt;
+    r.reason = fmt::format("{}, and the committed baseline {} holds no result of {}; run `{}` where {} is installed",
+                           why, file.string(), name, refresh_command(scene), name);
+    return r;
+  }
+  std::string stale;
   if (b.fingerprint != store::scene_fingerprint(scene)) {
-    r.status = cases::RunStatus::error;
-    r.reason = fmt::format("{} is not installed and the committed baseline {} was made for another "
-                           "version of this case; run `demwb refresh --write-baselines` where it is "
-                           "installed",
-                           engine, file.string());
+    stale = "was made for another version of this case";
+  } else if (const auto input = b.inputs.find(name); input == b.inputs.end()) {
+    stale = fmt::format("does not record the input {} was given", name);
+  } else if (input->second != engine.input_fingerprint(scene)) {
+    stale = fmt::format("was made from another {} than the driver writes now", name == "yade" ? "script" : "input deck");
+  }
+  if (!stale.empty()) {
+    r.reason = fmt::format("{}, and the committed baseline {} {}; run `{}` where {} is installed", why,
+                           file.string(), stale, refresh_command(scene), name);
     return r;
   }
-  r.warnings.push_back(fmt::format("{} is not installed here: using its committed baseline {} "
-                                   "(made with {})",
-                                   engine, file.string(), r.version));
+  r = it->second;
+  r.source = "baseline";
+  r.warnings.push_back(use == BaselineUse::not_installed
+                           ? fmt::format("{} is not installed here: using its committed baseline {} (made with {})",
+                                         name, file.string(), r.version)
+                           : fmt::format("{} not run (case '{}' is in the full tier, this run is in the fast tier): "
+                                         "using its committed baseline {} (made with {})",
+                                         name, scene.name, file.string(), r.version));
   r.conventions["result source"] = "committed baseline " + file.string();
   return r;
 }
@@ -58,6 +95,21 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
   reference::RunOptions o = ctx.options;
   o.work_dir = ctx.options.work_dir / name;
   const bool reference_code = cases::is_reference_code(name);
+  // A full-tier case in the fast tier: the in-house side runs, the reference result is the
+  // committed one (a code that cannot express the case still answers n/a at once).
+  if (reference_code && ctx.tier == cases::Tier::fast && scene.tier == cases::Tier::full &&
+      engine->supports(scene).supported()) {
+    if (!ctx.baselines) {
+      cases::RunResult r;
+      r.engine = name;
+      r.status = cases::RunStatus::error;
+      r.reason = fmt::format("case '{}' is in the full tier and this is a fast-tier run, but no baselines directory "
+                             "is known; give --baselines DIR or run with --tier full",
+                             scene.name);
+      return r;
+    }
+    return *baseline_result(scene, *engine, *ctx.baselines, BaselineUse::fast_tier);
+  }
   // The cache key's version: the code's own and its driver's source revision, so that results
   // made by another driver are never reused.
   std::optional<std::string> key;
@@ -86,7 +138,7 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
                                           distrusted));
   }
   if (reference_code && result.status == cases::RunStatus::missing && ctx.baselines) {
-    if (auto b = baseline_result(scene, name, *ctx.baselines)) return *b;
+    if (auto b = baseline_result(scene, *engine, *ctx.baselines, BaselineUse::not_installed)) return *b;
   }
   return result;
 }

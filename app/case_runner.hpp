@@ -23,6 +23,9 @@ struct RunContext {
   prepare::PrepareOptions prepare;                ///< how a case's [[stages]] run (and are cached)
   std::optional<store::ResultCache> cache;        ///< reference-code results; none: always run
   bool refresh = false;                           ///< run reference codes even on a cache hit
+  /// Which cases run their reference codes: `full` runs everything; `fast` (suite and gate by
+  /// default) takes a `full` case's reference results from the committed baselines.
+  cases::Tier tier = cases::Tier::full;
   std::optional<std::filesystem::path> baselines; ///< directory of committed baselines
   bool wall_times = true;                         ///< false: results.json without wall times and scratch directories
   /// Called after each engine of a case finished (progress lines); may be called from several

@@ -28,7 +28,19 @@ struct GateFindings {
   std::size_t cases = 0;
   std::size_t comparisons = 0;
   std::map<std::string, std::size_t> by_status;
+  cases::Tier tier = cases::Tier::fast;  ///< the tier the results were made in
 };
+
+/// Fails on stored cross-code ensembles (cases/baselines/sweeps) that no longer fit their sweep
+/// and case files: their tables would describe another case.
+void check_ensembles(const Json& results, GateFindings& g) {
+  if (!results.contains("ensembles")) return;
+  for (const auto& e : results["ensembles"]) {
+    if (e.value("current", false)) continue;
+    g.failures.push_back(fmt::format("stored ensemble {}: {}", e.value("sweep", std::string("?")),
+                                     e.value("problem", std::string("not current"))));
+  }
+}
 
 /// The per-case documents of a results.json (aggregate or single case).
 std::vector<Json> case_documents(const Json& results) {
@@ -65,9 +77,10 @@ void check_comparisons(const Json& c, bool allow_missing, GateFindings& g) {
   }
   if (c.contains("engines")) {
     for (const auto& [engine, e] : c["engines"].items()) {
-      if (e.value("source", std::string("run")) == "baseline") {
-        g.notes.push_back(fmt::format("{}: {} not installed; compared against its committed baseline", name, engine));
-      }
+      if (e.value("source", std::string("run")) != "baseline" || e.value("status", std::string()) != "ok") continue;
+      const bool fast_tier = c.value("tier", std::string("fast")) == "full" && g.tier == cases::Tier::fast;
+      g.notes.push_back(fmt::format("{}: {} {}; compared against its committed baseline", name, engine,
+                                    fast_tier ? "not run (a full-tier case in the fast tier)" : "not installed"));
     }
   }
 }
@@ -129,7 +142,8 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
       "output,o", po::value<std::string>(), "where a suite run writes its report (default out/gate-<suite>)")(
       "jobs,j", po::value<unsigned>()->default_value(1), "cases run concurrently (suite runs)");
   add_run_options(opts);
-  const auto vm = parse_command(args, "usage: demwb gate DIR|SUITE [--baseline FILE] [--allow-missing]", opts,
+  add_tier_option(opts);
+  const auto vm = parse_command(args, "usage: demwb gate DIR|SUITE [--baseline FILE] [--allow-missing] [--tier fast|full]", opts,
                                 {"target"});
   if (!vm) return kExitOk;
   const std::string target = (*vm)["target"].as<std::string>();
@@ -141,7 +155,8 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
                                    : std::filesystem::path("out") / ("gate-" + suite.filename().string());
     std::vector<std::string> suite_args{suite.string(), "-o", dir.string(), "-j",
                                         std::to_string((*vm)["jobs"].as<unsigned>()), "--timeout",
-                                        fmt::format("{}", (*vm)["timeout"].as<double>())};
+                                        fmt::format("{}", (*vm)["timeout"].as<double>()), "--tier",
+                                        std::string(cases::to_string(tier_option(*vm)))};
     if (vm->count("no-cache") != 0) suite_args.push_back("--no-cache");
     if (vm->count("reproducible") != 0) suite_args.push_back("--reproducible");
     for (const char* option : {"cache", "lammps", "yade"}) {
@@ -162,6 +177,8 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
       vm->count("baseline") != 0 ? std::optional<std::filesystem::path>((*vm)["baseline"].as<std::string>())
                                  : default_baselines();
   GateFindings g;
+  g.tier = cases::parse_tier(results.value("tier", std::string("full"))).value_or(cases::Tier::full);
+  check_ensembles(results, g);
   for (const Json& c : case_documents(results)) {
     ++g.cases;
     check_comparisons(c, allow_missing, g);

@@ -2,7 +2,9 @@
 // `demwb suite`: every case of a suite on the engines each names, one report.
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <map>
 #include <cstdio>
 #include <future>
 #include <iostream>
@@ -83,6 +85,42 @@ std::string summary_table(const std::vector<SuiteEntry>& entries) {
   return t.render();
 }
 
+/// Full tier: runs every cross-code sweep of `sweeps_dir` afresh (demwb sweep) into
+/// `root`/<name>/ and reads the results back as ensembles; a sweep that fails is an ensemble
+/// with its problem, which fails the gate.
+std::vector<sweeps::StoredEnsemble> run_ensembles(const std::filesystem::path& sweeps_dir,
+                                                  const std::filesystem::path& root, const po::variables_map& vm,
+                                                  const Invocation& inv) {
+  // The committed store tells which sweeps compare engines (and any that do not load).
+  const auto listed = sweeps::stored_ensembles(sweeps_dir, root);
+  std::map<std::string, std::string> failed;
+  for (const auto& e : listed) {
+    if (e.engines.empty()) continue;  // did not load: stored_ensembles says why
+    std::vector<std::string> args{e.sweep_file.string(), "-o", (root / e.name).string(), "-j",
+                                  std::to_string(std::max(1U, vm["jobs"].as<unsigned>())), "--timeout",
+                                  fmt::format("{}", vm["timeout"].as<double>()), "--threads",
+                                  std::to_string(vm["threads"].as<int>())};
+    if (vm.count("no-cache") != 0) args.emplace_back("--no-cache");
+    for (const char* option : {"cache", "lammps", "yade"}) {
+      if (vm.count(option) != 0) args.insert(args.end(), {std::string("--") + option, vm[option].as<std::string>()});
+    }
+    std::fprintf(stderr, "full tier: running the sweep %s\n", e.sweep_file.c_str());
+    try {
+      if (command_sweep(args, inv) != kExitOk) failed[e.name] = "some of its runs failed (see its report)";
+    } catch (const std::exception& ex) {
+      failed[e.name] = std::string("the sweep could not run: ") + ex.what();
+    }
+  }
+  auto ran = sweeps::stored_ensembles(sweeps_dir, root);
+  for (auto& e : ran) {
+    if (const auto it = failed.find(e.name); it != failed.end()) {
+      e.problem = it->second;
+      e.current = false;
+    }
+  }
+  return ran;
+}
+
 }  // namespace
 
 int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
@@ -90,7 +128,9 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   opts.add_options()("output,o", po::value<std::string>(), "output directory (default out/<suite>)")(
       "jobs,j", po::value<unsigned>()->default_value(1), "cases run concurrently");
   add_run_options(opts);
-  const auto vm = parse_command(args, "usage: demwb suite canonical|DIR [-j N] [-o DIR]", opts, {"suite"});
+  add_tier_option(opts);
+  const auto vm = parse_command(args, "usage: demwb suite canonical|DIR [-j N] [-o DIR] [--tier fast|full]", opts,
+                                {"suite"});
   if (!vm) return kExitOk;
   const std::string suite_name = (*vm)["suite"].as<std::string>();
   const std::filesystem::path dir = cases::resolve_suite(suite_name);
@@ -100,6 +140,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   const unsigned jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
   const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(out);  // removed if interrupted
   RunContext context = run_context(*vm, out);
+  context.tier = tier_option(*vm);
   const auto files = cases::case_files(dir);
   if (files.empty()) throw std::runtime_error("suite " + dir.string() + " holds no *.toml case");
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
@@ -155,11 +196,16 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
   if (terminal) std::fputs("\n", stderr);
 
   const std::string command = reports::reproduce_command(inv.argc, inv.argv);
-  std::string md = fmt::format("# dem-workbench suite `{}`\n\nCases from `{}`.\n\nReproduce with:\n\n```sh\n{}\n```\n\n",
-                               suite_name, dir.string(), command);
+  std::string md = fmt::format("# dem-workbench suite `{}`\n\nCases from `{}`, {} tier{}.\n\nReproduce with:\n\n```sh\n{}\n```\n\n",
+                               suite_name, dir.string(), cases::to_string(context.tier),
+                               context.tier == cases::Tier::fast
+                                   ? " (reference results of full-tier cases come from their committed baselines)"
+                                   : " (every engine of every case ran)",
+                               command);
   md += "## Summary\n\n" + summary_table(entries) + "\n";
   nlohmann::ordered_json all;
   all["suite"] = suite_name;
+  all["tier"] = std::string(cases::to_string(context.tier));
   all["cases"] = nlohmann::ordered_json::array();
   comparison::Status worst = comparison::Status::not_applicable;
   for (const auto& e : entries) {
@@ -174,9 +220,12 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
     md += reports::case_section(*e.outcome, case_dir / "plots", out, 2);
     all["cases"].push_back(reports::results_json(*e.outcome, context.wall_times));
   }
-  // The cross-code ensembles stored beside the suite (cases/sweeps, cases/baselines/sweeps).
-  const auto ensembles = sweeps::stored_ensembles(dir.parent_path() / "sweeps", dir.parent_path() / "baselines" / "sweeps");
-  md += sweeps::stored_ensembles_section(ensembles, out);
+  // The cross-code ensembles beside the suite (cases/sweeps): their committed results
+  // (cases/baselines/sweeps) in the fast tier, run afresh in the full tier.
+  const bool full = context.tier == cases::Tier::full;
+  auto ensembles = full ? run_ensembles(dir.parent_path() / "sweeps", out / "ensembles", *vm, inv)
+                        : sweeps::stored_ensembles(dir.parent_path() / "sweeps", dir.parent_path() / "baselines" / "sweeps");
+  md += sweeps::stored_ensembles_section(ensembles, out, full);
   all["ensembles"] = nlohmann::ordered_json::array();
   for (const auto& e : ensembles) {
     all["ensembles"].push_back({{"sweep", e.name},

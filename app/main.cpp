@@ -17,11 +17,12 @@ constexpr std::string_view kUsage = R"(usage: demwb <command> [options]
 commands:
   run CASE.toml [--engine E ...] [-o DIR]     run a case on engines, write results
   compare CASE.toml [--engines E,F] [-o DIR]  run and print the discrepancy table
-  suite canonical|DIR [-j N] [-o DIR]         every case of a suite, one report
+  suite canonical|DIR [-j N] [-o DIR] [--tier fast|full]  every case of a suite, one report
   sweep SWEEP.toml [-j N] [-o DIR]            a parameter matrix over a case, several seeds per point
   study integrators [-o DIR]                  the integrator-accuracy study (thesis ch. 4)
-  gate DIR|SUITE [--baseline F] [--allow-missing]  exit 0 only when every comparison is green
+  gate DIR|SUITE [--tier fast|full] [--baseline F] [--allow-missing]  exit 0 only when every comparison is green
   refresh [SUITE|CASE] [--write-baselines]    re-run reference codes into the cache/baselines
+  refresh --sweep SWEEP.toml [-j N]           re-run a committed sweep and store its results
   bench chute|box [--threads N] [--ranks N]    the core against LAMMPS: particle-steps/s, memory
   engines [--lammps PATH] [--yade PATH]       installed engines, their versions and where they are
   convert linear-to-jkr|jkr-to-linear ...     appendix E: linear cohesion <-> JKR

@@ -9,6 +9,7 @@
 #include "app/cli.hpp"
 #include "app/driver_revisions.hpp"
 #include "cases/catalogue.hpp"
+#include "cases/excerpt.hpp"
 #include "cases/output_budget.hpp"
 
 namespace app {
@@ -107,6 +108,19 @@ double timeout_option(const po::variables_map& vm) {
     throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
   }
   return timeout;
+}
+
+void add_tier_option(po::options_description& opts) {
+  opts.add_options()("tier", po::value<std::string>()->default_value("fast"),
+                     "fast: full-tier cases take their reference results from the committed baselines (CI); "
+                     "full: every engine of every case runs");
+}
+
+cases::Tier tier_option(const po::variables_map& vm) {
+  const std::string word = vm["tier"].as<std::string>();
+  const auto tier = cases::parse_tier(word);
+  if (!tier) throw std::invalid_argument("--tier must be 'fast' or 'full', not '" + cases::excerpt(word) + "'");
+  return *tier;
 }
 
 void add_program_options(po::options_description& opts) {

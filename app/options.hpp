@@ -23,6 +23,11 @@ cases::LoadOptions load_options(const boost::program_options::variables_map& vm)
 /// The value of --timeout, checked: seconds in (0, 1e7].
 double timeout_option(const boost::program_options::variables_map& vm);
 
+/// Adds --tier fast|full (suite and gate; docs/user-guide.md, "Tiers").
+void add_tier_option(boost::program_options::options_description& opts);
+/// The value of --tier, checked: `fast` (the default) or `full`.
+cases::Tier tier_option(const boost::program_options::variables_map& vm);
+
 /// Adds --lammps PATH and --yade PATH (the reference binaries to drive).
 void add_program_options(boost::program_options::options_description& opts);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <set>
 #include <string>
@@ -14,6 +15,9 @@
 // The case loader's section readers, one per top-level table of a case file, in the order
 // load_case_text calls them: each may read what the earlier ones stored in the Scene.
 namespace cases::loader {
+
+/// The axis names of case files, in coordinate order.
+inline constexpr std::array<std::string_view, 3> kAxes{"x", "y", "z"};
 
 /// Reads [case]: name, description, thesis reference.
 void read_case_section(const Table& root, Scene& scene);

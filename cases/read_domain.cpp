@@ -13,7 +13,6 @@ namespace {
 
 constexpr auto kDomainKeys = std::to_array<std::string_view>({"min", "max", "periodic"});
 constexpr auto kNeighborKeys = std::to_array<std::string_view>({"skin", "sort_every"});
-constexpr std::array<std::string_view, 3> kAxes{"x", "y", "z"};
 
 }  // namespace
 

@@ -22,7 +22,7 @@
 namespace cases::loader {
 namespace {
 
-constexpr auto kCaseKeys = std::to_array<std::string_view>({"name", "description", "thesis"});
+constexpr auto kCaseKeys = std::to_array<std::string_view>({"name", "description", "thesis", "tier"});
 
 constexpr std::array kMixingRules{dem::MixingRule::harmonic, dem::MixingRule::arithmetic,
                                   dem::MixingRule::geometric, dem::MixingRule::min,
@@ -234,6 +234,10 @@ void read_case_section(const Table& root, Scene& scene) {
   }
   if (const auto v = section.find("description")) scene.description = v->string();
   if (const auto v = section.find("thesis")) scene.thesis_reference = v->string();
+  if (const auto v = section.find("tier")) {
+    static constexpr auto kTiers = std::to_array<std::string_view>({"fast", "full"});
+    scene.tier = *parse_tier(v->keyword(kTiers, "tier"));
+  }
 }
 
 void read_model(const Table& root, Scene& scene) {

@@ -27,7 +27,6 @@ constexpr auto kSizeKeys = std::to_array<std::string_view>(
 
 constexpr std::array<std::string_view, 3> kArrangements{"simple_cubic", "hcp", "random"};
 constexpr std::array<std::string_view, 2> kShapes{"box", "cylinder"};
-constexpr std::array<std::string_view, 3> kAxes{"x", "y", "z"};
 constexpr std::array<std::string_view, 4> kDistributions{"monodisperse", "gaussian", "lognormal", "discrete"};
 
 /// Keys of one distribution (besides `distribution`, `min`, `max`).

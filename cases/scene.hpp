@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "cases/tier.hpp"
 #include "dem/contact/model_choice.hpp"
 #include "dem/integrators/scheme_id.hpp"
 #include "dem/materials/material_properties.hpp"
@@ -185,6 +186,7 @@ struct Scene {
   std::string name;
   std::string description;
   std::string thesis_reference;
+  Tier tier = Tier::fast;      ///< where the case runs (CI or outside); not part of its fingerprint
   std::string source_path;     ///< case file it came from
   std::string source_text;     ///< exact bytes of that file
   std::string source_sha256;   ///< hex SHA-256 of source_text

@@ -46,6 +46,11 @@ class Engine {
   /// Runs `scene` and returns its traces (status ok) or why not.
   [[nodiscard]] virtual cases::RunResult run(const cases::Scene& scene,
                                              const RunOptions& options) const = 0;
+  /// SHA-256 of everything the engine would feed its program for `scene` (a reference code's
+  /// input deck, data file or script), without running it: a stored result whose fingerprint
+  /// differs was made from another input. Empty for engines with no external input (the core,
+  /// closed forms) and for scenes the engine cannot express.
+  [[nodiscard]] virtual std::string input_fingerprint(const cases::Scene& /*scene*/) const { return {}; }
 };
 
 /// Which external programs the reference engines drive (docs/user-guide.md, "Choosing the

@@ -266,7 +266,8 @@ std::string case_section(const comparison::CaseOutcome& o, const std::filesystem
   std::string md = heading(level, fmt::format("`{}` — {}", s.name, status_cell(comparison::worst_status(o))));
   if (!s.description.empty()) md += inert_text(s.description) + "\n\n";
   if (!s.thesis_reference.empty()) md += "Thesis: " + inert_text(s.thesis_reference) + ".  \n";
-  md += fmt::format("Case file: `{}` (sha256 `{}`).\n\n", s.source_path, s.source_sha256.substr(0, 16));
+  md += fmt::format("Case file: `{}` (sha256 `{}`), tier `{}`.\n\n", s.source_path, s.source_sha256.substr(0, 16),
+                    cases::to_string(s.tier));
   md += model_section(s, level + 1);
   md += stages_section(s, level + 1);
   md += runs_section(o, level + 1);

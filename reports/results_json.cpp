@@ -85,6 +85,7 @@ nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome, bool
   doc["case"] = outcome.scene.name;
   doc["case_sha256"] = outcome.scene.source_sha256;
   doc["case_file"] = outcome.scene.source_path;
+  doc["tier"] = std::string(cases::to_string(outcome.scene.tier));
   Json engines = Json::object();
   for (const auto& run : outcome.runs) {
     const auto m = outcome.metrics.find(run.engine);

@@ -112,6 +112,7 @@ Baseline read_baseline(const std::filesystem::path& file) {
     for (const auto& [engine, r] : j.at("references").items()) {
       b.references[engine] = run_result_from_json(r);
     }
+    if (j.contains("inputs")) b.inputs = j.at("inputs").get<std::map<std::string, std::string>>();
     b.inhouse_metrics = j.at("inhouse_metrics").get<std::map<std::string, double>>();
     return b;
   } catch (const std::exception& e) {
@@ -130,6 +131,7 @@ void write_baseline(const std::filesystem::path& file, const Baseline& b) {
     refs[engine] = run_result_json(kept);
   }
   j["references"] = refs;
+  j["inputs"] = b.inputs;
   j["inhouse_metrics"] = b.inhouse_metrics;
   support::write_file(file, with_checksum(std::move(j)).dump(1) + "\n");
 }

@@ -52,6 +52,9 @@ struct Baseline {
   std::string case_name;
   std::string fingerprint;                            ///< of the scene it was made from
   std::map<std::string, cases::RunResult> references; ///< engine → result
+  /// engine → SHA-256 of the input its driver fed it (reference::Engine::input_fingerprint):
+  /// a result is stale once the driver would write another deck or script for the case.
+  std::map<std::string, std::string> inputs;
   std::map<std::string, double> inhouse_metrics;
 };
 

@@ -46,7 +46,7 @@ void read_store(StoredEnsemble& e, const SweepSpec& spec) {
   const fs::path json_file = e.stored_dir / "sweep.json";
   const fs::path report_file = e.stored_dir / "report.md";
   if (!fs::exists(json_file) || !fs::exists(report_file)) {
-    e.problem = fmt::format("no stored results in {}: run scripts/refresh-sweeps.sh {}", e.stored_dir.string(),
+    e.problem = fmt::format("no stored results in {}: run `demwb refresh --sweep {}`", e.stored_dir.string(),
                             e.sweep_file.string());
     return;
   }
@@ -56,7 +56,7 @@ void read_store(StoredEnsemble& e, const SweepSpec& spec) {
   const bool csv_same = fs::exists(e.stored_dir / "sweep.csv") &&
                         j.at("sweep_csv_sha256") == support::sha256_hex(support::read_file(e.stored_dir / "sweep.csv"));
   if (!sweep_same || !case_same || !csv_same) {
-    e.problem = fmt::format("stale: {} changed since the results were stored; run scripts/refresh-sweeps.sh {}",
+    e.problem = fmt::format("stale: {} changed since the results were stored; run `demwb refresh --sweep {}`",
                             !sweep_same ? e.sweep_file.string()
                                         : (!case_same ? spec.case_file.string() : std::string("sweep.csv")),
                             e.sweep_file.string());
@@ -105,27 +105,30 @@ std::vector<StoredEnsemble> stored_ensembles(const fs::path& sweeps_dir, const f
   return out;
 }
 
-std::string stored_ensembles_section(const std::vector<StoredEnsemble>& ensembles, const fs::path& report_dir) {
+std::string stored_ensembles_section(const std::vector<StoredEnsemble>& ensembles, const fs::path& report_dir,
+                                     bool ran_now) {
   if (ensembles.empty()) return {};
-  std::string md =
-      "## Cross-code ensembles (stored)\n\n"
-      "Many-body breakup is chaotic, so codes are compared on ensembles over seeds, not on one run. "
-      "These sweeps run outside CI (`scripts/refresh-sweeps.sh`); their results are stored with a "
-      "fingerprint of the sweep and case files they came from. Each cell is the difference of an "
-      "engine's mean and the first engine's over the seeds, in units of their combined standard "
-      "error; above 2 (bold) the ensembles differ by more than their spread explains.\n\n";
+  std::string md = ran_now ? "## Cross-code ensembles (run now, full tier)\n\n" : "## Cross-code ensembles (stored)\n\n";
+  md += "Many-body breakup is chaotic, so codes are compared on ensembles over seeds, not on one run. ";
+  md += ran_now ? "This full-tier run ran each sweep afresh; the committed results stay under cases/baselines/sweeps. "
+                : "These sweeps run outside CI (`demwb refresh --sweep`, or the full tier); their results are stored "
+                  "with a fingerprint of the sweep and case files they came from. ";
+  md += "Each cell is the difference of an engine's mean and the first engine's over the seeds, in units of their "
+        "combined standard error; above 2 (bold) the ensembles differ by more than their spread explains.\n\n";
   for (const auto& e : ensembles) {
     md += fmt::format("### `{}`\n\n", e.name);
     if (!e.description.empty()) md += reports::inert_text(e.description) + "\n\n";
     if (!e.engines.empty()) {
       std::string names;
       for (const auto& n : e.engines) names += (names.empty() ? "" : ", ") + n;
-      md += fmt::format("Engines: {}. Sweep `{}`; stored results [{}]({}).\n\n", names,
-                        relative_link(e.sweep_file, report_dir), e.stored_dir.filename().string(),
+      md += fmt::format("Engines: {}. Sweep `{}`; {} results [{}]({}).\n\n", names,
+                        relative_link(e.sweep_file, report_dir), ran_now ? "this run's" : "stored",
+                        e.stored_dir.filename().string(),
                         relative_link(e.stored_dir / "report.md", report_dir));
     }
-    md += e.current ? fmt::format("Store: current. Cells above 2 combined standard errors: {}.\n\n", e.beyond_two)
-                    : fmt::format("Store: **{}**\n\n", e.problem);
+    md += e.current ? fmt::format("{}: current. Cells above 2 combined standard errors: {}.\n\n",
+                                  ran_now ? "Results" : "Store", e.beyond_two)
+                    : fmt::format("{}: **{}**\n\n", ran_now ? "Results" : "Store", e.problem);
     if (!e.comparison_table.empty()) md += e.comparison_table + "\n";
   }
   return md;

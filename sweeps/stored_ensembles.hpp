@@ -29,9 +29,10 @@ std::vector<StoredEnsemble> stored_ensembles(const std::filesystem::path& sweeps
                                              const std::filesystem::path& stored_root);
 
 /// The suite report's section on them: per ensemble the difference of the engines' means in
-/// combined standard errors, per metric and point, as stored, and whether the store is current.
-/// Empty when there are none. Links are written relative to `report_dir`.
+/// combined standard errors, per metric and point, and whether the results are current. `ran_now`:
+/// the results are this run's (full tier), not the committed ones. Empty when there are none.
+/// Links are written relative to `report_dir`.
 std::string stored_ensembles_section(const std::vector<StoredEnsemble>& ensembles,
-                                     const std::filesystem::path& report_dir);
+                                     const std::filesystem::path& report_dir, bool ran_now = false);
 
 }  // namespace sweeps

@@ -15,11 +15,6 @@ namespace {
 
 using cases::Vector3;
 
-/// Mass of particle i [kg] (eq 3.1).
-double mass_of(const cases::Scene& scene, std::size_t i) {
-  const cases::ParticleSpec& p = scene.particles[i];
-  return dem::sphere_mass(scene.materials.at(p.material).density, p.radius);
-}
 
 /// The axis partner for the contact of particles i and j with reduced mass m* (eq 3.10–3.11).
 AxisPartner partner_for(const cases::Scene& scene, const dem::PairTable& table, std::size_t i,
@@ -71,7 +66,7 @@ CollinearScene build_collinear_scene(const cases::Scene& scene, const dem::PairT
     const cases::ParticleSpec& p = scene.particles[i];
     out.axis = *line_of_motion(scene, i, roles.fixed);
     out.first = i;
-    out.problem.mass = mass_of(scene, i);
+    out.problem.mass = particle_mass(scene, i);
     out.problem.position = 0.0;
     out.problem.velocity = norm(p.velocity);
     for (const std::size_t j : roles.fixed) {
@@ -86,8 +81,8 @@ CollinearScene build_collinear_scene(const cases::Scene& scene, const dem::PairT
   const std::size_t b = roles.mobile[1];
   const cases::ParticleSpec& pa = scene.particles[a];
   const cases::ParticleSpec& pb = scene.particles[b];
-  const double m_a = mass_of(scene, a);
-  const double m_b = mass_of(scene, b);
+  const double m_a = particle_mass(scene, a);
+  const double m_b = particle_mass(scene, b);
   const double total = m_a + m_b;
   const Vector3 x_ab = minus(pa.position, pb.position);
   const double distance = norm(x_ab);
@@ -166,6 +161,11 @@ std::vector<Vector3> forces_at(const cases::Scene& scene, const CollinearScene& 
     }
   }
   return force;
+}
+
+double particle_mass(const cases::Scene& scene, std::size_t i) {
+  const cases::ParticleSpec& p = scene.particles.at(i);
+  return dem::sphere_mass(scene.materials.at(p.material).density, p.radius);
 }
 
 }  // namespace reference::analytic

@@ -21,6 +21,9 @@ struct ParticleRoles {
 /// Splits the particles into mobile and fixed ones, in scene order.
 ParticleRoles particle_roles(const cases::Scene& scene);
 
+/// Mass of particle i [kg] (eq 3.1).
+double particle_mass(const cases::Scene& scene, std::size_t i);
+
 /// Unit vector of one mobile sphere's line of motion: along its velocity or, at rest, from the
 /// first of `fixed` it touches (δ ≥ 0, eq 3.2) towards it. Empty when neither exists.
 std::optional<cases::Vector3> line_of_motion(const cases::Scene& scene, std::size_t mobile,

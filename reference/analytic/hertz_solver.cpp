@@ -16,6 +16,7 @@
 #include "dem/contact/laws/hertz.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "dem/particles/particles.hpp"
+#include "reference/analytic/collinear_scene.hpp"
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/hertz_elastic.hpp"
 #include "reference/analytic/two_body_ode.hpp"
@@ -58,7 +59,7 @@ struct HertzPair {
 };
 
 /// Reasons against the model choice (keywords only).
-void check_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_hertz_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
   const dem::ModelChoice& m = scene.model;
   if (m.normal != "hertz") {
     reasons.push_back(reason("normal model '{}' is not solved here (only 'hertz')", m.normal));
@@ -90,7 +91,7 @@ void check_environment(const cases::Scene& scene, std::vector<std::string>& reas
 }
 
 /// Reasons against the layout: exactly two bodies, colliding head-on.
-void check_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_hertz_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
   const std::size_t n = scene.particles.size();
   for (std::size_t i = 0; i < n; ++i) {
     const cases::ParticleSpec& p = scene.particles[i];
@@ -154,11 +155,6 @@ void check_layout(const cases::Scene& scene, std::vector<std::string>& reasons) 
   }
 }
 
-/// Mass of particle i [kg] (eq 3.1).
-double mass_of(const cases::Scene& scene, std::size_t i) {
-  const cases::ParticleSpec& p = scene.particles[i];
-  return dem::sphere_mass(scene.materials.at(p.material).density, p.radius);
-}
 
 /// The reduction of a scene whose model and layout passed the checks.
 HertzPair reduce(const cases::Scene& scene, const dem::PairTable& table) {
@@ -170,7 +166,7 @@ HertzPair reduce(const cases::Scene& scene, const dem::PairTable& table) {
     h.first = 0;
     h.second = 0;
     h.normal = scaled(w.normal, 1.0 / norm(w.normal));
-    h.reduced_mass = mass_of(scene, 0);
+    h.reduced_mass = particle_mass(scene, 0);
     h.reduced_radius = p0.radius;
     h.contact_distance = p0.radius;
     h.initial_overlap = p0.radius - dot(minus(p0.position, w.point), h.normal);
@@ -192,12 +188,12 @@ HertzPair reduce(const cases::Scene& scene, const dem::PairTable& table) {
     h.initial_overlap = h.contact_distance - distance;
     h.approach_speed = -dot(minus(pa.velocity, pb.velocity), h.normal);
     h.law = table.law(pa.material, pb.material);
-    const double m_a = mass_of(scene, a);
+    const double m_a = particle_mass(scene, a);
     if (pb.fixed) {
       h.kind = HertzPair::Kind::fixed_sphere;
       h.reduced_mass = m_a;
     } else {
-      const double m_b = mass_of(scene, b);
+      const double m_b = particle_mass(scene, b);
       const double total = m_a + m_b;
       h.kind = HertzPair::Kind::two_mobile;
       h.reduced_mass = m_a * m_b / total;
@@ -460,9 +456,9 @@ std::map<std::string, std::string> conventions(const cases::Scene& scene, const 
 
 std::vector<std::string> HertzSolver::unsupported_reasons(const cases::Scene& scene) const {
   std::vector<std::string> reasons;
-  check_model(scene, reasons);
+  check_hertz_model(scene, reasons);
   check_environment(scene, reasons);
-  check_layout(scene, reasons);
+  check_hertz_layout(scene, reasons);
   if (reasons.empty()) static_cast<void>(reduce_checked(scene, reasons));
   return reasons;
 }

@@ -22,8 +22,6 @@ namespace {
 
 using cases::Vector3;
 
-/// Relative tolerance of the line-of-centres check.
-constexpr double kCollinearTolerance = 1e-12;
 
 /// Position of a particle at time t: at rest, or on its piecewise-constant-velocity motion.
 Vector3 position_at(const cases::ParticleSpec& p, double t) {
@@ -246,7 +244,7 @@ std::map<std::string, std::string> conventions(const Rig& rig, double dt, std::u
 }
 
 /// Reasons against the model choice.
-void check_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_jkr_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
   const dem::ModelChoice& m = scene.model;
   if (m.cohesion != "jkr") {
     reasons.push_back(fmt::format("analytic (JKR pull-off rig): needs cohesion = 'jkr', got '{}'", m.cohesion));
@@ -270,7 +268,7 @@ void check_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
 }
 
 /// Reasons against the layout: two fixed spheres, one moving along the line of centres.
-void check_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_jkr_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
   if (scene.particles.size() != 2) {
     reasons.push_back(fmt::format("analytic (JKR pull-off rig): needs exactly 2 particles, got {}",
                                   scene.particles.size()));
@@ -313,9 +311,9 @@ void check_layout(const cases::Scene& scene, std::vector<std::string>& reasons) 
 
 std::vector<std::string> JkrPulloffSolver::unsupported_reasons(const cases::Scene& scene) const {
   std::vector<std::string> reasons;
-  check_model(scene, reasons);
+  check_jkr_model(scene, reasons);
   if (!reasons.empty()) return reasons;
-  check_layout(scene, reasons);
+  check_jkr_layout(scene, reasons);
   if (!reasons.empty()) return reasons;
   try {
     const Rig rig = make_rig(scene);

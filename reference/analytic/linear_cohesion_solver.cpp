@@ -25,8 +25,6 @@ namespace {
 
 using cases::Vector3;
 
-/// Relative tolerance of the line-of-motion check.
-constexpr double kCollinearTolerance = 1e-12;
 /// Most regions a run may pass through before the solution gives up (it settles long before).
 constexpr std::size_t kMaxPieces = 100000;
 
@@ -348,7 +346,7 @@ std::map<std::string, std::string> conventions(const Pair& p, double dt, std::ui
   return c;
 }
 
-void check_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_linear_cohesion_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
   const dem::ModelChoice& m = scene.model;
   if (m.cohesion != "linear") {
     reasons.push_back(fmt::format("analytic (linear cohesion pair): needs cohesion = 'linear', got '{}'",
@@ -371,7 +369,7 @@ void check_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
   }
 }
 
-void check_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_linear_cohesion_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
   if (scene.particles.size() != 2 || scene.particles[0].fixed == scene.particles[1].fixed) {
     reasons.push_back("analytic (linear cohesion pair): needs exactly 2 particles, one fixed and one mobile");
     return;
@@ -408,9 +406,9 @@ void check_layout(const cases::Scene& scene, std::vector<std::string>& reasons) 
 
 std::vector<std::string> LinearCohesionSolver::unsupported_reasons(const cases::Scene& scene) const {
   std::vector<std::string> reasons;
-  check_model(scene, reasons);
+  check_linear_cohesion_model(scene, reasons);
   if (!reasons.empty()) return reasons;
-  check_layout(scene, reasons);
+  check_linear_cohesion_layout(scene, reasons);
   if (!reasons.empty()) return reasons;
   try {
     const Pair p = make_pair(scene);

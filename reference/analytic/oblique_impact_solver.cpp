@@ -14,6 +14,7 @@
 #include "dem/core/vector.hpp"
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/linear_oscillator.hpp"
+#include "reference/analytic/vector3_math.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
 
 namespace reference::analytic {
@@ -21,8 +22,6 @@ namespace {
 
 using dem::Vec3;
 
-Vec3 vec(const cases::Vector3& a) { return {a[0], a[1], a[2]}; }
-cases::Vector3 arr(const Vec3& a) { return {a.x(), a.y(), a.z()}; }
 
 /// Grid points per contact for the gross-sliding and spring-following checks.
 constexpr int kCheckPoints = 4000;

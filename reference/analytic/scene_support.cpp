@@ -17,11 +17,9 @@ namespace {
 
 using cases::Vector3;
 
-/// Relative tolerance of the collinearity and head-on checks.
-constexpr double kCollinearTolerance = 1e-12;
 
 /// Reasons against the model choice (keywords only: a PairTable would throw on unknown ones).
-void check_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_collinear_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
   const dem::ModelChoice& m = scene.model;
   if (m.normal != "linear") {
     reasons.push_back(fmt::format(
@@ -54,7 +52,7 @@ void check_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
 
 /// Reasons against the particles' layout: one mobile sphere with collinear fixed partners, or
 /// two mobile spheres alone colliding head-on.
-void check_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
+void check_collinear_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
   const ParticleRoles roles = particle_roles(scene);
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const cases::ParticleSpec& p = scene.particles[i];
@@ -158,7 +156,7 @@ void check_parameters(const CollinearScene& reduced, const cases::Scene& scene,
 
 std::vector<std::string> unsupported_reasons(const cases::Scene& scene) {
   std::vector<std::string> reasons;
-  check_model(scene, reasons);
+  check_collinear_model(scene, reasons);
   const Vector3& g = scene.gravity;
   if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0) {
     reasons.push_back(fmt::format(
@@ -181,7 +179,7 @@ std::vector<std::string> unsupported_reasons(const cases::Scene& scene) {
   if (scene.model.clamp_tensile) {
     reasons.push_back("analytic: clamp_tensile changes the dashpot law; no closed form here");
   }
-  check_layout(scene, reasons);
+  check_collinear_layout(scene, reasons);
   if (!reasons.empty()) return reasons;
   try {
     const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);

@@ -10,6 +10,7 @@
 #include "dem/core/vector.hpp"
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/oblique_impact_solver.hpp"
+#include "reference/analytic/vector3_math.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
 
 namespace reference::analytic {
@@ -17,8 +18,6 @@ namespace {
 
 using dem::Vec3;
 
-Vec3 vec(const cases::Vector3& a) { return {a[0], a[1], a[2]}; }
-cases::Vector3 arr(const Vec3& a) { return {a.x(), a.y(), a.z()}; }
 
 /// Relative tolerance of the resting-state checks (static overlap, velocity along the wall).
 constexpr double kRestTolerance = 1e-9;

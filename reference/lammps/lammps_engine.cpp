@@ -23,6 +23,7 @@
 #include "reference/lammps/wall_mapping.hpp"
 #include "support/interrupts.hpp"
 #include "support/process.hpp"
+#include "support/sha256.hpp"
 #include "support/text_file.hpp"
 #include "cases/time_step.hpp"
 
@@ -135,6 +136,26 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
   return s;
 }
 
+lammps::DeckSettings LammpsEngine::deck_settings(const cases::Scene& scene, double timestep) const {
+  lammps::DeckSettings settings;
+  settings.timestep = timestep;
+  settings.steps = cases::step_count(scene.integration.duration, settings.timestep);
+  settings.extra_commands = options_.extra_commands;
+  return settings;
+}
+
+std::string LammpsEngine::input_fingerprint(const cases::Scene& scene) const {
+  if (!supports(scene).supported()) return {};
+  try {
+    const lammps::DeckSettings settings = deck_settings(scene, core_setup(scene).simulation.timestep);
+    std::string input = lammps::write_deck(scene, settings);
+    if (lammps::atoms_in_data_file(scene)) input += "\n--- data file ---\n" + lammps::write_atom_data(scene, settings);
+    return support::sha256_hex(input);
+  } catch (const std::exception&) {
+    return {};  // the run itself reports why the deck cannot be written
+  }
+}
+
 cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& options) const {
   // The version probe counts against the run's time limit; a binary that hung on an empty input
   // is not given the deck.
@@ -146,12 +167,9 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
                    "");
   }
   const CoreSetup setup = core_setup(scene);
-  const double dt = setup.simulation.timestep;
-  const std::uint64_t steps = cases::step_count(scene.integration.duration, dt);
-  lammps::DeckSettings settings;
-  settings.timestep = dt;
-  settings.steps = steps;
-  settings.extra_commands = options_.extra_commands;
+  const lammps::DeckSettings settings = deck_settings(scene, setup.simulation.timestep);
+  const double dt = settings.timestep;
+  const std::uint64_t steps = settings.steps;
   const std::string deck = lammps::write_deck(scene, settings);
 
   const std::filesystem::path dir = lammps::make_run_directory(options.work_dir);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "reference/engine.hpp"
+#include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/lammps_runner.hpp"
 
 namespace reference {
@@ -35,8 +36,12 @@ class LammpsEngine final : public Engine {
   [[nodiscard]] Support supports(const cases::Scene& scene) const override;
   [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
                                      const RunOptions& options) const override;
+  /// SHA-256 of the deck and, for a large scene, the data file run() would write.
+  [[nodiscard]] std::string input_fingerprint(const cases::Scene& scene) const override;
 
  private:
+  /// The deck settings of `scene` run with time step `timestep` (the core's resolved one).
+  [[nodiscard]] lammps::DeckSettings deck_settings(const cases::Scene& scene, double timestep) const;
   /// The probe of the binary, run on first use.
   const lammps::LammpsProbe& probe() const;
 

@@ -12,6 +12,7 @@
 #include "reference/yade/scene_support.hpp"
 #include "reference/yade/script_writer.hpp"
 #include "reference/yade/yade_process.hpp"
+#include "support/sha256.hpp"
 #include "support/text_file.hpp"
 
 namespace reference {
@@ -87,6 +88,16 @@ Support YadeEngine::supports(const cases::Scene& scene) const {
   s.reasons = yade::unsupported_scene_features(scene);
   for (auto& r : yade::map_contact_model(scene).reasons) s.reasons.push_back(std::move(r));
   return s;
+}
+
+std::string YadeEngine::input_fingerprint(const cases::Scene& scene) const {
+  try {
+    const yade::YadeRunPlan plan = yade::make_run_plan(scene);
+    if (!plan.model.reasons.empty()) return {};
+    return support::sha256_hex(yade::write_yade_script(scene, plan));
+  } catch (const std::exception&) {
+    return {};  // the run itself reports why the script cannot be written
+  }
 }
 
 cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& options) const {

@@ -26,6 +26,8 @@ class YadeEngine final : public Engine {
   [[nodiscard]] Support supports(const cases::Scene& scene) const override;
   [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
                                      const RunOptions& options) const override;
+  /// SHA-256 of the Python script run() would give YADE.
+  [[nodiscard]] std::string input_fingerprint(const cases::Scene& scene) const override;
 
  private:
   yade::YadeInstallation install_;

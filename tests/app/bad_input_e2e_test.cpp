@@ -13,7 +13,7 @@
 #include "../bad_case_files.hpp"
 #include "demwb_process.hpp"
 
-namespace {
+namespace bad_input_e2e_test {
 
 using demwb_e2e::canonical;
 using demwb_e2e::demwb;

@@ -10,7 +10,7 @@
 #include "support/process.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace bench_e2e_test {
 
 using demwb_e2e::demwb;
 using demwb_e2e::scratch;

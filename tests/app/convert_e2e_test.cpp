@@ -12,7 +12,7 @@
 #include "demwb_process.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace convert_e2e_test {
 
 using demwb_e2e::demwb;
 namespace fs = std::filesystem;

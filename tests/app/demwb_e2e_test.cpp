@@ -11,7 +11,7 @@
 #include "support/process.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace demwb_e2e_test {
 
 using demwb_e2e::canonical;
 using demwb_e2e::demwb;

@@ -11,7 +11,7 @@
 #include "store/result_cache.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace gate_e2e_test {
 
 using demwb_e2e::canonical;
 using demwb_e2e::demwb;
@@ -179,7 +179,7 @@ TEST(DemwbGate, AReferenceCodeThatIsNotInstalledIsMissingAndFailsTheGate) {
 
 }  // namespace
 
-namespace {
+namespace gate_e2e_test {
 
 TEST(DemwbGate, WhereAReferenceIsNotInstalledItsCommittedBaselineStandsInWithAWarning) {
   // No lmp in PATH: LAMMPS comes from cases/baselines/single_collision.json (YADE, found at its

@@ -13,7 +13,7 @@
 #include "support/process.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace suite_e2e_test {
 
 using demwb_e2e::canonical;
 using demwb_e2e::demwb;

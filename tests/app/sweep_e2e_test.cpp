@@ -13,7 +13,7 @@
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace sweep_e2e_test {
 
 using demwb_e2e::demwb;
 using demwb_e2e::scratch;

@@ -11,7 +11,7 @@
 #include "support/process.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace sweep_mpi_test {
 
 using demwb_e2e::demwb;
 using demwb_e2e::scratch;

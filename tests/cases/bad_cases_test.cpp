@@ -13,7 +13,7 @@
 #include "../bad_case_files.hpp"
 #include "cases/case_loader.hpp"
 
-namespace {
+namespace bad_cases_test {
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 
 #include "cases/case_loader.hpp"
 
-namespace {
+namespace case_loader_physics_test {
 
 constexpr const char* kCase = R"(
 [case]

@@ -12,7 +12,7 @@
 #include "support/text_file.hpp"
 #include "case_texts.hpp"
 
-namespace {
+namespace case_loader_test {
 
 using cases::CaseError;
 using cases::load_case_text;
@@ -125,6 +125,23 @@ TEST(CaseLoader, LoadsFullCaseIntoExplicitScene) {
   ASSERT_EQ(s.mixing.size(), 1u);
   EXPECT_EQ(s.mixing.at("normal_stiffness"), dem::MixingRule::arithmetic);
   EXPECT_EQ(s.gravity, (cases::Vector3{0.0, 0.0, -9.81}));
+}
+
+TEST(CaseLoader, ReadsTheTierFastByDefaultAndRefusesAnUnknownOne) {
+  EXPECT_EQ(load_case_text(kMinimalCase, "m.toml").tier, cases::Tier::fast);
+  const auto with_tier = [](std::string_view tier) {
+    std::string text(kMinimalCase);
+    text.insert(text.find("name = \"minimal\"") + std::string_view("name = \"minimal\"\n").size(),
+                "tier = " + std::string(tier) + "\n");
+    return text;
+  };
+  EXPECT_EQ(load_case_text(with_tier("\"full\""), "m.toml").tier, cases::Tier::full);
+  EXPECT_EQ(load_case_text(with_tier("\"fast\""), "m.toml").tier, cases::Tier::fast);
+  const CaseError slow = error_of(with_tier("\"slow\""));
+  EXPECT_EQ(slow.key(), "case.tier");
+  EXPECT_NE(std::string(slow.what()).find("unknown tier 'slow'"), std::string::npos) << slow.what();
+  EXPECT_NE(std::string(slow.what()).find("fast, full"), std::string::npos) << slow.what();
+  EXPECT_EQ(error_of(with_tier("1")).key(), "case.tier");
 }
 
 TEST(CaseLoader, KeepsMaterialsInFileOrderWithTheirProperties) {

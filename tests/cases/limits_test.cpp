@@ -22,7 +22,7 @@
 #include "cases/suggestion.hpp"
 #include "case_texts.hpp"
 
-namespace {
+namespace limits_test {
 
 namespace fs = std::filesystem;
 using cases::CaseError;

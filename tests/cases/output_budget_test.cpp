@@ -19,7 +19,7 @@
 #include "dem/timestep/timestep_control.hpp"
 #include "case_texts.hpp"
 
-namespace {
+namespace output_budget_test {
 
 using cases::CaseError;
 

@@ -5,7 +5,7 @@
 #include "cases/case_loader.hpp"
 #include "cases/trace.hpp"
 
-namespace {
+namespace output_options_test {
 
 /// A case of `count` lattice spheres with the given [output] lines.
 std::string population_case(int count, const std::string& output) {

@@ -11,7 +11,7 @@
 #include "cases/generators/population.hpp"
 #include "cases/generators/random_stream.hpp"
 
-namespace {
+namespace population_test {
 
 using cases::Arrangement;
 using cases::PopulationSpec;

@@ -10,7 +10,7 @@
 #include "dem/contact/registry.hpp"
 #include "dem/materials/material_properties.hpp"
 
-namespace {
+namespace registry_keywords_test {
 
 /// A value inside `range` (for filling in every property a sub-model might need).
 double value_inside(const dem::ValueRange& range) {

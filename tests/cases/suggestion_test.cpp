@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-namespace {
+namespace suggestion_test {
 
 constexpr std::array<std::string_view, 3> kWords{"radius", "restitution", "density"};
 

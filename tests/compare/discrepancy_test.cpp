@@ -7,7 +7,7 @@
 #include "compare/discrepancy.hpp"
 #include "scene_fixtures.hpp"
 
-namespace {
+namespace discrepancy_test {
 
 using comparison::Status;
 using test_support::collision_scene;
@@ -108,7 +108,7 @@ TEST(CompareRuns, CaseTolerancesOverrideTheDefaults) {
 
 }  // namespace
 
-namespace {
+namespace discrepancy_test {
 
 TEST(CompareRuns, AMetricTheEngineCannotExpressIsNotApplicableWithItsReason) {
   const auto scene = test_support::collision_scene({"max_overlap", "restitution"});
@@ -123,7 +123,7 @@ TEST(CompareRuns, AMetricTheEngineCannotExpressIsNotApplicableWithItsReason) {
 
 }  // namespace
 
-namespace {
+namespace discrepancy_test {
 
 TEST(DefaultTolerances, EveryCataloguedMetricHasOneOfItsKindAndMatchedRowsUseOneE8) {
   for (const auto& m : cases::metric_catalogue()) {
@@ -143,7 +143,7 @@ TEST(DefaultTolerances, EveryCataloguedMetricHasOneOfItsKindAndMatchedRowsUseOne
 
 }  // namespace
 
-namespace {
+namespace discrepancy_test {
 
 /// Rows of `o` for `engine` against `reference`.
 std::vector<comparison::Comparison> rows_of(const comparison::CaseOutcome& o, const std::string& engine,
@@ -249,7 +249,7 @@ TEST(MatchedRows, AMatchedCodeThatFailedMakesEveryMatchedRowAnError) {
 
 }  // namespace
 
-namespace {
+namespace discrepancy_test {
 
 /// An outcome whose rows have the given statuses.
 comparison::CaseOutcome with_statuses(std::initializer_list<comparison::Status> statuses) {

@@ -10,7 +10,7 @@
 
 #include "compare/metrics_breakup.hpp"
 
-namespace {
+namespace metrics_breakup_test {
 
 using comparison::breakup::BondRule;
 using comparison::breakup::SnapshotSphere;

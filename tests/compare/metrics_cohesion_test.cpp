@@ -10,7 +10,7 @@
 #include "compare/metrics_cohesion.hpp"
 #include "dem/contact/laws/jkr.hpp"
 
-namespace {
+namespace metrics_cohesion_test {
 
 /// The agglomerate-benchmark JKR pair (E* = 4.6154e7 Pa, R* = 2.5 mm, γ = 121.5 J/m²).
 const dem::laws::JkrParameters kJkr{8.4e7 / 1.82, 2.5e-3, 121.5};

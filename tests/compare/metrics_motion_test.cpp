@@ -9,7 +9,7 @@
 #include "compare/metrics.hpp"
 #include "compare/metrics_motion.hpp"
 
-namespace {
+namespace metrics_motion_test {
 
 constexpr double kRadius = 0.01;
 

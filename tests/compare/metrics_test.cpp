@@ -8,7 +8,7 @@
 #include "compare/metrics.hpp"
 #include "scene_fixtures.hpp"
 
-namespace {
+namespace metrics_test {
 
 using test_support::collision_scene;
 using test_support::collision_trace;
@@ -106,7 +106,7 @@ TEST(Metrics, NonFiniteValuesBecomeProblems) {
 
 }  // namespace
 
-namespace {
+namespace metrics_test {
 
 TEST(Metrics, WallContactRestitutionUsesTheWallNormalAndVelocity) {
   // A sphere falling onto a floor (normal +z) at 2 m/s, rebounding at 1.5 m/s.

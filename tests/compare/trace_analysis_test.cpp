@@ -7,7 +7,7 @@
 
 #include "compare/trace_analysis.hpp"
 
-namespace {
+namespace trace_analysis_test {
 
 using comparison::first_contact;
 using comparison::IntervalProblem;

@@ -17,7 +17,7 @@
 #include "dem/contact/laws/nonlinear_dashpots.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace cohesion_jkr_test {
 
 using namespace dem::laws;
 constexpr double kPi = std::numbers::pi;

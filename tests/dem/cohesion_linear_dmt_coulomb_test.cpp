@@ -15,7 +15,7 @@
 #include "dem/contact/registry.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace cohesion_linear_dmt_coulomb_test {
 
 constexpr double kPi = std::numbers::pi;
 

@@ -4,7 +4,7 @@
 
 #include "dem/contact/contact_geometry.hpp"
 
-namespace {
+namespace contact_geometry_test {
 
 TEST(PairGeometry, NormalPointsFromQToPAndOverlapIsPositiveInContact) {
   const dem::Vec3 xp(0, 0, 0), xq(0.015, 0, 0), zero = dem::Vec3::Zero();

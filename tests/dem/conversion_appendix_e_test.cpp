@@ -12,7 +12,7 @@
 #include "dem/contact/laws/jkr.hpp"
 #include "dem/conversion/appendix_e.hpp"
 
-namespace {
+namespace conversion_appendix_e_test {
 
 using namespace dem::conversion;
 

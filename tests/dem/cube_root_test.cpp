@@ -10,7 +10,7 @@
 
 #include "dem/core/cube_root.hpp"
 
-namespace {
+namespace cube_root_test {
 
 /// Distance of `value` from the exact cube root of x, in units of the last place of `value`.
 double ulps_from_exact(double value, double x) {

@@ -10,7 +10,7 @@
 #include "dem/contact/pair_table.hpp"
 #include "normal_hertz_fixture.hpp"
 
-namespace {
+namespace damping_energy_test {
 
 /// Gives every damping model of this test what it reads, sized for a clearly dissipative impact.
 void dissipative_properties(dem::SimulationSetup& s) {

@@ -10,7 +10,7 @@
 #include "dem/contact/laws/hertz.hpp"
 #include "normal_hertz_fixture.hpp"
 
-namespace {
+namespace damping_kuwabara_kono_test {
 
 TEST(KuwabaraKonoDamping, CoefficientIsTwoEPrimeSqrtRStarDelta) {
   dem::PairProperties p;

@@ -13,7 +13,7 @@
 #include "dem/contact/laws/nonlinear_dashpots.hpp"
 #include "normal_hertz_fixture.hpp"
 
-namespace {
+namespace damping_lammps_test {
 
 TEST(LammpsTsujiFactor, IsTheTsujiPolynomial) {
   EXPECT_NEAR(dem::laws::lammps_tsuji_factor(0.5), 0.34074, 1e-5);   // LAMMPS' Tsuji α

@@ -16,7 +16,7 @@
 #include "dem/contact/registry.hpp"
 #include "normal_hertz_fixture.hpp"
 
-namespace {
+namespace damping_tsuji_test {
 
 using dem::laws::hertz_tsuji_restitution;
 using dem::laws::tsuji_factor;

@@ -9,7 +9,7 @@
 #include "dem/contact/contact_model.hpp"
 #include "dem/contact/laws/linear_dashpot.hpp"
 
-namespace {
+namespace damping_yade_frictvisco_test {
 
 dem::SphereState sphere(double x, double vx, double r, double inverse_mass) {
   return {dem::Vec3(x, 0, 0), dem::Vec3(vx, 0, 0), dem::Vec3::Zero(), r, r, inverse_mass};

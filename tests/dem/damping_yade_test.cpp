@@ -14,7 +14,7 @@
 #include "dem/contact/laws/nonlinear_dashpots.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace damping_yade_test {
 
 TEST(ThorntonDampingRatio, MatchesYadesMindlinPhysBetan) {
   // betan read back from YADE 2023.02a's MindlinPhys for en = 0.9 / 0.5 / 0.1.

@@ -10,7 +10,7 @@
 #include "dem/fields/external_fields.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace fields_test {
 
 using dem::Vec3;
 

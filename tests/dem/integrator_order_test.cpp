@@ -8,7 +8,7 @@
 
 #include "dem/integrators/scheme.hpp"
 
-namespace {
+namespace integrator_order_test {
 
 constexpr double kOmega = 3.0;     // rad/s
 constexpr double kAmplitude = 0.5; // m

@@ -8,7 +8,7 @@
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "dem/contact/laws/linear_spring.hpp"
 
-namespace {
+namespace linear_law_test {
 
 using namespace dem::laws;
 

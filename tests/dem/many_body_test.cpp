@@ -10,7 +10,7 @@
 #include "dem/core/model_error.hpp"
 #include "many_body_fixture.hpp"
 
-namespace {
+namespace many_body_test {
 
 using dem::Vec3;
 

@@ -6,7 +6,7 @@
 #include "dem/core/model_error.hpp"
 #include "dem/materials/mixing.hpp"
 
-namespace {
+namespace mixing_test {
 
 dem::MaterialProperties material(const char* name, double k, double e) {
   dem::MaterialProperties m;

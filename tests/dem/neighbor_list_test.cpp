@@ -17,7 +17,7 @@
 #include "dem/particles/spatial_order.hpp"
 #include "many_body_fixture.hpp"
 
-namespace {
+namespace neighbor_list_test {
 
 using dem::Vec3;
 using dem::Vec3Array;

@@ -13,7 +13,7 @@
 #include "dem/timestep/timestep_control.hpp"
 #include "normal_hertz_fixture.hpp"
 
-namespace {
+namespace normal_hertz_test {
 
 using namespace dem::laws;
 using hertz_test::effective_modulus;

@@ -12,7 +12,7 @@
 #include "dem/contact/pair_table.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace normal_hysteretic_test {
 
 using dem::laws::walton_braun;
 

@@ -11,7 +11,7 @@
 #include "dem/contact/pair_table.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace normal_potential_test {
 
 using dem::laws::langston_energy_scale;
 using dem::laws::langston_potential;

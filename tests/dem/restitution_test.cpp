@@ -8,7 +8,7 @@
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "two_body_fixture.hpp"
 
-namespace {
+namespace restitution_test {
 
 /// Rebound speed / impact speed after one collision at `steps` steps per contact duration.
 double obtained_restitution(dem::SchemeId scheme, double restitution, double steps) {

@@ -12,7 +12,7 @@
 #include "dem/contact/pair_table.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace rolling_resistance_test {
 
 using dem::Vec3;
 

@@ -14,7 +14,7 @@
 #include "dem/contact/pair_table.hpp"
 #include "dem/contact/registry.hpp"
 
-namespace {
+namespace tangential_laws_test {
 
 using dem::Vec3;
 

@@ -10,7 +10,7 @@
 
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace tangential_motion_test {
 
 using dem::Vec3;
 

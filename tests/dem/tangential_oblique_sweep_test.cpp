@@ -15,7 +15,7 @@
 
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace tangential_oblique_sweep_test {
 
 using dem::Vec3;
 

@@ -9,7 +9,7 @@
 #include "dem/timestep/timestep_control.hpp"
 #include "two_body_fixture.hpp"
 
-namespace {
+namespace timestep_test {
 
 dem::TimestepLimits limits_of(const dem::SimulationSetup& s, bool rotation) {
   dem::ParticleProperties props;
@@ -48,7 +48,7 @@ TEST(TimestepWarnings, NameTheViolatedCriterion) {
 
 }  // namespace
 
-namespace {
+namespace timestep_test {
 
 TEST(TimestepLimits, APlaneWallIsAFixedPartnerWithTheSphereRadius) {
   // The mover alone with a wall of its own material: the limits are those of m* = m against k.

@@ -9,7 +9,7 @@
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "dem/simulation/simulation.hpp"
 
-namespace {
+namespace walls_motion_energy_test {
 
 dem::SimulationSetup floor_drop(double restitution, dem::SchemeId scheme, double dt) {
   dem::SimulationSetup s;

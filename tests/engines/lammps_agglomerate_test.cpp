@@ -13,7 +13,7 @@
 #include "reference/inhouse/inhouse_engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 
-namespace {
+namespace lammps_agglomerate_test {
 
 cases::Scene cluster() {
   return cases::load_case(std::string(DEMWB_TEST_DATA_DIR) + "/many_body/jkr_cluster_wall.toml");

@@ -8,7 +8,7 @@
 #include "reference/inhouse/inhouse_engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 
-namespace {
+namespace lammps_canonical_test {
 
 using demwb_lammps_test::canonical;
 using demwb_lammps_test::scratch;

@@ -11,7 +11,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 
-namespace {
+namespace lammps_failure_test {
 
 using demwb_lammps_test::canonical;
 using demwb_lammps_test::scratch;

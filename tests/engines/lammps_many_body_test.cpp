@@ -12,7 +12,7 @@
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 
-namespace {
+namespace lammps_many_body_test {
 
 cases::Scene settling_bed() {
   return cases::load_case(std::string(DEMWB_TEST_DATA_DIR) + "/many_body/settling_bed.toml");

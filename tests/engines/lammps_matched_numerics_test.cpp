@@ -10,7 +10,7 @@
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/matching.hpp"
 
-namespace {
+namespace lammps_matched_numerics_test {
 
 using demwb_lammps_test::canonical;
 using demwb_lammps_test::scaled_differences;

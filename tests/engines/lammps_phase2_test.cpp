@@ -18,7 +18,7 @@
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/matching.hpp"
 
-namespace {
+namespace lammps_phase2_test {
 
 using demwb_lammps_test::canonical;
 using demwb_lammps_test::scratch;

@@ -16,7 +16,7 @@
 #include "reference/matching.hpp"
 #include "yade_test_support.hpp"
 
-namespace {
+namespace yade_canonical_test {
 
 using namespace demwb_yade_test;
 
@@ -153,7 +153,7 @@ TEST(YadeJkr, PullOffIsNotApplicableWithTheReason) {
 
 }  // namespace
 
-namespace {
+namespace yade_canonical_test {
 
 TEST(YadeLinearCohesion, ManyParticlesUseTheCollidersCandidatesAndStillMatch) {
   // 125 spheres of the cohesion benchmark's material, 0.3 r apart on a lattice: every neighbour

@@ -12,7 +12,7 @@
 #include "reference/matching.hpp"
 #include "yade_test_support.hpp"
 
-namespace {
+namespace yade_damping_test {
 
 using namespace demwb_yade_test;
 

@@ -9,7 +9,7 @@
 #include "reference/matching.hpp"
 #include "yade_test_support.hpp"
 
-namespace {
+namespace yade_matched_test {
 
 using namespace demwb_yade_test;
 

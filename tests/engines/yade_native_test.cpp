@@ -10,7 +10,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "yade_test_support.hpp"
 
-namespace {
+namespace yade_native_test {
 
 using namespace demwb_yade_test;
 

@@ -18,7 +18,7 @@
 #include "support/text_file.hpp"
 #include "yade_test_support.hpp"
 
-namespace {
+namespace yade_process_test {
 
 using namespace demwb_yade_test;
 

@@ -47,7 +47,7 @@
 #include "scene_sanity.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace case_fuzz_test {
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include "support/process.hpp"
 #include "tests/app/demwb_process.hpp"
 
-namespace {
+namespace cache_and_refresh_test {
 
 using demwb_e2e::canonical;
 using demwb_e2e::demwb;

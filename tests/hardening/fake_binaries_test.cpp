@@ -15,7 +15,7 @@
 #include "fake_engines.hpp"
 #include "tests/app/demwb_process.hpp"
 
-namespace {
+namespace fake_binaries_test {
 
 using namespace demwb_hardening;
 using demwb_e2e::canonical;

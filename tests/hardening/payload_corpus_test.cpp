@@ -14,7 +14,7 @@
 #include "support/process.hpp"
 #include "tests/app/demwb_process.hpp"
 
-namespace {
+namespace payload_corpus_test {
 
 using demwb_e2e::canonical;
 using demwb_e2e::demwb;

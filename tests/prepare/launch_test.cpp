@@ -7,7 +7,7 @@
 
 #include "prepare/launch.hpp"
 
-namespace {
+namespace launch_test {
 
 cases::ParticleSpec sphere(double r, cases::Vector3 x, bool fixed = false) {
   cases::ParticleSpec p;

@@ -13,7 +13,7 @@
 #include "prepare/prepare_scene.hpp"
 #include "../small_agglomerate.hpp"
 
-namespace {
+namespace prepare_scene_test {
 
 cases::Scene load(int count = 8, int seed = 1) {
   return cases::load_case_text(test_support::small_agglomerate(count, seed), "small.toml");

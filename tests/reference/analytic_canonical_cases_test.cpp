@@ -10,7 +10,7 @@
 #include "dem/particles/particles.hpp"
 #include "reference/analytic/analytic_engine.hpp"
 
-namespace {
+namespace analytic_canonical_cases_test {
 
 const std::filesystem::path kCanonical = std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical";
 

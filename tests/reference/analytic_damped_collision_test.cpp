@@ -11,7 +11,7 @@
 #include "reference/analytic/collinear_scene.hpp"
 #include "reference/analytic/contact_episode.hpp"
 
-namespace {
+namespace analytic_damped_collision_test {
 
 using demwb_test::at;
 using demwb_test::CollisionParameters;

@@ -9,7 +9,7 @@
 #include "dem/particles/particles.hpp"
 #include "reference/analytic/analytic_engine.hpp"
 
-namespace {
+namespace analytic_head_on_test {
 
 using demwb_test::at;
 using demwb_test::head_on;

@@ -16,7 +16,7 @@
 #include "reference/analytic/hertz_elastic.hpp"
 #include "reference/analytic/two_body_ode.hpp"
 
-namespace {
+namespace analytic_hertz_ode_test {
 
 using reference::analytic::HertzElasticContact;
 using reference::analytic::NormalContactProblem;

@@ -17,7 +17,7 @@
 #include "reference/analytic/hertz_solver.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 
-namespace {
+namespace analytic_hertz_solver_test {
 
 using demwb_test::at;
 using demwb_test::sphere;

@@ -8,7 +8,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 
-namespace {
+namespace analytic_inhouse_agreement_test {
 
 using demwb_test::CollisionParameters;
 using demwb_test::mobile_mass;

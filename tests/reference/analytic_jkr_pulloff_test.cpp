@@ -13,7 +13,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 
-namespace {
+namespace analytic_jkr_pulloff_test {
 
 const std::filesystem::path kCase =
     std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical/jkr_pulloff.toml";

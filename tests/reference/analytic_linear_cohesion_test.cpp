@@ -12,7 +12,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 
-namespace {
+namespace analytic_linear_cohesion_test {
 
 const std::filesystem::path kCase =
     std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical/linear_cohesion_pair.toml";

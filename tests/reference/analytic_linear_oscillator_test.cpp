@@ -10,7 +10,7 @@
 
 #include "reference/analytic/linear_oscillator.hpp"
 
-namespace {
+namespace analytic_linear_oscillator_test {
 
 using reference::analytic::LinearOscillator;
 

@@ -15,7 +15,7 @@
 #include "reference/analytic/oblique_impact_solver.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 
-namespace {
+namespace analytic_oblique_impact_test {
 
 constexpr double kRadius = 0.01;
 constexpr double kDensity = 1000.0;

@@ -14,7 +14,7 @@
 #include "reference/analytic/collinear_motion.hpp"
 #include "reference/analytic/collinear_scene.hpp"
 
-namespace {
+namespace analytic_sandwich_test {
 
 using demwb_test::at;
 using demwb_test::CollisionParameters;

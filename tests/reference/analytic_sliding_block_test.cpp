@@ -13,7 +13,7 @@
 #include "reference/analytic/sliding_solver.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 
-namespace {
+namespace analytic_sliding_block_test {
 
 constexpr double kRadius = 0.01;
 constexpr double kGravity = 9.81;

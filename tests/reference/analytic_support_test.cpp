@@ -10,7 +10,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/analytic/collinear_solver.hpp"
 
-namespace {
+namespace analytic_support_test {
 
 using demwb_test::head_on;
 using demwb_test::sandwich;

@@ -15,7 +15,7 @@
 #include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/simulation_box.hpp"
 
-namespace {
+namespace lammps_deck_writer_test {
 
 using demwb_lammps_unit::line_index;
 using demwb_lammps_unit::lines_of;
@@ -244,7 +244,7 @@ TEST(LammpsDeck, IsAPureFunctionOfItsInputsAndPlainAscii) {
 
 }  // namespace
 
-namespace {
+namespace lammps_deck_writer_test {
 
 TEST(LammpsDeck, NamesInCommentsStayCommentsWhateverTheyHold) {
   // The loader refuses such names (cases/names.hpp); the deck writer keeps them inert anyway: a

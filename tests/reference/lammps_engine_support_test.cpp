@@ -8,7 +8,7 @@
 #include "reference/engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 
-namespace {
+namespace lammps_engine_support_test {
 
 using reference::LammpsEngine;
 

@@ -6,7 +6,7 @@
 #include "reference/lammps/log_scan.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace lammps_log_scan_test {
 
 using namespace reference::lammps;
 

@@ -8,7 +8,7 @@
 #include "reference/inhouse/scene_to_core.hpp"
 #include "reference/matching.hpp"
 
-namespace {
+namespace lammps_matching_test {
 
 TEST(MatchedScene, LammpsIsVelocityVerletWithTheSameTimestep) {
   cases::Scene scene = demwb_lammps_unit::mixed_scene();

@@ -9,7 +9,7 @@
 #include "dem/contact/registry.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
 
-namespace {
+namespace lammps_pair_coeff_test {
 
 using reference::lammps::map_pair_law;
 using reference::lammps::pair_coeff_arguments;

@@ -18,7 +18,7 @@
 #include "reference/lammps/tsuji_input.hpp"
 #include "reference/lammps/wall_mapping.hpp"
 
-namespace {
+namespace lammps_phase2_mapping_test {
 
 using reference::lammps::map_pair_law;
 using reference::lammps::pair_coeff_arguments;

@@ -10,7 +10,7 @@
 #include "reference/lammps/snapshots.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace lammps_snapshot_test {
 
 using reference::lammps::parse_dump;
 using reference::lammps::snapshot_steps;

@@ -11,7 +11,7 @@
 #include "reference/lammps/trace_columns.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace lammps_trace_parser_test {
 
 using demwb_lammps_unit::data_file;
 using demwb_lammps_unit::data_scene;

@@ -14,7 +14,7 @@
 #include "reference/yade/script_writer.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace yade_calibration_test {
 
 const std::filesystem::path kCanonical = std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical";
 const std::filesystem::path kData = std::filesystem::path(DEMWB_TEST_DATA_DIR) / "yade";

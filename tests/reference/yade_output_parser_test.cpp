@@ -10,7 +10,7 @@
 #include "reference/yade/run_plan.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace yade_output_parser_test {
 
 using reference::yade::parse_snapshot_csv;
 using reference::yade::parse_trace_csv;

@@ -15,7 +15,7 @@
 #include "reference/yade/runner_script.hpp"
 #include "reference/yade/script_writer.hpp"
 
-namespace {
+namespace yade_script_writer_test {
 
 using reference::yade::make_run_plan;
 using reference::yade::write_yade_script;

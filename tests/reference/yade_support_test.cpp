@@ -10,7 +10,7 @@
 #include "reference/yade/yade_engine.hpp"
 #include "reference/yade/yade_installation.hpp"
 
-namespace {
+namespace yade_support_test {
 
 const std::filesystem::path kCanonical = std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical";
 
@@ -154,7 +154,7 @@ TEST(YadeInstallation, MakeEngineKnowsYade) {
 
 }  // namespace
 
-namespace {
+namespace yade_support_test {
 
 const std::filesystem::path kEnsembles = std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/ensembles";
 

@@ -6,7 +6,7 @@
 
 #include "reports/markdown.hpp"
 
-namespace {
+namespace inert_text_test {
 
 TEST(InertText, HtmlLinksImagesCodeAndLineBreaksAreDisarmed) {
   const std::string payload =

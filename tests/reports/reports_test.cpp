@@ -16,7 +16,7 @@
 #include "reports/trace_csv.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace reports_test {
 
 TEST(MarkdownTable, RendersHeaderSeparatorAndEscapedCells) {
   reports::MarkdownTable t({"a", "b"});
@@ -123,7 +123,7 @@ TEST(Gnuplot, RendersAPngAndKeepsItsDataAndScript) {
 
 }  // namespace
 
-namespace {
+namespace reports_test {
 
 /// An outcome whose LAMMPS run was calibrated and cannot express one metric.
 comparison::CaseOutcome calibrated_outcome() {

@@ -16,7 +16,7 @@
 #include "store/scene_json.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace store_test {
 
 namespace fs = std::filesystem;
 

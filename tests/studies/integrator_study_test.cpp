@@ -9,7 +9,7 @@
 #include "studies/integrator_study.hpp"
 #include "support/text_file.hpp"
 
-namespace {
+namespace integrator_study_test {
 
 using dem::SchemeId;
 using studies::fitted_order;

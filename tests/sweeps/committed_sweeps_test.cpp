@@ -2,7 +2,7 @@
 // The sweeps run outside CI store their results under cases/baselines/sweeps/<name>/ with a
 // fingerprint (sweep.json). These checks fail when a sweep file or its case changed since its
 // results were stored, when the stored sweep.csv is not the one fingerprinted, or when a
-// committed sweep has no stored results: run scripts/refresh-sweeps.sh.
+// committed sweep has no stored results: run `demwb refresh --sweep FILE` (scripts/refresh-sweeps.sh runs them all).
 #include <filesystem>
 #include <set>
 
@@ -13,7 +13,7 @@
 #include "support/text_file.hpp"
 #include "sweeps/sweep_spec.hpp"
 
-namespace {
+namespace committed_sweeps_test {
 
 namespace fs = std::filesystem;
 
@@ -29,14 +29,14 @@ TEST(CommittedSweeps, EverySweepHasResultsFingerprintedByItsCurrentFiles) {
     SCOPED_TRACE(name);
     const fs::path sweep_file = kSource / "cases" / "sweeps" / (name + ".toml");
     const fs::path stored = kSource / "cases" / "baselines" / "sweeps" / name;
-    ASSERT_TRUE(fs::exists(stored / "sweep.json")) << "no stored results: run scripts/refresh-sweeps.sh " << sweep_file;
+    ASSERT_TRUE(fs::exists(stored / "sweep.json")) << "no stored results: run demwb refresh --sweep " << sweep_file;
     const auto j = nlohmann::json::parse(support::read_file(stored / "sweep.json"));
     const sweeps::SweepSpec spec = sweeps::load_sweep(sweep_file);
     EXPECT_EQ(j.at("sweep"), spec.name);
     EXPECT_EQ(j.at("sweep_sha256"), support::sha256_hex(support::read_file(sweep_file)))
-        << "the sweep file changed since its results were stored: scripts/refresh-sweeps.sh " << sweep_file;
+        << "the sweep file changed since its results were stored: demwb refresh --sweep " << sweep_file;
     EXPECT_EQ(j.at("case_sha256"), support::sha256_hex(support::read_file(spec.case_file)))
-        << spec.case_file << " changed since the sweep's results were stored: scripts/refresh-sweeps.sh " << sweep_file;
+        << spec.case_file << " changed since the sweep's results were stored: demwb refresh --sweep " << sweep_file;
     const std::string csv = support::read_file(stored / "sweep.csv");
     EXPECT_EQ(j.at("sweep_csv_sha256"), support::sha256_hex(csv)) << "sweep.csv is not the fingerprinted one";
     EXPECT_EQ(j.at("rows_not_ok"), 0) << "stored results with failed runs";

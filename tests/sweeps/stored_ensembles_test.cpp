@@ -12,7 +12,7 @@
 #include "support/text_file.hpp"
 #include "sweeps/stored_ensembles.hpp"
 
-namespace {
+namespace stored_ensembles_test {
 
 namespace fs = std::filesystem;
 
@@ -78,7 +78,7 @@ TEST(StoredEnsembles, AChangedCaseMakesTheStoreStaleWithTheCommandThatRenewsIt) 
   ASSERT_EQ(found.size(), 1u);
   EXPECT_FALSE(found[0].current);
   EXPECT_NE(found[0].problem.find("stale"), std::string::npos) << found[0].problem;
-  EXPECT_NE(found[0].problem.find("scripts/refresh-sweeps.sh"), std::string::npos);
+  EXPECT_NE(found[0].problem.find("demwb refresh --sweep"), std::string::npos);
   EXPECT_NE(sweeps::stored_ensembles_section(found, s.root).find("Store: **stale"), std::string::npos);
 }
 

@@ -13,7 +13,7 @@
 #include "sweeps/sweep_report.hpp"
 #include "sweeps/sweep_rows.hpp"
 
-namespace {
+namespace sweep_rows_test {
 
 namespace fs = std::filesystem;
 

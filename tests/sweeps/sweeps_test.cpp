@@ -11,7 +11,7 @@
 #include "sweeps/seed_statistics.hpp"
 #include "sweeps/sweep_spec.hpp"
 
-namespace {
+namespace sweeps_test {
 
 namespace fs = std::filesystem;
 
