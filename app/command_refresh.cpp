@@ -35,14 +35,7 @@ int refresh_sweep(const po::variables_map& vm, const Invocation& inv) {
   const fs::path root = vm.count("baselines") != 0 ? fs::path(vm["baselines"].as<std::string>())
                                                    : file.parent_path().parent_path() / "baselines";
   const fs::path dest = root / "sweeps" / spec.name;
-  std::vector<std::string> sweep_args{file.string(), "-o", out.string(), "-j",
-                                      std::to_string(std::max(1U, vm["jobs"].as<unsigned>())), "--timeout",
-                                      fmt::format("{}", vm["timeout"].as<double>()), "--threads",
-                                      std::to_string(vm["threads"].as<int>())};
-  if (vm.count("no-cache") != 0) sweep_args.emplace_back("--no-cache");
-  for (const char* option : {"cache", "lammps", "yade"}) {
-    if (vm.count(option) != 0) sweep_args.insert(sweep_args.end(), {std::string("--") + option, vm[option].as<std::string>()});
-  }
+  const auto sweep_args = sweep_arguments(file, out, vm["jobs"].as<unsigned>(), vm);
   fs::remove_all(out);
   const int status = command_sweep(sweep_args, inv);
   if (status != kExitOk) {

@@ -96,14 +96,7 @@ std::vector<sweeps::StoredEnsemble> run_ensembles(const std::filesystem::path& s
   std::map<std::string, std::string> failed;
   for (const auto& e : listed) {
     if (e.engines.empty()) continue;  // did not load: stored_ensembles says why
-    std::vector<std::string> args{e.sweep_file.string(), "-o", (root / e.name).string(), "-j",
-                                  std::to_string(std::max(1U, vm["jobs"].as<unsigned>())), "--timeout",
-                                  fmt::format("{}", vm["timeout"].as<double>()), "--threads",
-                                  std::to_string(vm["threads"].as<int>())};
-    if (vm.count("no-cache") != 0) args.emplace_back("--no-cache");
-    for (const char* option : {"cache", "lammps", "yade"}) {
-      if (vm.count(option) != 0) args.insert(args.end(), {std::string("--") + option, vm[option].as<std::string>()});
-    }
+    const auto args = sweep_arguments(e.sweep_file, root / e.name, vm["jobs"].as<unsigned>(), vm);
     std::fprintf(stderr, "full tier: running the sweep %s\n", e.sweep_file.c_str());
     try {
       if (command_sweep(args, inv) != kExitOk) failed[e.name] = "some of its runs failed (see its report)";

@@ -6,6 +6,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "app/cli.hpp"
 #include "app/driver_revisions.hpp"
 #include "cases/catalogue.hpp"
@@ -108,6 +110,18 @@ double timeout_option(const po::variables_map& vm) {
     throw std::invalid_argument("--timeout must be a number of seconds between 0 and 1e7");
   }
   return timeout;
+}
+
+std::vector<std::string> sweep_arguments(const std::filesystem::path& sweep_file, const std::filesystem::path& out,
+                                         unsigned jobs, const po::variables_map& vm) {
+  std::vector<std::string> args{sweep_file.string(), "-o", out.string(), "-j", std::to_string(std::max(1U, jobs)),
+                                "--timeout", fmt::format("{}", vm["timeout"].as<double>()), "--threads",
+                                std::to_string(vm["threads"].as<int>())};
+  if (vm.count("no-cache") != 0) args.emplace_back("--no-cache");
+  for (const char* option : {"cache", "lammps", "yade"}) {
+    if (vm.count(option) != 0) args.insert(args.end(), {std::string("--") + option, vm[option].as<std::string>()});
+  }
+  return args;
 }
 
 void add_tier_option(po::options_description& opts) {

@@ -23,6 +23,12 @@ cases::LoadOptions load_options(const boost::program_options::variables_map& vm)
 /// The value of --timeout, checked: seconds in (0, 1e7].
 double timeout_option(const boost::program_options::variables_map& vm);
 
+/// Arguments of `demwb sweep` for running `sweep_file` into `out` with `jobs` runs at once and
+/// the run options of `vm` that a sweep shares (--timeout, --threads, --cache, --no-cache,
+/// --lammps, --yade): how suite (full tier) and refresh --sweep start a sweep.
+std::vector<std::string> sweep_arguments(const std::filesystem::path& sweep_file, const std::filesystem::path& out,
+                                         unsigned jobs, const boost::program_options::variables_map& vm);
+
 /// Adds --tier fast|full (suite and gate; docs/user-guide.md, "Tiers").
 void add_tier_option(boost::program_options::options_description& opts);
 /// The value of --tier, checked: `fast` (the default) or `full`.

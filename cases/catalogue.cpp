@@ -29,6 +29,12 @@ constexpr std::array kMetrics{
     MetricInfo{"spin_after", "rad/s",
                "subject's angular velocity after the first contact about t̂ × n_in (t̂: slip direction "
                "before, n_in: into the partner)", true, true},
+    MetricInfo{"velocity_after_x", "m/s", "subject's velocity, x component, at the first sample after its first contact with the compared partner ends", true, true},
+    MetricInfo{"velocity_after_y", "m/s", "subject's velocity, y component, after the first contact (as velocity_after_x)", true, true},
+    MetricInfo{"velocity_after_z", "m/s", "subject's velocity, z component, after the first contact (as velocity_after_x)", true, true},
+    MetricInfo{"angular_velocity_after_x", "rad/s", "subject's angular velocity, x component, at the first sample after its first contact with the compared partner ends", true, true},
+    MetricInfo{"angular_velocity_after_y", "rad/s", "subject's angular velocity, y component, after the first contact (as angular_velocity_after_x)", true, true},
+    MetricInfo{"angular_velocity_after_z", "rad/s", "subject's angular velocity, z component, after the first contact (as angular_velocity_after_x)", true, true},
     MetricInfo{"deceleration", "m/s²",
                "minus the least-squares slope of the subject's tangential speed while the compared "
                "contact slides (slip > 1 % of its initial value)", true, true},

@@ -92,4 +92,21 @@ std::uint64_t step_count(double duration, double dt) noexcept {
   return std::max<std::uint64_t>(1, n > 0.0 ? static_cast<std::uint64_t>(n) : 0);
 }
 
+std::vector<std::uint64_t> snapshot_steps(std::vector<double> times, double dt, std::uint64_t steps) {
+  std::sort(times.begin(), times.end());
+  std::vector<std::uint64_t> out;
+  const double last = static_cast<double>(steps) * dt;
+  for (const double t : times) {
+    const double threshold = t - 0.5 * dt;
+    if (!(threshold <= last)) continue;  // past the end, or NaN
+    // First guess from the division, then the exact predicate n·Δt ≥ t − Δt/2.
+    const double guess = std::ceil(threshold / dt);
+    std::uint64_t n = guess > 0.0 ? std::min(steps, static_cast<std::uint64_t>(guess)) : 0;
+    while (n > 0 && static_cast<double>(n - 1) * dt >= threshold) --n;
+    while (static_cast<double>(n) * dt < threshold) ++n;
+    out.push_back(n);
+  }
+  return out;
+}
+
 }  // namespace cases

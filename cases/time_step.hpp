@@ -55,4 +55,10 @@ struct SphereCensus {
 /// round-off, at least one; a ratio that is not a finite count saturates (NaN: one step).
 [[nodiscard]] std::uint64_t step_count(double duration, double dt) noexcept;
 
+/// The step at which each requested snapshot time is taken, the one rule every engine follows
+/// (docs/case-format.md, [output]): the first step n in [0, steps] with n·Δt ≥ t − Δt/2, for the
+/// times in ascending order (repeats kept). A time whose step would lie past the last one, or
+/// that is not a number, gets none.
+[[nodiscard]] std::vector<std::uint64_t> snapshot_steps(std::vector<double> times, double dt, std::uint64_t steps);
+
 }  // namespace cases

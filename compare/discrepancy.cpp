@@ -14,8 +14,9 @@ namespace {
 
 /// Default tolerances per metric kind (docs/metrics.md): relative for durations, lengths, forces,
 /// decelerations, spins and works; absolute for the dimensionless restitutions and amplitude
-/// error, and for the rebound angle (degrees, whose zero is not special).
-constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 15> kDefaults{{
+/// error, and for the rebound angle (degrees, whose zero is not special); both for end-state
+/// velocity components.
+constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 21> kDefaults{{
     {"contact_duration", {1e-3, 0.0}},
     {"restitution", {0.0, 1e-3}},
     {"max_overlap", {1e-3, 0.0}},
@@ -26,6 +27,14 @@ constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 15> kDefault
     {"rebound_angle", {0.0, 0.05}},
     {"spin_after", {1e-3, 0.0}},
     {"deceleration", {1e-3, 0.0}},
+    // End-state components: relative, with a floor for a component whose reference is zero
+    // (motion in a plane), 1 µm/s and 1e-4 rad/s, far below what the canonical impacts resolve.
+    {"velocity_after_x", {1e-3, 1e-6}},
+    {"velocity_after_y", {1e-3, 1e-6}},
+    {"velocity_after_z", {1e-3, 1e-6}},
+    {"angular_velocity_after_x", {1e-3, 1e-4}},
+    {"angular_velocity_after_y", {1e-3, 1e-4}},
+    {"angular_velocity_after_z", {1e-3, 1e-4}},
     {"pulloff_force", {1e-3, 0.0}},
     {"rupture_separation", {5e-3, 0.0}},
     {"force_at_rupture", {1e-3, 0.0}},

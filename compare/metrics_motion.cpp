@@ -227,6 +227,27 @@ MotionMetric spin_after(const cases::Scene& scene, const cases::Trace& trace) {
   });
 }
 
+MotionMetric state_after(const cases::Scene& scene, const cases::Trace& trace, bool angular, int axis) {
+  return guarded([&] {
+    if (axis < 0 || axis > 2) throw Problem(fmt::format("no axis {}", axis));
+    const ContactKinematics k(scene, trace);
+    const BodyState after = k.subject(k.first_contact_interval().first_after);
+    return (angular ? after.w : after.v)[static_cast<std::size_t>(axis)];
+  });
+}
+
+std::optional<MotionMetric> end_state_metric(const std::string& name, const cases::Scene& scene,
+                                             const cases::Trace& trace) {
+  for (const bool angular : {false, true}) {
+    const std::string prefix = angular ? "angular_velocity_after_" : "velocity_after_";
+    if (name.size() != prefix.size() + 1 || !name.starts_with(prefix)) continue;
+    const int axis = name.back() - 'x';
+    if (axis < 0 || axis > 2) return std::nullopt;
+    return state_after(scene, trace, angular, axis);
+  }
+  return std::nullopt;
+}
+
 MotionMetric deceleration(const cases::Scene& scene, const cases::Trace& trace) {
   return guarded([&] {
     const ContactKinematics k(scene, trace);

@@ -40,6 +40,16 @@ MotionMetric rebound_angle(const cases::Scene& scene, const cases::Trace& trace)
 /// for the spin sliding friction imparts (the sense of rolling along t̂).
 MotionMetric spin_after(const cases::Scene& scene, const cases::Trace& trace);
 
+/// Component `axis` (0 x, 1 y, 2 z) of the subject's own velocity [m/s] (`angular` false) or
+/// angular velocity [rad/s] (`angular` true) at the first sample after its first contact with
+/// the compared partner ends: the end state of an impact, in the case's frame.
+MotionMetric state_after(const cases::Scene& scene, const cases::Trace& trace, bool angular, int axis);
+
+/// The end-state metric called `name` (velocity_after_x … angular_velocity_after_z), or empty
+/// when `name` is not one of them.
+std::optional<MotionMetric> end_state_metric(const std::string& name, const cases::Scene& scene,
+                                             const cases::Trace& trace);
+
 /// Relative slip speed below which a contact counts as no longer sliding, as a fraction of
 /// the slip speed at the first row of the contact.
 inline constexpr double kSlidingThreshold = 1e-2;

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "reference/analytic/collinear_motion.hpp"
 #include "reference/analytic/collinear_scene.hpp"
 #include "reference/analytic/contact_episode.hpp"
@@ -52,22 +53,6 @@ void record(const cases::Scene& scene, const CollinearScene& reduced, const Axis
 }
 
 }  // namespace
-
-std::vector<std::uint64_t> snapshot_steps(std::vector<double> times, double dt,
-                                          std::uint64_t steps) {
-  std::sort(times.begin(), times.end());
-  std::vector<std::uint64_t> out;
-  for (const double t : times) {
-    const double threshold = t - 0.5 * dt;
-    if (!(threshold <= static_cast<double>(steps) * dt)) break;
-    double guess = std::max(0.0, std::ceil(threshold / dt));
-    auto n = static_cast<std::uint64_t>(guess);
-    while (n > 0 && static_cast<double>(n - 1) * dt >= threshold) --n;
-    while (static_cast<double>(n) * dt < threshold) ++n;
-    out.push_back(n);
-  }
-  return out;
-}
 
 namespace {
 
@@ -158,7 +143,7 @@ cases::RunResult CollinearSolver::run(const cases::Scene& scene) const {
     const double t = static_cast<double>(n) * dt;
     record(scene, reduced, solution.at(t), t, result.trace);
   }
-  for (const std::uint64_t n : snapshot_steps(scene.output.snapshot_times, dt, steps)) {
+  for (const std::uint64_t n : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     const double t = static_cast<double>(n) * dt;
     result.snapshots.push_back(analytic::snapshot_at(scene, reduced, solution.at(t), t));
   }

@@ -22,8 +22,4 @@ class CollinearSolver final : public Solver {
 std::vector<cases::Snapshot> collinear_exact_states(const cases::Scene& scene,
                                                     const std::vector<double>& times);
 
-/// Step numbers at which the in-house engine takes the requested snapshots: the first step n
-/// in [0, steps] with n Δt ≥ t − Δt/2, in time order.
-std::vector<std::uint64_t> snapshot_steps(std::vector<double> times, double dt, std::uint64_t steps);
-
 }  // namespace reference::analytic

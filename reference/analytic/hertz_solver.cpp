@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "dem/contact/contact_model.hpp"
 #include "dem/contact/laws/hertz.hpp"
 #include "dem/contact/pair_table.hpp"
@@ -481,7 +482,7 @@ cases::RunResult HertzSolver::run(const cases::Scene& scene) const {
   for (std::size_t k = 0; k < times.size(); ++k) record(scene, h, times[k], states[k], result.trace);
 
   std::vector<double> snapshot_times;
-  for (const std::uint64_t n : snapshot_steps(scene.output.snapshot_times, dt, steps)) {
+  for (const std::uint64_t n : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     snapshot_times.push_back(static_cast<double>(n) * dt);
   }
   ContactSummary ignored;

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "dem/contact/laws/jkr.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "reference/analytic/collinear_solver.hpp"
@@ -343,7 +344,7 @@ cases::RunResult JkrPulloffSolver::run(const cases::Scene& scene) const {
   for (std::uint64_t n = 0; n <= steps; n += every) {
     record(rig, history, static_cast<double>(n) * dt, result.trace);
   }
-  for (const std::uint64_t n : snapshot_steps(scene.output.snapshot_times, dt, steps)) {
+  for (const std::uint64_t n : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     const double t = static_cast<double>(n) * dt;
     cases::Snapshot snap;
     snap.time = t;

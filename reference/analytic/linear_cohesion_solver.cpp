@@ -13,6 +13,7 @@
 #include <boost/math/tools/toms748_solve.hpp>
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "dem/contact/contact_model.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "dem/particles/particles.hpp"
@@ -438,7 +439,7 @@ cases::RunResult LinearCohesionSolver::run(const cases::Scene& scene) const {
   for (std::uint64_t n = 0; n <= steps; n += every) {
     record(scene, p, motion, static_cast<double>(n) * dt, result.trace);
   }
-  for (const std::uint64_t n : snapshot_steps(scene.output.snapshot_times, dt, steps)) {
+  for (const std::uint64_t n : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     const double t = static_cast<double>(n) * dt;
     const auto [delta, rate] = motion.at(t);
     cases::Snapshot snap;

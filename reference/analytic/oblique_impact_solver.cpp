@@ -9,6 +9,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "dem/core/vector.hpp"
@@ -271,6 +272,11 @@ void add_exact_metrics(const GrossSlidingImpact& impact, const SphereWallScene& 
   result.exact_metrics["restitution"] = end.velocity.dot(n) / impact.approach_speed();
   result.exact_metrics["max_overlap"] =
       impact.overlap(std::atan2(frequency, decay) / frequency).position;
+  for (int k = 0; k < 3; ++k) {
+    const std::string axis(1, static_cast<char>('x' + k));
+    result.exact_metrics["velocity_after_" + axis] = end.velocity[k];
+    result.exact_metrics["angular_velocity_after_" + axis] = end.spin[k];
+  }
   const Vec3 v_t = end.velocity - end.velocity.dot(n) * n;
   result.exact_metrics["rebound_angle"] =
       std::atan2(v_t.norm(), end.velocity.dot(n)) * 180.0 / std::numbers::pi;
@@ -407,7 +413,7 @@ cases::RunResult ObliqueImpactSolver::run(const cases::Scene& scene) const {
     const double t = static_cast<double>(k) * dt;
     record(scene, s, impact.at(t, running), t, result.trace);
   }
-  for (const std::uint64_t k : snapshot_steps(scene.output.snapshot_times, dt, steps)) {
+  for (const std::uint64_t k : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     const double t = static_cast<double>(k) * dt;
     const SphereState st = impact.at(t);
     result.snapshots.push_back({t, {arr(st.position)}, {arr(st.velocity)}, {arr(st.spin)}});

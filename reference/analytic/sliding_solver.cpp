@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "dem/core/vector.hpp"
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/oblique_impact_solver.hpp"
@@ -122,7 +123,7 @@ cases::RunResult SlidingSolver::run(const cases::Scene& scene) const {
     }
     result.trace.append_row(row);
   }
-  for (const std::uint64_t k : snapshot_steps(scene.output.snapshot_times, dt, steps)) {
+  for (const std::uint64_t k : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     const double t = static_cast<double>(k) * dt;
     motion.at(t, x, v, w, f);
     result.snapshots.push_back({t, {arr(x)}, {arr(v)}, {arr(w)}});

@@ -149,19 +149,18 @@ cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&
   cases::RunResult result;
   result.status = cases::RunStatus::ok;
   result.trace = cases::trace_layout(scene);
-  std::vector<double> snapshot_times = scene.output.snapshot_times;
-  std::sort(snapshot_times.begin(), snapshot_times.end());
-  std::size_t next_snapshot = 0;
   const double dt = sim.timestep();
-  const auto take_snapshots = [&] {
-    while (next_snapshot < snapshot_times.size() &&
-           sim.time() >= snapshot_times[next_snapshot] - 0.5 * dt) {
+  const std::uint64_t steps = cases::step_count(scene.integration.duration, dt);
+  // The same steps every engine snapshots at (cases::snapshot_steps).
+  const std::vector<std::uint64_t> snapshot_at = cases::snapshot_steps(scene.output.snapshot_times, dt, steps);
+  std::size_t next_snapshot = 0;
+  const auto take_snapshots = [&](std::uint64_t n) {
+    while (next_snapshot < snapshot_at.size() && snapshot_at[next_snapshot] == n) {
       result.snapshots.push_back(snapshot(sim));
       ++next_snapshot;
     }
   };
 
-  const std::uint64_t steps = cases::step_count(scene.integration.duration, dt);
   const bool energy = scene.output.trace_energy;
   if (energy) result.energy = make_energy_trace();
   const auto record_all = [&] {
@@ -169,11 +168,11 @@ cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&
     if (energy) record_energy(sim, result.energy);
   };
   record_all();
-  take_snapshots();
+  take_snapshots(0);
   for (std::uint64_t n = 1; n <= steps; ++n) {
     sim.step();
     if (n % scene.output.trace_every == 0) record_all();
-    take_snapshots();
+    take_snapshots(n);
   }
 
   result.warnings = setup.warnings;

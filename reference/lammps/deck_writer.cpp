@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
@@ -249,7 +250,7 @@ void write_outputs(std::string& deck, const cases::Scene& scene, const AtomTypes
   command_line(deck, fix_print_command(plan, scene.output.trace_every, s.trace_file));
 
   std::vector<std::uint64_t> steps =
-      snapshot_steps(scene.output.snapshot_times, s.timestep, s.steps);
+      cases::snapshot_steps(scene.output.snapshot_times, s.timestep, s.steps);
   steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
   if (steps.empty()) return;
   const bool at_start = steps.front() == 0;

@@ -40,7 +40,7 @@ std::string wall_fix_id(std::size_t wall, std::size_t lammps_type);
 /// used); fixed spheres frozen with one `fix freeze`, mobile ones integrated by `fix nve/sphere`
 /// (`fix nve` when the scene does not integrate rotation); `fix gravity` when g ≠ 0; the trace
 /// by `fix print` (trace_print_plan); plane walls as `fix wall/gran granular` per mobile type;
-/// prescribed motion by `fix move variable`; snapshots by `dump custom` at snapshot_steps().
+/// prescribed motion by `fix move variable`; snapshots by `dump custom` at cases::snapshot_steps().
 /// Throws std::invalid_argument when the model has a sub-model LAMMPS cannot express.
 std::string write_deck(const cases::Scene& scene, const DeckSettings& settings);
 

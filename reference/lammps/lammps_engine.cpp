@@ -198,7 +198,7 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
     for (auto& w : assembled.warnings) result.warnings.push_back(std::move(w));
 
     const std::vector<std::uint64_t> snapshot_steps =
-        lammps::snapshot_steps(scene.output.snapshot_times, dt, steps);
+        cases::snapshot_steps(scene.output.snapshot_times, dt, steps);
     if (!snapshot_steps.empty()) {
       const std::filesystem::path dump_path = dir / settings.snapshot_file;
       if (!std::filesystem::exists(dump_path)) {

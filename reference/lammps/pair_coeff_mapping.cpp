@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "dem/contact/laws/linear_dashpot.hpp"
+#include "dem/contact/laws/nonlinear_dashpots.hpp"
 #include "dem/contact/registry.hpp"
 #include "reference/lammps/tsuji_input.hpp"
 
@@ -133,13 +134,20 @@ SlotProblem set_damping(GranularCoeff& out, std::string_view style, double value
 }
 
 /// `damping tsuji` with e_in such that α_L(e_in) = factor (the core's dashpot factor per
-/// √(m* F_el/δ)); a problem when no e_in in [0, 1] gives it.
+/// √(m* F_el/δ)). A factor of exactly 0 (ε = 1) is no dashpot at all: `damping velocity` with
+/// η_n0 = 0 gives exactly zero, where α_L would leave a round-off residue. A problem when no
+/// e_in gives the factor.
 SlotProblem tsuji_with_factor(GranularCoeff& out, double factor, std::string_view what) {
+  if (factor == 0.0) {
+    return set_damping(out, "velocity", 0.0,
+                       fmt::format("damping velocity with eta_n0 = 0: {} is 0 (no dashpot)", what));
+  }
   const std::optional<double> e_in = tsuji_input_for_factor(factor);
   if (!e_in) {
-    return fmt::format("LAMMPS driver: {} needs a Tsuji factor {} outside the range of LAMMPS' "
-                       "polynomial [0, 1.2728]",
-                       what, factor);
+    return fmt::format("LAMMPS driver: {} needs a Tsuji factor {} that no input of LAMMPS' Tsuji polynomial "
+                       "gives (it covers [0, {:.4g}] for e_in in [{}, {:.6g}])",
+                       what, factor, dem::laws::lammps_tsuji_factor(kTsujiInputLowest), kTsujiInputLowest,
+                       tsuji_input_zero());
   }
   return set_damping(
       out, "tsuji", *e_in,

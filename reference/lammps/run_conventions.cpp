@@ -146,7 +146,10 @@ std::map<std::string, std::string> inexpressible_metrics(const cases::Scene& sce
         "contact-point velocity with r); the case asks for r - delta/2 (wall_lever_arm = "
         "'contact_point'), which LAMMPS 2021 cannot express (run with wall_lever_arm = 'radius' "
         "to compare)";
-    for (const char* m : {"spin_after", "tangential_restitution"}) out[m] = why;
+    for (const char* m : {"spin_after", "tangential_restitution", "angular_velocity_after_x",
+                          "angular_velocity_after_y", "angular_velocity_after_z"}) {
+      out[m] = why;
+    }
   }
   if (!has_jkr(scene) || scene.model.jkr_rupture != dem::JkrRupture::displacement) return out;
   const std::string why =

@@ -58,22 +58,6 @@ cases::Snapshot to_snapshot(const DumpFrame& frame, double time, std::size_t par
 
 }  // namespace
 
-std::vector<std::uint64_t> snapshot_steps(std::vector<double> times, double dt,
-                                          std::uint64_t steps) {
-  std::sort(times.begin(), times.end());
-  std::vector<std::uint64_t> out;
-  for (const double t : times) {
-    const double threshold = t - 0.5 * dt;
-    // First guess from the division, then the exact predicate the in-house loop evaluates.
-    double guess = std::ceil(threshold / dt);
-    std::uint64_t n = guess > 0.0 ? static_cast<std::uint64_t>(guess) : 0;
-    while (n > 0 && static_cast<double>(n - 1) * dt >= threshold) --n;
-    while (static_cast<double>(n) * dt < threshold && n <= steps) ++n;
-    if (n <= steps) out.push_back(n);
-  }
-  return out;
-}
-
 std::vector<cases::Snapshot> snapshots_from_dump(const std::vector<DumpFrame>& frames,
                                                  const std::vector<std::uint64_t>& steps,
                                                  double dt, std::size_t particles) {

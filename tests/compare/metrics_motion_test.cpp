@@ -112,6 +112,43 @@ TEST(MotionMetrics, AreDispatchedByComputeMetrics) {
   EXPECT_NEAR(*m.at("spin_after").value, 50.0, 1e-12);
 }
 
+TEST(EndState, IsTheSubjectsVelocityAndSpinAtTheFirstSampleAfterTheContact) {
+  const char* names[] = {"velocity_after_x",         "velocity_after_y",         "velocity_after_z",
+                         "angular_velocity_after_x", "angular_velocity_after_y", "angular_velocity_after_z"};
+  const cases::Scene scene = floor_scene(std::vector<std::string>(std::begin(names), std::end(names)));
+  cases::RunResult run;
+  run.status = cases::RunStatus::ok;
+  run.trace = impact_trace({2, 0.5, -1}, {1, 2, 3}, {1.25, -0.5, 0.75}, {-7, 80, 0.25});
+  const comparison::MetricSet m = comparison::compute_metrics(scene, run, nullptr);
+  const double expected[] = {1.25, -0.5, 0.75, -7, 80, 0.25};
+  for (int k = 0; k < 6; ++k) {
+    ASSERT_TRUE(m.at(names[k]).value) << names[k] << ": " << m.at(names[k]).problem;
+    EXPECT_EQ(*m.at(names[k]).value, expected[k]) << names[k];
+  }
+  // In the case's frame: the wall's velocity is not subtracted (unlike rebound_angle).
+  cases::Scene moving = scene;
+  moving.walls[0].velocity = {0.5, 0.0, 0.0};
+  EXPECT_EQ(*comparison::motion::state_after(moving, run.trace, false, 0).value, 1.25);
+}
+
+TEST(EndState, ARunThatNeverTouchesOrNeverLeavesGivesAProblem) {
+  const cases::Scene scene = floor_scene({});
+  cases::Trace apart = floor_trace_layout();
+  for (int k = 0; k < 5; ++k) apart.append_row({1e-5 * k, 0, 0, 1.0, 0, 0, 0, 0, 0, 0, 0, 0, 0, -1.0, 0.0});
+  const auto none = comparison::motion::state_after(scene, apart, false, 2);
+  EXPECT_FALSE(none.value);
+  EXPECT_NE(none.problem.find("never becomes positive"), std::string::npos) << none.problem;
+  cases::Trace stuck = floor_trace_layout();
+  for (int k = 0; k < 5; ++k) {
+    stuck.append_row({1e-5 * k, 0, 0, 0.0, 0, 0, 0, 0, 0, 0, 0, 0, 0, k == 0 ? -1e-4 : 1e-5, k == 0 ? 0.0 : 1.0});
+  }
+  const auto held = comparison::motion::state_after(scene, stuck, true, 0);
+  EXPECT_FALSE(held.value);
+  EXPECT_NE(held.problem.find("does not end"), std::string::npos) << held.problem;
+  EXPECT_FALSE(comparison::motion::end_state_metric("velocity_after_w", scene, stuck).has_value());
+  EXPECT_FALSE(comparison::motion::end_state_metric("velocity_after", scene, stuck).has_value());
+}
+
 /// Sliding on the floor at its static overlap: v = v0 − a t until the slip stops, then rolling.
 cases::Trace sliding_trace(double v0, double a, double dt, int rows) {
   cases::Trace tr = floor_trace_layout();

@@ -118,6 +118,23 @@ TEST(LammpsPhase2, ObliqueWallImpactContactPointLeverIsNotApplicableForSpin) {
                        {"spin_after", "tangential_restitution"});
 }
 
+/// `scene` judged on the six end-state metrics instead of its own.
+cases::Scene with_end_state_metrics(cases::Scene scene) {
+  scene.compare.metrics = {"velocity_after_x",         "velocity_after_y",         "velocity_after_z",
+                           "angular_velocity_after_x", "angular_velocity_after_y", "angular_velocity_after_z"};
+  return scene;
+}
+
+TEST(LammpsPhase2, EndStateOfTheObliqueImpactMatchesTheClosedFormAndTheMatchedCore) {
+  if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "lmp not installed";
+  // With LAMMPS' wall lever arm every component is expressible; with the case's contact-point
+  // lever arm the spin components are n/a, as spin_after is.
+  expect_native_passes(with_end_state_metrics(oblique_with_radius_lever()), "p2_end_state_native");
+  expect_native_passes(with_end_state_metrics(canonical("oblique_wall_impact")), "p2_end_state_native_cp",
+                       {"angular_velocity_after_x", "angular_velocity_after_y", "angular_velocity_after_z"});
+  expect_matched(with_end_state_metrics(canonical("oblique_wall_impact")), "p2_end_state_matched");
+}
+
 TEST(LammpsPhase2, ObliqueWallImpactMatchedAgreesWithin1e8) {
   if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "lmp not installed";
   expect_matched(canonical("oblique_wall_impact"), "p2_oblique_matched");
@@ -151,6 +168,39 @@ TEST(LammpsPhase2, TsujiDampedHertzReboundsWithTheCaseRestitution) {
 TEST(LammpsPhase2, TsujiDampedHertzMatchedAgreesWithin1e8) {
   if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "lmp not installed";
   expect_matched(canonical("hertz_damped_collision"), "p2_tsuji_matched");
+}
+
+TEST(LammpsPhase2, TsujiMapsOverTheWholeRestitutionRangeUpToTheUndampedOne) {
+  if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "lmp not installed";
+  // e_in below 0 (ε = 0.1), inside (0, 1), above 1 (ε = 0.9999: α below α_L(1) = 3e-4) and no
+  // dashpot at all (ε = 1). The mapping is exact: the core with LAMMPS' numerics agrees with LAMMPS
+  // within 1e-8. Natively LAMMPS rebounds with ε up to its own time-stepping error (velocity
+  // Verlet evaluates the dashpot half a step late): within 1e-3 at the case's Δt (measured 2.2e-4
+  // for ε = 0.5, 1.6e-6 for ε = 1), and where the heavy damping of ε = 0.1 puts it above that, it
+  // shrinks with Δt (measured 2.04e-3 at Δt, 6.2e-4 at Δt/4) to below 1e-3.
+  const auto rebound = [](const cases::Scene& scene, const std::string& dir) {
+    const cases::RunResult lammps = reference::run_engine(reference::LammpsEngine{}, scene, scratch(dir));
+    EXPECT_EQ(lammps.status, cases::RunStatus::ok) << lammps.reason << "\n" << lammps.log_tail;
+    const auto metrics = comparison::compute_metrics(scene, lammps, nullptr);
+    return metrics.at("restitution").value.value_or(NAN);
+  };
+  for (const double e : {0.1, 0.5, 0.9, 0.999, 0.9999, 1.0}) {
+    SCOPED_TRACE(e);
+    cases::Scene scene = canonical("hertz_damped_collision");
+    scene.materials[0].restitution = e;
+    const double error = std::abs(rebound(scene, fmt::format("p2_tsuji_range_{}", e)) - e);
+    std::cout << fmt::format("  tsuji e = {}: LAMMPS misses by {:.3g} at dt = {:.3g} s\n", e, error,
+                             *scene.integration.timestep);
+    if (!(error <= 1e-3)) {
+      cases::Scene fine = scene;
+      *fine.integration.timestep /= 4.0;
+      const double fine_error = std::abs(rebound(fine, fmt::format("p2_tsuji_range_fine_{}", e)) - e);
+      std::cout << fmt::format("  tsuji e = {}: LAMMPS misses by {:.3g} at dt / 4\n", e, fine_error);
+      EXPECT_LT(fine_error, 1e-3);
+      EXPECT_LT(fine_error, error / 2.0);  // converging (3.3× for Δt/4 here)
+    }
+    expect_matched(scene, fmt::format("p2_tsuji_range_matched_{}", e));
+  }
 }
 
 }  // namespace

@@ -84,6 +84,13 @@ TEST(AnalyticObliqueImpact, ElasticGrossSlidingGivesTheRigidBodyClosedForm) {
   EXPECT_NEAR(r.exact_metrics.at("rebound_angle"),
               std::atan2(v_t - 2.0 * mu * v_n, v_n) * 180.0 / std::numbers::pi, 1e-11);
   EXPECT_NEAR(r.exact_metrics.at("restitution"), 1.0, 1e-13);
+  // The end state in closed form, component by component (the impact is in the x–z plane).
+  EXPECT_NEAR(r.exact_metrics.at("velocity_after_x"), v_t - 2.0 * mu * v_n, 1e-13);
+  EXPECT_EQ(r.exact_metrics.at("velocity_after_y"), 0.0);
+  EXPECT_NEAR(r.exact_metrics.at("velocity_after_z"), v_n, 1e-13);
+  EXPECT_EQ(r.exact_metrics.at("angular_velocity_after_x"), 0.0);
+  EXPECT_NEAR(r.exact_metrics.at("angular_velocity_after_y"), 5.0 * mu * v_n / kRadius, 1e-10);
+  EXPECT_EQ(r.exact_metrics.at("angular_velocity_after_z"), 0.0);
 }
 
 TEST(AnalyticObliqueImpact, DampedImpulseIsMuTimesIntegralOfAbsoluteNormalForceInClosedForm) {

@@ -5,12 +5,14 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cases/case_loader.hpp"
 #include "lammps_scenes.hpp"
 #include "reference/engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/yade/yade_engine.hpp"
+#include "support/text_file.hpp"
 
 namespace input_fingerprint_test {
 
@@ -69,6 +71,34 @@ TEST(InputFingerprint, DiffersBetweenTheCodes) {
   const cases::Scene scene = canonical("sandwich");
   EXPECT_NE(reference::make_engine("lammps")->input_fingerprint(scene),
             reference::make_engine("yade")->input_fingerprint(scene));
+}
+
+}  // namespace input_fingerprint_test
+
+namespace input_fingerprint_test {
+
+TEST(InputFingerprint, EveryCommittedBaselineRecordsTheInputTheDriverWritesNow) {
+  // A driver change that alters a deck or script must come with refreshed baselines, or the
+  // fast tier (and a machine without the code) would compare against results of another input.
+  const fs::path root = fs::path(DEMWB_SOURCE_DIR) / "cases";
+  std::size_t checked = 0;
+  for (const auto& entry : fs::directory_iterator(root / "baselines")) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    const auto baseline = nlohmann::json::parse(support::read_file(entry.path()));
+    const fs::path case_file = root / "canonical" / (baseline.at("case").get<std::string>() + ".toml");
+    ASSERT_TRUE(fs::exists(case_file));
+    const cases::Scene scene = cases::load_case(case_file);
+    ASSERT_TRUE(baseline.contains("inputs")) << "run `demwb refresh canonical --write-baselines`";
+    for (const auto& [engine, result] : baseline.at("references").items()) {
+      ASSERT_TRUE(scene.stages.empty()) << "a prepared case: compare against its prepared scene";
+      ASSERT_TRUE(baseline.at("inputs").contains(engine)) << engine;
+      EXPECT_EQ(baseline.at("inputs").at(engine).get<std::string>(), reference::make_engine(engine)->input_fingerprint(scene))
+          << engine << ": the driver now writes another input; run `demwb refresh canonical --write-baselines`";
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 10u);  // LAMMPS and YADE results of the two-body cases
 }
 
 }  // namespace input_fingerprint_test

@@ -2,6 +2,7 @@
 // Phase-2 LAMMPS mapping without the binary: Hertz-family E conversions (pair and wall), JKR,
 // friction, Tsuji e_in inversion, wall planes, prescribed motion, and the decks of the
 // canonical cases.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -9,11 +10,13 @@
 #include <gtest/gtest.h>
 
 #include "cases/case_loader.hpp"
+#include "dem/contact/laws/dashpot_restitution.hpp"
 #include "dem/contact/laws/nonlinear_dashpots.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
 #include "reference/lammps/prescribed_motion.hpp"
+#include "reference/lammps/tsuji_input.hpp"
 #include "reference/lammps/run_conventions.hpp"
 #include "reference/lammps/tsuji_input.hpp"
 #include "reference/lammps/wall_mapping.hpp"
@@ -27,7 +30,7 @@ using reference::lammps::PairContext;
 constexpr double kModulus = 4.6153846153846154e7;  // E* of E = 8.4e7, ν = 0.3, both bodies
 
 dem::PairLaw hertz_law(const std::string& damping = "none", const std::string& cohesion = "none",
-                       const std::string& tangential = "none") {
+                       const std::string& tangential = "none", double restitution = 0.5) {
   dem::ModelChoice choice;
   choice.normal = "hertz";
   choice.damping = damping;
@@ -35,7 +38,7 @@ dem::PairLaw hertz_law(const std::string& damping = "none", const std::string& c
   choice.tangential = tangential;
   dem::PairProperties p;
   p.effective_modulus = kModulus;
-  p.restitution = 0.5;
+  p.restitution = restitution;
   p.surface_energy = 121.5;
   p.tangential_stiffness = 1e6;
   p.friction = 0.2;
@@ -103,7 +106,54 @@ TEST(LammpsTsujiInput, InvertsLammpsPolynomialToTheLastBits) {
     ASSERT_TRUE(e.has_value()) << factor;
     EXPECT_NEAR(dem::laws::lammps_tsuji_factor(*e), factor, 1e-14) << factor;
   }
-  EXPECT_FALSE(reference::lammps::tsuji_input_for_factor(1.5).has_value());
+  EXPECT_FALSE(reference::lammps::tsuji_input_for_factor(-1e-3).has_value());
+  EXPECT_FALSE(reference::lammps::tsuji_input_for_factor(100.0).has_value());
+  EXPECT_FALSE(reference::lammps::tsuji_input_for_factor(NAN).has_value());
+}
+
+TEST(LammpsTsujiInput, ThePolynomialFallsOverTheWholeInputRangeSoTheInverseIsUnique) {
+  const double zero = reference::lammps::tsuji_input_zero();
+  EXPECT_GT(zero, 1.0);
+  EXPECT_LT(zero, 1.001);
+  EXPECT_NEAR(dem::laws::lammps_tsuji_factor(zero), 0.0, 1e-15);
+  double previous = dem::laws::lammps_tsuji_factor(reference::lammps::kTsujiInputLowest);
+  for (int i = 1; i <= 100000; ++i) {
+    const double e = reference::lammps::kTsujiInputLowest + (zero - reference::lammps::kTsujiInputLowest) * i / 100000.0;
+    const double now = dem::laws::lammps_tsuji_factor(e);
+    ASSERT_LT(now, previous) << e;
+    previous = now;
+  }
+}
+
+TEST(LammpsTsujiInput, EveryRestitutionInZeroToOneMaps) {
+  // The core's α(ε) runs from √5 (ε → 0) to 0 (ε = 1): below ε ≈ 0.12 it needs e_in < 0, above
+  // ε ≈ 0.9996 e_in > 1, and ε = 1 is no dashpot (damping velocity 0).
+  for (int k = 1; k <= 2000; ++k) {
+    const double e = k / 2000.0;
+    const double factor = dem::laws::tsuji_factor(e);
+    if (e == 1.0) {
+      EXPECT_EQ(factor, 0.0);
+      continue;
+    }
+    const auto e_in = reference::lammps::tsuji_input_for_factor(factor);
+    ASSERT_TRUE(e_in.has_value()) << e;
+    EXPECT_NEAR(dem::laws::lammps_tsuji_factor(*e_in), factor, 1e-14 * std::max(1.0, factor)) << e;
+  }
+  for (const double e : {1e-6, 0.1, 0.9999, 0.99999999}) {
+    EXPECT_TRUE(reference::lammps::tsuji_input_for_factor(dem::laws::tsuji_factor(e)).has_value()) << e;
+  }
+}
+
+TEST(LammpsTsujiInput, TsujiAtRestitutionOneIsNoDashpotAndBeyondTheOldRangeStillTsuji) {
+  const auto undamped = map_pair_law(hertz_law("tsuji", "none", "none", 1.0), context());
+  EXPECT_EQ(undamped.damping_style, "velocity");
+  EXPECT_EQ(undamped.damping_coefficient, 0.0);
+  const auto nearly = map_pair_law(hertz_law("tsuji", "none", "none", 0.9999), context());
+  EXPECT_EQ(nearly.damping_style, "tsuji");
+  EXPECT_GT(nearly.damping_coefficient, 1.0);
+  const auto strong = map_pair_law(hertz_law("tsuji", "none", "none", 0.1), context());
+  EXPECT_EQ(strong.damping_style, "tsuji");
+  EXPECT_LT(strong.damping_coefficient, 0.0);
 }
 
 TEST(LammpsTsujiInput, CoreTsujiForRestitutionHalfNeedsEInFromLammpsNotes) {

@@ -13,15 +13,7 @@
 namespace lammps_snapshot_test {
 
 using reference::lammps::parse_dump;
-using reference::lammps::snapshot_steps;
 using reference::lammps::snapshots_from_dump;
-
-TEST(LammpsSnapshots, StepIsTheFirstWithinHalfAStepOfTheRequestedTime) {
-  EXPECT_EQ(snapshot_steps({8e-4, 0.0, 3.7e-4}, 5e-6, 160),
-            (std::vector<std::uint64_t>{0, 74, 160}));
-  EXPECT_EQ(snapshot_steps({0.4e-5, 0.6e-5}, 1e-5, 10), (std::vector<std::uint64_t>{0, 1}));
-  EXPECT_EQ(snapshot_steps({2.0}, 1e-5, 10), std::vector<std::uint64_t>{});
-}
 
 TEST(LammpsSnapshots, ReadsTheCapturedDump) {
   const auto frames = parse_dump(
