@@ -154,15 +154,10 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
     dir = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())
                                    : std::filesystem::path("out") / ("gate-" + suite.filename().string());
     std::vector<std::string> suite_args{suite.string(), "-o", dir.string(), "-j",
-                                        std::to_string((*vm)["jobs"].as<unsigned>()), "--timeout",
-                                        fmt::format("{}", (*vm)["timeout"].as<double>()), "--tier",
+                                        std::to_string((*vm)["jobs"].as<unsigned>()), "--tier",
                                         std::string(cases::to_string(tier_option(*vm)))};
-    if (vm->count("no-cache") != 0) suite_args.push_back("--no-cache");
+    for (auto& a : forwarded_run_options(*vm)) suite_args.push_back(std::move(a));
     if (vm->count("reproducible") != 0) suite_args.push_back("--reproducible");
-    for (const char* option : {"cache", "lammps", "yade"}) {
-      if (vm->count(option) != 0) suite_args.insert(suite_args.end(), {std::string("--") + option, (*vm)[option].as<std::string>()});
-    }
-    suite_args.insert(suite_args.end(), {"--threads", std::to_string((*vm)["threads"].as<int>())});
     if (vm->count("match") != 0) {
       for (const auto& m : (*vm)["match"].as<std::vector<std::string>>()) suite_args.insert(suite_args.end(), {"--match", m});
     }

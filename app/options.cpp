@@ -112,15 +112,20 @@ double timeout_option(const po::variables_map& vm) {
   return timeout;
 }
 
-std::vector<std::string> sweep_arguments(const std::filesystem::path& sweep_file, const std::filesystem::path& out,
-                                         unsigned jobs, const po::variables_map& vm) {
-  std::vector<std::string> args{sweep_file.string(), "-o", out.string(), "-j", std::to_string(std::max(1U, jobs)),
-                                "--timeout", fmt::format("{}", vm["timeout"].as<double>()), "--threads",
+std::vector<std::string> forwarded_run_options(const po::variables_map& vm) {
+  std::vector<std::string> args{"--timeout", fmt::format("{}", vm["timeout"].as<double>()), "--threads",
                                 std::to_string(vm["threads"].as<int>())};
   if (vm.count("no-cache") != 0) args.emplace_back("--no-cache");
   for (const char* option : {"cache", "lammps", "yade"}) {
     if (vm.count(option) != 0) args.insert(args.end(), {std::string("--") + option, vm[option].as<std::string>()});
   }
+  return args;
+}
+
+std::vector<std::string> sweep_arguments(const std::filesystem::path& sweep_file, const std::filesystem::path& out,
+                                         unsigned jobs, const po::variables_map& vm) {
+  std::vector<std::string> args{sweep_file.string(), "-o", out.string(), "-j", std::to_string(std::max(1U, jobs))};
+  for (auto& a : forwarded_run_options(vm)) args.push_back(std::move(a));
   return args;
 }
 

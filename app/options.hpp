@@ -23,6 +23,10 @@ cases::LoadOptions load_options(const boost::program_options::variables_map& vm)
 /// The value of --timeout, checked: seconds in (0, 1e7].
 double timeout_option(const boost::program_options::variables_map& vm);
 
+/// The run options of `vm` that a command passes on to the one it starts (gate → suite, suite and
+/// refresh → sweep): --timeout, --threads, and --no-cache, --cache, --lammps, --yade when given.
+std::vector<std::string> forwarded_run_options(const boost::program_options::variables_map& vm);
+
 /// Arguments of `demwb sweep` for running `sweep_file` into `out` with `jobs` runs at once and
 /// the run options of `vm` that a sweep shares (--timeout, --threads, --cache, --no-cache,
 /// --lammps, --yade): how suite (full tier) and refresh --sweep start a sweep.
