@@ -13,6 +13,7 @@ packages=(
   libboost-program-options-dev     # Boost.Program_options: the demwb command line
   libtomlplusplus-dev              # toml++: case files
   nlohmann-json3-dev               # results.json
+  zlib1g-dev                       # zlib: packed traces in the result cache and baselines
   libfmt-dev                       # formatting
   libgtest-dev                     # GoogleTest
   libbenchmark-dev                 # Google Benchmark: the micro-benchmarks (build/bench/demwb_microbench)

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "store/packed_column.hpp"
+
 namespace store {
 namespace {
 
@@ -18,26 +20,47 @@ cases::RunStatus parse_status(const std::string& s) {
   throw std::runtime_error("unknown run status '" + s + "'");
 }
 
+/// Names what packed traces are, so that a reader meets a format it knows or a clear refusal.
+constexpr const char* kPackedEncoding = "demwb-packed-1";
+
+/// A trace in packed form (docs/results-format.md, "Packed traces"): the row count and, per
+/// column in order, its pack_column text.
 Json trace_json(const cases::Trace& t) {
-  Json j = Json::object();
-  for (std::size_t c = 0; c < t.columns().size(); ++c) j[t.columns()[c]] = t.values(c);
-  return j;
+  Json columns = Json::object();
+  for (std::size_t c = 0; c < t.columns().size(); ++c) columns[t.columns()[c]] = pack_column(t.values(c));
+  return Json{{"encoding", kPackedEncoding}, {"rows", t.rows()}, {"columns", std::move(columns)}};
 }
 
+/// A trace from its packed form, or from the plain form older files hold (column name →
+/// array of numbers).
 cases::Trace trace_from(const Json& j) {
-  cases::Trace t;
-  std::vector<std::vector<double>> columns;
-  for (const auto& [name, values] : j.items()) {
-    t.add_column(name);
-    columns.push_back(values.get<std::vector<double>>());
-  }
-  const std::size_t rows = columns.empty() ? 0 : columns.front().size();
-  for (std::size_t r = 0; r < rows; ++r) {
-    std::vector<double> row;
-    for (const auto& c : columns) {
-      if (c.size() != rows) throw std::runtime_error("trace columns of different lengths");
-      row.push_back(c[r]);
+  std::vector<std::pair<std::string, std::vector<double>>> columns;
+  std::size_t rows = 0;
+  if (j.contains("encoding")) {
+    const auto encoding = j.at("encoding").get<std::string>();
+    if (encoding != kPackedEncoding) {
+      throw std::runtime_error("trace encoding '" + encoding + "' is not " + kPackedEncoding);
     }
+    rows = j.at("rows").get<std::size_t>();
+    for (const auto& [name, text] : j.at("columns").items()) {
+      try {
+        columns.emplace_back(name, unpack_column(text.get<std::string>(), rows));
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error("trace column '" + name + "': " + e.what());
+      }
+    }
+  } else {
+    for (const auto& [name, values] : j.items()) columns.emplace_back(name, values.get<std::vector<double>>());
+    rows = columns.empty() ? 0 : columns.front().second.size();
+  }
+  cases::Trace t;
+  for (const auto& [name, values] : columns) {
+    if (values.size() != rows) throw std::runtime_error("trace columns of different lengths");
+    t.add_column(name);
+  }
+  std::vector<double> row(columns.size());
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < columns.size(); ++c) row[c] = columns[c].second[r];
     t.append_row(row);
   }
   return t;

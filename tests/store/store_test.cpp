@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cases/case_loader.hpp"
+#include "store/packed_column.hpp"
 #include "store/result_cache.hpp"
 #include "store/run_result_json.hpp"
 #include "store/scene_json.hpp"
@@ -151,7 +152,14 @@ TEST(ResultCache, DetectsEveryKindOfTamperingWithAnEntry) {
   // scaled by 1 + 1e-5, a forged exact metric, a removed checksum, a checksum recomputed over a
   // result that is not a success.
   const std::vector<std::pair<std::string, std::function<Json(Json)>>> edits = {
-      {"trace scaled", [](Json j) { j["result"]["trace"]["p0.x"][1] = j["result"]["trace"]["p0.x"][1].get<double>() * (1 + 1e-5); return j; }},
+      {"trace scaled", [](Json j) {
+         // Unpacked, scaled and packed again: a valid column, so only the checksum can tell.
+         Json& column = j["result"]["trace"]["columns"]["p0.x"];
+         std::vector<double> values = store::unpack_column(column.get<std::string>(), 2);
+         values[1] *= 1 + 1e-5;
+         column = store::pack_column(values);
+         return j;
+       }},
       {"exact metric forged", [](Json j) { j["result"]["exact_metrics"]["restitution"] = 0.75; return j; }},
       {"status forged", [](Json j) { j["result"]["status"] = "error"; return j; }},
       {"checksum removed", [](Json j) { j.erase("sha256"); return j; }},

@@ -1,4 +1,4 @@
-set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'
+set terminal png size 900,600 enhanced font 'DejaVu Sans,11'
 set output "kappa_damage_vs_cohesive_work.png"
 set title "kappa_damage against the cohesive work of a pair" noenhanced
 set xlabel "cohesive work (J)" noenhanced

@@ -1,4 +1,4 @@
-set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'
+set terminal png size 900,600 enhanced font 'DejaVu Sans,11'
 set output "kappa_damage_vs_surface_energy.png"
 set title "kappa_damage against γ (J/m²) (μ = 0.2)" noenhanced
 set xlabel "γ (J/m²)" noenhanced

@@ -1,4 +1,4 @@
-set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'
+set terminal png size 900,600 enhanced font 'DejaVu Sans,11'
 set output "kappa_damage_vs_youngs_modulus.png"
 set title "kappa_damage against E (Pa) (γ (J/m²) = 121.5)" noenhanced
 set xlabel "E (Pa)" noenhanced

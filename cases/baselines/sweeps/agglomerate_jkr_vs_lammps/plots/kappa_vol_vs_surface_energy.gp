@@ -1,4 +1,4 @@
-set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'
+set terminal png size 900,600 enhanced font 'DejaVu Sans,11'
 set output "kappa_vol_vs_surface_energy.png"
 set title "kappa_vol against γ (J/m²)" noenhanced
 set xlabel "γ (J/m²)" noenhanced

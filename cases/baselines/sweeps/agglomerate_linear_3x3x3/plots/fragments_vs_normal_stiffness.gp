@@ -1,4 +1,4 @@
-set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'
+set terminal png size 900,600 enhanced font 'DejaVu Sans,11'
 set output "fragments_vs_normal_stiffness.png"
 set title "fragments against k_e (N/m) (k_c (N/m) = 100)" noenhanced
 set xlabel "k_e (N/m)" noenhanced

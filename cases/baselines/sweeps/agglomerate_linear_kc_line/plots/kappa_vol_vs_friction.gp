@@ -1,4 +1,4 @@
-set terminal pngcairo size 900,600 enhanced font 'DejaVu Sans,11'
+set terminal png size 900,600 enhanced font 'DejaVu Sans,11'
 set output "kappa_vol_vs_friction.png"
 set title "kappa_vol against μ" noenhanced
 set xlabel "μ" noenhanced
