@@ -278,12 +278,13 @@ Scene load_case_text(std::string_view text, const std::string& path, const LoadO
   loader::read_mixing(root, scene);
   loader::read_materials(root, scene);
   loader::read_pairs(root, scene);
+  loader::read_walls(root, scene);  // before the particles: a velocity may be aimed at a wall
   loader::read_particles(root, scene);
   loader::read_populations(root, scene);
   if (scene.particles.empty()) {
     throw CaseError(path, "particles", "the case has no particles: list [[particles]] or generate [[populations]]");
   }
-  loader::read_walls(root, scene);
+  loader::apply_rigid_walls(scene);
   loader::read_domain(root, scene);
   loader::read_neighbors(root, scene);
   loader::read_fields(root, scene);

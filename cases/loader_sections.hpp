@@ -68,6 +68,19 @@ Value origin_entry(const Table& root, const Scene& scene, std::size_t i, std::st
 [[noreturn]] void fail_at_particle(const Table& root, const Scene& scene, std::size_t i, const std::string& problem,
                                    std::string_view listed_key = {}, std::string_view generated_key = {});
 
+/// Index of the wall a value names (a wall name, or an index into the walls); throws naming the
+/// value when there is none.
+std::size_t wall_index(const Value& v, const Scene& scene);
+/// The unit in-plane part of a direction value relative to `wall` (its component along the
+/// normal removed); throws naming the value when it has none.
+Vector3 in_plane_direction(const Value& direction, const WallSpec& wall);
+/// An initial velocity: a 3-vector, or a table { speed, wall, incidence, direction } aimed at a
+/// wall, u = speed (sin θ t̂ − cos θ n) with θ the incidence from the wall's normal n and t̂ the
+/// in-plane part of direction (docs/case-format.md, "[[particles]]").
+Vector3 read_initial_velocity(const Value& value, const Scene& scene);
+/// Gives each rigid wall a rigid material (docs/case-format.md, "[[walls]]"): the wall's own when
+/// no particle and no compliant wall uses it, else a rigid copy that inherits its [[pairs]] entries.
+void apply_rigid_walls(Scene& scene);
 /// Index of the material a value names; throws naming the value when there is none.
 std::size_t material_index(const Value& name, const Scene& scene);
 /// Keyword chosen for `slot` in `choice`.

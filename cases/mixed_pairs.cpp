@@ -10,6 +10,7 @@ std::vector<MixedPair> mixed_pairs(const Scene& scene) {
   const auto& mats = scene.materials;
   for (std::size_t a = 0; a < mats.size(); ++a) {
     for (std::size_t b = a; b < mats.size(); ++b) {
+      if (mats[a].rigid && mats[b].rigid) continue;  // two rigid walls never touch
       const dem::PairProperties mixed = dem::mix_properties(mats[a], mats[b], scene.mixing);
       const dem::PairProperties* override_values = nullptr;
       for (const auto& o : scene.pair_overrides) {

@@ -23,7 +23,8 @@ struct MixedPair {
   std::vector<MixedValue> values;
 };
 
-/// Mixed and overridden properties of every material pair of the scene, in material order.
+/// Mixed and overridden properties of every material pair of the scene that can meet (two rigid
+/// materials cannot), in material order.
 std::vector<MixedPair> mixed_pairs(const Scene& scene);
 
 }  // namespace cases

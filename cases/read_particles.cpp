@@ -112,7 +112,7 @@ ParticleSpec read_particle(const Table& table, const Scene& scene) {
     }
   }
   p.position = table.require("position").vector3();
-  if (const auto v = table.find("velocity")) p.velocity = read_velocity(*v);
+  if (const auto v = table.find("velocity")) p.velocity = read_initial_velocity(*v, scene);
   if (const auto v = table.find("angular_velocity")) {
     p.angular_velocity = v->vector3();
     check_surface_speed(*v, p.angular_velocity, p.radius);

@@ -24,21 +24,6 @@ constexpr auto kFormationKeys = std::to_array<std::string_view>(
 constexpr auto kLaunchKeys =
     std::to_array<std::string_view>({"kind", "name", "wall", "speed", "angle", "direction", "height"});
 
-/// Index of the wall a value names (a wall name, or an index into the walls).
-std::size_t wall_index(const Value& v, const Scene& scene) {
-  if (scene.walls.empty()) v.fail("the case has no [[walls]] to launch at");
-  if (v.node().is_string()) {
-    const std::string name = v.string();
-    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-      if (scene.walls[w].name == name) return w;
-    }
-    std::string known;
-    for (const WallSpec& w : scene.walls) known += (known.empty() ? "'" : ", '") + w.name + "'";
-    v.fail(fmt::format("no wall is named '{}' (walls: {})", excerpt(name), known));
-  }
-  return v.index(scene.walls.size(), "walls");
-}
-
 FormationStageSpec read_formation(const Table& t, const Scene& scene) {
   t.allow_only(kFormationKeys);
   FormationStageSpec f;
@@ -74,28 +59,7 @@ LaunchStageSpec read_launch(const Table& t, const Scene& scene) {
   l.speed = speed.number(positive_range());
   check_speed(speed, l.speed, "launch speed");
   l.angle = t.require("angle").number(dem::ValueRange{0.0, 90.0, true, false});
-  const WallSpec& w = scene.walls[l.wall];
-  const Value direction = t.require("direction");
-  Vector3 d = direction.vector3();
-  // A direction whose squares overflow or underflow is scaled to unit length first, so that the
-  // projection below stays finite (ordinary ones keep their bits).
-  if (const double squares = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]; !std::isnormal(squares)) {
-    const double n = length(d);
-    if (n > 0.0) {
-      for (double& c : d) c /= n;
-    }
-  }
-  // The in-plane part of `direction`: its component along the wall normal is removed.
-  const double along = d[0] * w.normal[0] + d[1] * w.normal[1] + d[2] * w.normal[2];
-  for (std::size_t k = 0; k < 3; ++k) d[k] -= along * w.normal[k];
-  const double norm = length(d);
-  if (!(norm > 1e-9)) {
-    direction.fail(fmt::format("has no component in the plane of wall '{}' (normal [{}, {}, {}]); give a "
-                               "direction along the wall",
-                               w.name, w.normal[0], w.normal[1], w.normal[2]));
-  }
-  for (double& c : d) c /= norm;
-  l.direction = d;
+  l.direction = in_plane_direction(t.require("direction"), scene.walls[l.wall]);
   if (const auto v = t.find("height")) {
     l.height = v->number(dem::ValueRange{0.5, std::numeric_limits<double>::infinity(), true, true});
   }

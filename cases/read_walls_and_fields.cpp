@@ -17,9 +17,9 @@ namespace cases::loader {
 namespace {
 
 constexpr auto kPlaneKeys =
-    std::to_array<std::string_view>({"type", "name", "point", "normal", "material", "velocity"});
+    std::to_array<std::string_view>({"type", "name", "point", "normal", "material", "velocity", "rigid"});
 constexpr auto kBoxKeys =
-    std::to_array<std::string_view>({"type", "name", "min", "max", "material", "open_faces"});
+    std::to_array<std::string_view>({"type", "name", "min", "max", "material", "open_faces", "rigid"});
 constexpr auto kWallTypes = std::to_array<std::string_view>({"plane", "box"});
 constexpr auto kBoxFaces = std::to_array<std::string_view>({"x-", "x+", "y-", "y+", "z-", "z+"});
 constexpr auto kFieldKeys = std::to_array<std::string_view>({"gravity", "fluid"});
@@ -50,6 +50,7 @@ WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
   w.normal = unit_vector(t.require("normal"));
   w.material = material_index(t.require("material"), scene);
   if (const auto v = t.find("velocity")) w.velocity = read_velocity(*v);
+  if (const auto v = t.find("rigid")) w.rigid = v->boolean();
   return w;
 }
 
@@ -63,6 +64,7 @@ std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t i
     if (!(hi[k] > lo[k])) t.fail("max", fmt::format("must exceed min in every component, got {} <= {}", hi[k], lo[k]));
   }
   const std::size_t material = material_index(t.require("material"), scene);
+  const bool rigid = t.has("rigid") && t.require("rigid").boolean();
   std::vector<std::string> open;
   if (const auto v = t.find("open_faces")) {
     for (const Value& f : v->elements()) open.push_back(f.keyword(kBoxFaces, "box face"));
@@ -78,6 +80,7 @@ std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t i
       w.normal = {0.0, 0.0, 0.0};
       w.normal[static_cast<std::size_t>(axis)] = side < 0 ? 1.0 : -1.0;
       w.material = material;
+      w.rigid = rigid;
       walls.push_back(w);
     }
   }
@@ -142,6 +145,47 @@ void read_walls(const Table& root, Scene& scene) {
                              scene.walls.size(), kMaxWalls));
     }
     ++index;
+  }
+}
+
+void apply_rigid_walls(Scene& scene) {
+  const std::size_t base_count = scene.materials.size();
+  std::vector<bool> used_compliant(base_count, false);
+  for (const auto& p : scene.particles) used_compliant[p.material] = true;
+  for (const auto& w : scene.walls) {
+    if (!w.rigid) used_compliant[w.material] = true;
+  }
+  std::vector<std::size_t> rigid_copy(base_count, base_count);  // base_count: none yet
+  for (auto& w : scene.walls) {
+    if (!w.rigid) continue;
+    const std::size_t base = w.material;
+    if (!used_compliant[base]) {
+      scene.materials[base].rigid = true;  // only rigid walls use it: it becomes rigid itself
+      continue;
+    }
+    if (rigid_copy[base] == base_count) {
+      dem::MaterialProperties copy = scene.materials[base];
+      copy.name += " (rigid)";
+      copy.rigid = true;
+      rigid_copy[base] = scene.materials.size();
+      scene.materials.push_back(std::move(copy));
+      // The copy inherits the material's [[pairs]] entries: measured pair values still win. An
+      // entry (base, x) becomes (copy, x); a self entry (base, base) becomes (base, copy), the
+      // particle against the rigid wall (copy against copy would be two rigid bodies).
+      const std::size_t overrides = scene.pair_overrides.size();
+      for (std::size_t k = 0; k < overrides; ++k) {
+        dem::PairOverride o = scene.pair_overrides[k];
+        if (o.material_a == base) {
+          o.material_a = rigid_copy[base];
+        } else if (o.material_b == base) {
+          o.material_b = rigid_copy[base];
+        } else {
+          continue;
+        }
+        scene.pair_overrides.push_back(o);
+      }
+    }
+    w.material = rigid_copy[base];
   }
 }
 

@@ -52,6 +52,8 @@ struct WallSpec {
   Vector3 normal{};
   Vector3 velocity{};
   std::size_t material = 0;
+  /// No compliance (`rigid = true`): its material is a rigid one (dem::MaterialProperties::rigid).
+  bool rigid = false;
 };
 
 /// One rectangular zone of plug flow (thesis §6.5).

@@ -19,6 +19,7 @@ Json material_json(const dem::MaterialProperties& m) {
     if (spec.material_field == nullptr) continue;
     if (const auto& v = m.*spec.material_field) j[std::string(spec.key)] = *v;
   }
+  if (m.rigid) j["rigid"] = true;  // only when set: older scenes keep their fingerprints
   return j;
 }
 
@@ -119,7 +120,9 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
   j["particles"] = particles;
   Json walls = Json::array();
   for (const auto& w : s.walls) {
-    walls.push_back({{"point", w.point}, {"normal", w.normal}, {"velocity", w.velocity}, {"material", w.material}});
+    Json wall = {{"point", w.point}, {"normal", w.normal}, {"velocity", w.velocity}, {"material", w.material}};
+    if (w.rigid) wall["rigid"] = true;  // only when set: older scenes keep their fingerprints
+    walls.push_back(std::move(wall));
   }
   j["walls"] = walls;
   // Written only when set, so that the fingerprints of scenes without them stay as they were.

@@ -25,9 +25,13 @@ class PairTable {
   [[nodiscard]] const PairProperties& properties(std::size_t a, std::size_t b) const noexcept {
     return properties_[index(a, b)];
   }
-  /// Contact law of the pair (a, b).
+  /// Contact law of the pair (a, b); a default-constructed law when the pair never interacts.
   [[nodiscard]] const PairLaw& law(std::size_t a, std::size_t b) const noexcept {
     return laws_[index(a, b)];
+  }
+  /// False for a pair of two rigid materials (walls never touch each other): it has no law.
+  [[nodiscard]] bool interacts(std::size_t a, std::size_t b) const noexcept {
+    return interacts_[index(a, b)];
   }
   /// The model choice the laws were built from.
   [[nodiscard]] const ModelChoice& choice() const noexcept { return choice_; }
@@ -40,6 +44,7 @@ class PairTable {
   ModelChoice choice_;
   std::vector<PairProperties> properties_;
   std::vector<PairLaw> laws_;
+  std::vector<bool> interacts_;
 };
 
 /// Builds a pair's law from its properties; throws ModelError on an unknown keyword

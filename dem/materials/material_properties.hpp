@@ -44,6 +44,9 @@ struct MaterialProperties {
   std::optional<double> potential_exponent;      ///< a [-] (eq 3.17)
   std::optional<double> potential_critical_ratio;///< d_crit / d [-] (eq 3.17)
   std::optional<double> potential_gravity;       ///< g [m/s²] in ε_p = d m* g / a (eq 3.19)
+  /// The material of a rigid body (a wall with `rigid = true`): it adds no compliance, so E*, G*
+  /// and the linear stiffnesses of its contacts come from the other body alone (mixing.hpp).
+  bool rigid = false;
 };
 
 /// Mixed properties of one material pair, the input of every contact sub-model. A case file can

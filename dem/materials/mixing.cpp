@@ -52,9 +52,33 @@ MixingRule rule_for(const MixingRules& rules, const PropertySpec& spec) noexcept
   return it == rules.end() ? spec.default_mixing : it->second;
 }
 
+bool is_compliance_property(std::string_view key) noexcept {
+  return key == "normal_stiffness" || key == "tangential_stiffness" || key == "rolling_stiffness";
+}
+
 PairProperties mix_properties(const MaterialProperties& a, const MaterialProperties& b,
                               const MixingRules& rules) {
   PairProperties pair;
+  if (a.rigid || b.rigid) {
+    // Against a rigid body only the compliant body deforms; two rigid bodies get no elastic values.
+    const MaterialProperties& soft = a.rigid ? b : a;
+    const bool one_rigid = a.rigid != b.rigid;
+    if (one_rigid && soft.youngs_modulus && soft.poisson_ratio) {
+      pair.effective_modulus = rigid_effective_modulus(*soft.youngs_modulus, *soft.poisson_ratio);
+      pair.effective_shear_modulus = rigid_effective_shear_modulus(*soft.youngs_modulus, *soft.poisson_ratio);
+    }
+    for (const auto& spec : property_specs()) {
+      if (spec.material_field == nullptr || spec.pair_field == nullptr) continue;
+      const auto& va = a.*spec.material_field;
+      const auto& vb = b.*spec.material_field;
+      if (is_compliance_property(spec.key)) {
+        if (one_rigid && soft.*spec.material_field) pair.*spec.pair_field = 2.0 * *(soft.*spec.material_field);
+      } else if (va && vb) {
+        pair.*spec.pair_field = mix_values(rule_for(rules, spec), *va, *vb);
+      }
+    }
+    return pair;
+  }
   if (a.youngs_modulus && a.poisson_ratio && b.youngs_modulus && b.poisson_ratio) {
     pair.effective_modulus =
         effective_modulus(*a.youngs_modulus, *a.poisson_ratio, *b.youngs_modulus, *b.poisson_ratio);
@@ -68,6 +92,13 @@ PairProperties mix_properties(const MaterialProperties& a, const MaterialPropert
     if (va && vb) pair.*spec.pair_field = mix_values(rule_for(rules, spec), *va, *vb);
   }
   return pair;
+}
+
+double rigid_effective_modulus(double e, double nu) noexcept { return e / (1.0 - nu * nu); }
+
+double rigid_effective_shear_modulus(double e, double nu) noexcept {
+  const double g = e / (2.0 * (1.0 + nu));
+  return g / (2.0 - nu);
 }
 
 double effective_modulus(double e_p, double nu_p, double e_q, double nu_q) noexcept {

@@ -41,8 +41,21 @@ MixingRule rule_for(const MixingRules& rules, const PropertySpec& spec) noexcept
 [[nodiscard]] double effective_shear_modulus(double e_p, double nu_p, double e_q,
                                              double nu_q) noexcept;
 
+/// E* against a rigid body: eq 3.13 without the rigid body's compliance term, E/(1 − ν²) [Pa].
+[[nodiscard]] double rigid_effective_modulus(double e, double nu) noexcept;
+
+/// G* against a rigid body: eq 3.25 without the rigid body's term, G/(2 − ν) with G = E/(2(1 + ν)) [Pa].
+[[nodiscard]] double rigid_effective_shear_modulus(double e, double nu) noexcept;
+
+/// The properties a rigid partner changes (docs/physics.md, "Walls"): the body's elastic springs
+/// (normal, tangential and rolling stiffness) are the compliant body's half-contact alone, 2k
+/// (the harmonic rule 2ab/(a + b) with b infinitely stiff); E* and G* drop the rigid term.
+[[nodiscard]] bool is_compliance_property(std::string_view key) noexcept;
+
 /// Mixed pair properties of materials a and b: a property is set when both materials set it;
-/// E* and G* are derived when both materials set E and ν.
+/// E* and G* are derived when both materials set E and ν. When one material is rigid, E*, G*
+/// and the compliance properties come from the other alone (set when it sets them); two rigid
+/// materials get none of them (two rigid bodies never touch: walls act on particles only).
 PairProperties mix_properties(const MaterialProperties& a, const MaterialProperties& b,
                               const MixingRules& rules);
 

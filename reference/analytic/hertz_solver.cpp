@@ -143,8 +143,11 @@ void check_hertz_layout(const cases::Scene& scene, std::vector<std::string>& rea
     relative = minus(p.velocity, q.velocity);
     overlap = p.radius + q.radius - distance;
   }
+  // Against a plane wall the normal is fixed, so a frictionless sphere's motion along the wall
+  // is uniform and decouples from the contact: oblique impacts are solved. Between two spheres
+  // an oblique approach turns the line of centres, so only head-on collisions are.
   const double off = off_line(relative, normal);
-  if (off > kHeadOnTolerance * norm(relative)) {
+  if (!sphere_wall && off > kHeadOnTolerance * norm(relative)) {
     reasons.push_back(reason("the relative velocity has a {:.3g} m/s part across the contact "
                              "normal; only head-on collisions are solved",
                              off));
@@ -172,6 +175,9 @@ HertzPair reduce(const cases::Scene& scene, const dem::PairTable& table) {
     h.contact_distance = p0.radius;
     h.initial_overlap = p0.radius - dot(minus(p0.position, w.point), h.normal);
     h.approach_speed = -dot(p0.velocity, h.normal);
+    // The velocity along the wall, untouched by a frictionless contact: the uniform part of the
+    // motion (the role the centre-of-mass velocity plays for two mobile spheres).
+    h.centre_of_mass_velocity = minus(p0.velocity, scaled(h.normal, dot(p0.velocity, h.normal)));
     h.law = table.law(p0.material, w.material);
   } else {
     // `first` is a mobile sphere; with two mobile spheres it is particle 0.
@@ -435,7 +441,9 @@ std::map<std::string, std::string> conventions(const cases::Scene& scene, const 
       break;
     case HertzPair::Kind::wall:
       c["geometry"] = fmt::format("mobile sphere {} against plane wall {} at rest: m* = m = {:.6g} "
-                                  "kg, R* = r = {:.6g} m", h.first, h.second, h.reduced_mass, h.reduced_radius);
+                                  "kg, R* = r = {:.6g} m; the velocity along the wall ({:.6g} m/s) is "
+                                  "uniform (no friction)", h.first, h.second, h.reduced_mass,
+                                  h.reduced_radius, norm(h.centre_of_mass_velocity));
       break;
     case HertzPair::Kind::two_mobile:
       c["geometry"] = fmt::format("two mobile spheres head-on: m* = {:.6g} kg, R* = {:.6g} m, "

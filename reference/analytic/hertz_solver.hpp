@@ -9,8 +9,9 @@
 
 namespace reference::analytic {
 
-/// Head-on Hertz collisions of two bodies (thesis eq 3.12–3.14; docs/physics-normal.md): one mobile
-/// sphere against a fixed sphere or a plane wall at rest, or two mobile spheres. Elastic
+/// Frictionless Hertz collisions of two bodies (thesis eq 3.12–3.14; docs/physics-normal.md): one
+/// mobile sphere head-on against a fixed sphere, two mobile spheres head-on, or one sphere at any
+/// incidence against a plane wall at rest (its motion along the wall is uniform). Elastic
 /// contacts use the closed form (HertzElasticContact); damped ones (any damping sub-model, with
 /// or without clamp_tensile) a Dormand–Prince integration to 1e-12 (solve_normal_contact).
 class HertzSolver final : public Solver {

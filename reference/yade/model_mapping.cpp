@@ -225,6 +225,15 @@ void check_mindlin_modulus(const cases::Scene& scene, const dem::PairLaw& law, s
                            std::size_t b, std::vector<std::string>& reasons) {
   const auto* hertz = std::get_if<dem::HertzNormal>(&law.normal);
   if (hertz == nullptr) return;
+  if (scene.materials[a].rigid || scene.materials[b].rigid) {
+    const auto& rigid = scene.materials[a].rigid ? scene.materials[a] : scene.materials[b];
+    add_reason(reasons, fmt::format("YADE driver: Hertz–Mindlin against rigid material '{}' is "
+                                    "not mapped (Ip2_FrictMat_FrictMat_MindlinPhys forms E* from "
+                                    "both materials' E and ν; a rigid body has no finite E to "
+                                    "give it, and a stand-in modulus would not be exact)",
+                                    rigid.name));
+    return;
+  }
   const auto yade = mindlin_modulus(scene, a, b);
   if (!yade) {
     add_reason(reasons, fmt::format("YADE driver: Hertz–Mindlin needs youngs_modulus and "
@@ -298,6 +307,7 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
   std::optional<YadeLaw> family;
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a; b < n; ++b) {
+      if (!table->interacts(a, b)) continue;  // two rigid walls' materials: never in contact
       const dem::PairLaw& law = table->law(a, b);
       const auto pair_family = law_of(law);
       YadePairParameters pair{a, b};

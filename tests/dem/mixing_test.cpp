@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Mixing rules, pair table symmetry, overrides and missing-parameter errors.
+// Mixing rules, pair table symmetry, overrides, rigid partners and missing-parameter errors.
 #include <gtest/gtest.h>
 
 #include "dem/contact/pair_table.hpp"
@@ -38,6 +38,79 @@ TEST(MixingRules, CaseChoiceReplacesTheDefault) {
   const dem::MixingRules rules{{"normal_stiffness", dem::MixingRule::min}};
   const auto p = dem::mix_properties(material("a", 1e5, 0.5), material("b", 4e5, 0.5), rules);
   EXPECT_DOUBLE_EQ(*p.normal_stiffness, 1e5);
+}
+
+/// An elastic material with E, ν, a friction coefficient and the linear springs.
+dem::MaterialProperties elastic(const char* name, double e, double nu, double mu) {
+  dem::MaterialProperties m = material(name, 1e5, 0.5);
+  m.youngs_modulus = e;
+  m.poisson_ratio = nu;
+  m.friction = mu;
+  m.tangential_stiffness = 3e5;
+  m.rolling_stiffness = 2e3;
+  m.cohesive_stiffness = 40.0;
+  return m;
+}
+
+TEST(RigidMixing, DropsTheRigidBodysComplianceFromEStarAndGStar) {
+  dem::MaterialProperties glass = elastic("glass", 6.3e10, 0.23, 0.5);
+  dem::MaterialProperties wall = elastic("steel", 2.1e11, 0.29, 0.1);
+  wall.rigid = true;
+  for (const auto& p : {dem::mix_properties(glass, wall, {}), dem::mix_properties(wall, glass, {})}) {
+    // Eq 3.13 and 3.25 with the rigid term removed, written out independently.
+    EXPECT_DOUBLE_EQ(*p.effective_modulus, 6.3e10 / (1.0 - 0.23 * 0.23));
+    EXPECT_DOUBLE_EQ(*p.effective_shear_modulus, 6.3e10 / (2.0 * 1.23) / (2.0 - 0.23));
+    // A rigid side is infinitely stiff: the harmonic 2ab/(a + b) tends to 2a for every body spring.
+    EXPECT_DOUBLE_EQ(*p.normal_stiffness, 2e5);
+    EXPECT_DOUBLE_EQ(*p.tangential_stiffness, 6e5);
+    EXPECT_DOUBLE_EQ(*p.rolling_stiffness, 4e3);
+    // Surface properties mix as always: the lower friction governs; cohesion is not compliance.
+    EXPECT_DOUBLE_EQ(*p.friction, 0.1);
+    EXPECT_DOUBLE_EQ(*p.cohesive_stiffness, 40.0);
+    EXPECT_DOUBLE_EQ(*p.restitution, 0.5);
+  }
+  // The same wall without `rigid` mixes both compliances (eq 3.13).
+  wall.rigid = false;
+  const auto compliant = dem::mix_properties(glass, wall, {});
+  EXPECT_DOUBLE_EQ(*compliant.effective_modulus, dem::effective_modulus(6.3e10, 0.23, 2.1e11, 0.29));
+  EXPECT_LT(*compliant.effective_modulus, 6.3e10 / (1.0 - 0.23 * 0.23));
+  EXPECT_DOUBLE_EQ(*compliant.normal_stiffness, 1e5);
+}
+
+TEST(RigidMixing, TakesNoElasticValueFromTheRigidMaterialAndNeedsNone) {
+  dem::MaterialProperties glass = elastic("glass", 1e8, 0.3, 0.5);
+  dem::MaterialProperties wall;
+  wall.name = "steel";
+  wall.density = 7800.0;
+  wall.rigid = true;
+  wall.friction = 0.2;
+  const auto p = dem::mix_properties(glass, wall, {});
+  EXPECT_DOUBLE_EQ(*p.effective_modulus, 1e8 / 0.91);
+  EXPECT_DOUBLE_EQ(*p.normal_stiffness, 2e5);
+  EXPECT_DOUBLE_EQ(*p.friction, 0.2);
+  EXPECT_FALSE(p.restitution.has_value());  // set by one side only: not mixed
+  // Two rigid bodies get no elastic values at all.
+  const auto none = dem::mix_properties(wall, wall, {});
+  EXPECT_FALSE(none.effective_modulus.has_value());
+  EXPECT_FALSE(none.normal_stiffness.has_value());
+  EXPECT_DOUBLE_EQ(*none.friction, 0.2);
+}
+
+TEST(RigidMixing, PairTableBuildsTheRigidLawAndSkipsRigidPairs) {
+  dem::MaterialProperties glass = elastic("glass", 1e8, 0.3, 0.5);
+  dem::MaterialProperties wall;
+  wall.name = "steel";
+  wall.density = 7800.0;
+  wall.rigid = true;
+  dem::ModelChoice choice;
+  choice.normal = "hertz";
+  const dem::PairTable t({glass, wall}, {}, {}, choice);
+  EXPECT_TRUE(t.interacts(0, 1));
+  EXPECT_TRUE(t.interacts(0, 0));
+  EXPECT_FALSE(t.interacts(1, 1));  // no law is required of wall against wall
+  EXPECT_DOUBLE_EQ(std::get<dem::HertzNormal>(t.law(1, 0).normal).effective_modulus, 1e8 / 0.91);
+  EXPECT_DOUBLE_EQ(std::get<dem::HertzNormal>(t.law(0, 0).normal).effective_modulus,
+                   dem::effective_modulus(1e8, 0.3, 1e8, 0.3));
 }
 
 TEST(PairTable, IsSymmetricAndAppliesOverrides) {

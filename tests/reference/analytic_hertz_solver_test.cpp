@@ -175,6 +175,25 @@ TEST(AnalyticHertzSolver, WallImpactUsesRStarEqualToTheRadius) {
   EXPECT_EQ(r.trace.columns(), cases::trace_layout(hertz_scene("none", 1.0, true)).columns());
 }
 
+TEST(AnalyticHertzSolver, ObliqueWallImpactKeepsTheVelocityAlongTheWall) {
+  // 1 m/s into the wall plus 0.4 m/s along it: the normal problem is the head-on one, the
+  // sphere slides uniformly along the frictionless wall. Between two spheres it stays refused.
+  cases::Scene scene = hertz_scene("none", 1.0, true);
+  scene.particles[0].velocity = {1.0, 0.4, 0.0};
+  ASSERT_TRUE(reasons(scene).empty()) << reasons(scene).front();
+  const cases::RunResult r = analytic(scene);
+  EXPECT_NEAR(r.exact_metrics.at("contact_duration"),
+              dem::laws::hertz_contact_duration(mass(), kEffective, 0.01, 1.0), 1e-15);
+  for (std::size_t k = 0; k < r.trace.rows(); k += 11) {
+    const double t = at(r.trace, "time", k);
+    EXPECT_DOUBLE_EQ(at(r.trace, "p0.vy", k), 0.4) << k;
+    EXPECT_NEAR(at(r.trace, "p0.y", k), 0.4 * t, 1e-15) << k;
+    EXPECT_EQ(at(r.trace, "p0.fy", k), 0.0) << k;
+  }
+  const std::size_t last = r.trace.rows() - 1;
+  EXPECT_NEAR(at(r.trace, "p0.vx", last), -1.0, 1e-12);
+}
+
 TEST(AnalyticHertzSolver, TwoMobileSpheresConserveMomentum) {
   cases::Scene scene = hertz_scene("tsuji");
   scene.particles[1] = sphere(0.02, {0.03 + 10.37e-5, 0.0, 0.0}, {-0.5, 0.0, 0.0}, false);
@@ -225,3 +244,15 @@ TEST(AnalyticHertzCanonical, HertzDampedCollisionFileReboundsAtOneHalf) {
 }
 
 }  // namespace
+
+namespace analytic_hertz_solver_test {
+
+TEST(AnalyticHertzCanonical, RigidWallFileGivesTheFiguresItsHeaderStates) {
+  const cases::RunResult r = analytic(cases::load_case(kCanonical / "rigid_wall_hertz.toml"));
+  EXPECT_NEAR(r.exact_metrics.at("contact_duration"), 3.506510e-4, 1e-10);
+  EXPECT_NEAR(r.exact_metrics.at("max_overlap"), 1.238101e-4, 1e-10);
+  EXPECT_NEAR(r.exact_metrics.at("max_force"), 14.27304, 1e-5);
+  EXPECT_NEAR(r.exact_metrics.at("restitution"), 1.0, 1e-15);
+}
+
+}  // namespace analytic_hertz_solver_test
