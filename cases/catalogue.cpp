@@ -35,6 +35,10 @@ constexpr std::array kMetrics{
     MetricInfo{"angular_velocity_after_x", "rad/s", "subject's angular velocity, x component, at the first sample after its first contact with the compared partner ends", true, true},
     MetricInfo{"angular_velocity_after_y", "rad/s", "subject's angular velocity, y component, after the first contact (as angular_velocity_after_x)", true, true},
     MetricInfo{"angular_velocity_after_z", "rad/s", "subject's angular velocity, z component, after the first contact (as angular_velocity_after_x)", true, true},
+    MetricInfo{"tangential_force_max", "N",
+               "largest tangential force of the subject's first contact with the compared partner "
+               "(its traced force less its weight, projected on the contact plane; the scene must "
+               "hold only the subject and its partner)", true, true},
     MetricInfo{"deceleration", "m/s²",
                "minus the least-squares slope of the subject's tangential speed while the compared "
                "contact slides (slip > 1 % of its initial value)", true, true},

@@ -16,7 +16,7 @@ namespace {
 /// decelerations, spins and works; absolute for the dimensionless restitutions and amplitude
 /// error, and for the rebound angle (degrees, whose zero is not special); both for end-state
 /// velocity components.
-constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 21> kDefaults{{
+constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 22> kDefaults{{
     {"contact_duration", {1e-3, 0.0}},
     {"restitution", {0.0, 1e-3}},
     {"max_overlap", {1e-3, 0.0}},
@@ -27,6 +27,8 @@ constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 21> kDefault
     {"rebound_angle", {0.0, 0.05}},
     {"spin_after", {1e-3, 0.0}},
     {"deceleration", {1e-3, 0.0}},
+    // A frictionless contact's reference is 0: the floor is a force far below any friction here.
+    {"tangential_force_max", {1e-3, 1e-9}},
     // End-state components: relative, with a floor for a component whose reference is zero
     // (motion in a plane), 1 µm/s and 1e-4 rad/s, far below what the canonical impacts resolve.
     {"velocity_after_x", {1e-3, 1e-6}},

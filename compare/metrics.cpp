@@ -283,6 +283,7 @@ double from_trace(const std::string& name, const cases::Scene& scene, const case
   if (name == "rebound_angle") return motion::rebound_angle(scene, trace).value_or_throw<MetricProblem>();
   if (name == "spin_after") return motion::spin_after(scene, trace).value_or_throw<MetricProblem>();
   if (name == "deceleration") return motion::deceleration(scene, trace).value_or_throw<MetricProblem>();
+  if (name == "tangential_force_max") return motion::tangential_force_max(scene, trace).value_or_throw<MetricProblem>();
   if (const auto e = motion::end_state_metric(name, scene, trace)) return e->value_or_throw<MetricProblem>();
   if (const auto c = cohesion_metric(name, scene, trace)) return c->value ? *c->value : throw MetricProblem(c->problem);
   if (const auto b = breakup_metric(name, scene, run)) return b->value ? *b->value : throw MetricProblem(b->problem);

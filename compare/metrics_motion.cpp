@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "compare/metrics_motion.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -10,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "compare/trace_analysis.hpp"
+#include "dem/particles/particles.hpp"
 
 namespace comparison::motion {
 namespace {
@@ -246,6 +248,33 @@ std::optional<MotionMetric> end_state_metric(const std::string& name, const case
     return state_after(scene, trace, angular, axis);
   }
   return std::nullopt;
+}
+
+MotionMetric tangential_force_max(const cases::Scene& scene, const cases::Trace& trace) {
+  return guarded([&] {
+    if (scene.particles.size() + scene.walls.size() != 2) {
+      throw Problem(fmt::format("the scene has {} particles and {} walls; the traced force is the "
+                                "compared contact's force only in a scene of the subject and its "
+                                "partner alone",
+                                scene.particles.size(), scene.walls.size()));
+    }
+    if (scene.fluid) throw Problem("a fluid acts on the subject: its traced force is not the contact force alone");
+    const ContactKinematics k(scene, trace);
+    const ContactInterval c = k.first_contact_interval();
+    const std::size_t s = subject_of(scene);
+    const cases::ParticleSpec& p = scene.particles.at(s);
+    const double mass = dem::sphere_mass(scene.materials.at(p.material).density, p.radius);
+    const Vec weight = scale(scene.gravity, mass);
+    const auto& fx = column(trace, cases::particle_column(s, "fx"));
+    const auto& fy = column(trace, cases::particle_column(s, "fy"));
+    const auto& fz = column(trace, cases::particle_column(s, "fz"));
+    double largest = 0.0;
+    for (std::size_t row = c.last_before + 1; row < c.first_after; ++row) {
+      const Vec contact = sub(Vec{fx[row], fy[row], fz[row]}, weight);
+      largest = std::max(largest, norm(tangential(contact, k.normal(row))));
+    }
+    return largest;
+  });
 }
 
 MotionMetric deceleration(const cases::Scene& scene, const cases::Trace& trace) {

@@ -50,6 +50,14 @@ MotionMetric state_after(const cases::Scene& scene, const cases::Trace& trace, b
 std::optional<MotionMetric> end_state_metric(const std::string& name, const cases::Scene& scene,
                                              const cases::Trace& trace);
 
+/// Largest tangential contact force [N] of the subject's first contact with the compared
+/// partner: max over the rows in contact of |F − (F·n) n|, F the subject's traced total force
+/// less its weight m g, n the contact normal at that row (the maximum over the samples, no
+/// refinement). The traced force is the contact force only when the compared contact is the
+/// subject's one interaction, so the scene must hold just the subject and its partner, and no
+/// fluid; otherwise the metric has a problem instead of a value.
+MotionMetric tangential_force_max(const cases::Scene& scene, const cases::Trace& trace);
+
 /// Relative slip speed below which a contact counts as no longer sliding, as a fraction of
 /// the slip speed at the first row of the contact.
 inline constexpr double kSlidingThreshold = 1e-2;

@@ -506,6 +506,7 @@ cases::RunResult HertzSolver::run(const cases::Scene& scene) const {
       result.exact_metrics["restitution"] = summary.restitution;
       result.exact_metrics["max_overlap"] = summary.max_overlap;
       result.exact_metrics["max_force"] = summary.max_force;
+      result.exact_metrics["tangential_force_max"] = 0.0;  // frictionless: no tangential force
       result.conventions["exact metrics"] = fmt::format(
           "contact from t = {:.9g} s: {}", summary.start,
           summary.closed_form ? "closed forms t_c = 2.868266 (m*²/(R* E*² v))^{1/5}, restitution 1, "

@@ -106,6 +106,26 @@ class GrossSlidingImpact {
     const double rate = s_.stiffness * k.velocity + s_.damping * k.acceleration;
     return normal_force(tau) >= 0.0 ? rate : -rate;
   }
+  /// Largest friction-limit basis over the contact, and whether it falls on the first instant
+  /// (where a spring_coulomb spring has not yet stretched to μ·basis). With β = η/(2m),
+  /// F(τ) = (v/ω) e^{−βτ} [(k − ηβ) sin ωτ + ηω cos ωτ] is stationary where ωτ + φ = atan2(ω, β)
+  /// (its peak; + π for its tensile extreme), φ = atan2(ηω, k − ηβ); k δ peaks at ωτ = atan2(ω, β).
+  struct Peak {
+    double basis = 0.0;
+    bool at_start = false;
+  };
+  [[nodiscard]] Peak largest_basis() const {
+    const double decay = s_.damping / (2.0 * s_.mass);
+    const double w = frequency_;
+    const double phi = std::atan2(s_.damping * w, s_.stiffness - s_.damping * decay);
+    const double rise = std::atan2(w, decay);
+    Peak p{basis(0.0), true};
+    for (const double tau : {(rise - phi) / w, (rise - phi + std::numbers::pi) / w, rise / w}) {
+      const double b = basis(std::clamp(tau, 0.0, duration_));
+      if (b > p.basis) p = {b, false};
+    }
+    return p;
+  }
   /// Lever arm of the friction force about the centre.
   [[nodiscard]] double lever(double tau) const noexcept {
     return s_.lever_is_radius ? s_.radius : s_.radius - 0.5 * normal_.at(tau).position;
@@ -286,6 +306,11 @@ void add_exact_metrics(const GrossSlidingImpact& impact, const SphereWallScene& 
     const Vec3 u_after = v_t - s.radius * end.spin.cross(n);
     result.exact_metrics["tangential_restitution"] = -u_after.dot(t_hat) / x0.norm();
     result.exact_metrics["spin_after"] = end.spin.dot(t_hat.cross(-n));
+    // Gross sliding: |F_t| = μ·basis throughout, except where the spring is still stretching at
+    // the first instant; a peak there is left to the trace.
+    if (const auto peak = impact.largest_basis(); !peak.at_start) {
+      result.exact_metrics["tangential_force_max"] = impact.friction() * peak.basis;
+    }
   }
 }
 

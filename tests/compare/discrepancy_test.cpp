@@ -128,9 +128,10 @@ namespace discrepancy_test {
 TEST(DefaultTolerances, EveryCataloguedMetricHasOneOfItsKindAndMatchedRowsUseOneE8) {
   for (const auto& m : cases::metric_catalogue()) {
     const cases::Tolerance t = comparison::default_tolerance(m.name);
-    // End-state components are relative with an absolute floor (a component that is 0 in the
-    // reference); every other metric has exactly one kind.
-    if (m.name.find("velocity_after_") != std::string_view::npos) {
+    // End-state components and the tangential force peak are relative with an absolute floor
+    // (a component, or a frictionless contact's force, that is 0 in the reference); every other
+    // metric has exactly one kind.
+    if (m.name.find("velocity_after_") != std::string_view::npos || m.name == "tangential_force_max") {
       EXPECT_EQ(t.rel, 1e-3) << m.name;
       EXPECT_GT(t.abs, 0.0) << m.name;
       EXPECT_EQ(comparison::matched_tolerance_for(cases::Scene{}, std::string(m.name)).abs, 1e-8) << m.name;

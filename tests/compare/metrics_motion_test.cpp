@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Motion metrics (tangential restitution, rebound angle, spin after, deceleration) on synthetic
-// traces whose values are known by construction; problems instead of NaN.
+// Motion metrics (tangential restitution, rebound angle, spin after, end states, tangential force
+// max, deceleration) on synthetic traces whose values are known by construction; problems
+// instead of NaN.
 #include <cmath>
 #include <numbers>
 
@@ -187,3 +188,69 @@ TEST(MotionMetrics, MissingContactSettingIsAProblem) {
 }
 
 }  // namespace
+
+namespace metrics_motion_test {
+
+/// Mass of the test sphere (r = 0.01 m, ρ = 1000 kg/m³).
+double dem_mass() { return 4.0 / 3.0 * std::numbers::pi * 1000.0 * kRadius * kRadius * kRadius; }
+
+/// The floor scene with a material (ρ = 1000) and a tilted gravity, so that the weight has a
+/// part along the wall.
+cases::Scene weighted_floor_scene() {
+  cases::Scene s = floor_scene({"tangential_force_max"});
+  dem::MaterialProperties m;
+  m.name = "sphere";
+  m.density = 1000.0;
+  s.materials = {m};
+  s.gravity = {3.0, 0.0, -9.81};
+  return s;
+}
+
+/// impact_trace with forces: the weight throughout, plus the contact force (−2 + 0.3 k, 0.2 k',
+/// 5) on the rows in contact, and a large force on one row after the contact.
+cases::Trace forced_trace(double mass) {
+  cases::Trace tr = impact_trace({1, 0, -1}, {}, {1, 0, 1}, {});
+  cases::Trace out = floor_trace_layout();
+  for (std::size_t k = 0; k < tr.rows(); ++k) {
+    std::vector<double> row;
+    for (std::size_t c = 0; c < tr.columns().size(); ++c) row.push_back(tr.values(c)[k]);
+    const double in_contact = row[13] > 0.0 ? 1.0 : 0.0;
+    const double i = static_cast<double>(k) - 10.0;
+    row[10] = mass * 3.0 + in_contact * (-2.0 + 0.3 * i) + (k == 25 ? 100.0 : 0.0);
+    row[11] = in_contact * 0.2 * i;
+    row[12] = -mass * 9.81 + in_contact * 5.0;
+    out.append_row(row);
+  }
+  return out;
+}
+
+TEST(TangentialForceMax, IsTheLargestInPlaneContactForceLessTheWeight) {
+  const cases::Scene scene = weighted_floor_scene();
+  const double mass = dem_mass();
+  const auto f = comparison::motion::tangential_force_max(scene, forced_trace(mass));
+  ASSERT_TRUE(f.value) << f.problem;
+  // Rows 10–19 are in contact: |(−2 + 0.3 i, 0.2 i)| is largest at i = 0 (2.0); the weight's
+  // tangential part (3 m) and the 100 N after the contact do not count.
+  EXPECT_NEAR(*f.value, 2.0, 1e-12);
+  cases::RunResult run;
+  run.status = cases::RunStatus::ok;
+  run.trace = forced_trace(mass);
+  const auto m = comparison::compute_metrics(scene, run, nullptr);
+  ASSERT_TRUE(m.at("tangential_force_max").value) << m.at("tangential_force_max").problem;
+  EXPECT_EQ(*m.at("tangential_force_max").value, *f.value);
+}
+
+TEST(TangentialForceMax, NeedsASceneOfTheSubjectAndItsPartnerAlone) {
+  cases::Scene crowded = weighted_floor_scene();
+  crowded.particles.push_back(crowded.particles[0]);
+  const auto a = comparison::motion::tangential_force_max(crowded, forced_trace(dem_mass()));
+  EXPECT_FALSE(a.value);
+  EXPECT_NE(a.problem.find("partner alone"), std::string::npos) << a.problem;
+  cases::Scene fluid = weighted_floor_scene();
+  fluid.fluid.emplace();
+  const auto b = comparison::motion::tangential_force_max(fluid, forced_trace(dem_mass()));
+  EXPECT_FALSE(b.value);
+  EXPECT_NE(b.problem.find("fluid"), std::string::npos) << b.problem;
+}
+
+}  // namespace metrics_motion_test

@@ -2,6 +2,7 @@
 // The analytic oblique-impact solver against the rigid-body closed forms of gross sliding, its
 // quadrature against the closed-form impulse ∫|F_n| dt, its refusal of sticking impacts, and the
 // in-house core converging to it as Δt → 0.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "cases/case_loader.hpp"
+#include "compare/metrics.hpp"
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/analytic/linear_oscillator.hpp"
@@ -110,6 +112,30 @@ TEST(AnalyticObliqueImpact, DampedImpulseIsMuTimesIntegralOfAbsoluteNormalForceI
   EXPECT_NEAR(r.trace.column("p0.vx")->back(), v_t - mu * impulse / kMass, 1e-13);
   EXPECT_NEAR(r.trace.column("p0.wy")->back(), mu * impulse * kRadius / (0.4 * kMass * kRadius * kRadius), 1e-10);
   EXPECT_NEAR(r.exact_metrics.at("restitution"), e, 1e-13);
+}
+
+TEST(AnalyticObliqueImpact, TangentialForcePeakIsMuTimesTheLargestNormalForce) {
+  // Gross sliding: |F_t| = μ |k δ + η δ'|; its peak found here by a fine scan of the oscillator.
+  const double mu = 0.2, e = 0.8;
+  const cases::RunResult r = analytic(oblique_scene(60.0, mu, e, false));
+  const double v_n = 2.0;
+  const double eta = dem::laws::restitution_damping_coefficient(e, kMass, kStiffness);
+  const reference::analytic::LinearOscillator osc(kMass, eta, kStiffness, 0.0, v_n);
+  const double t_c = dem::laws::linear_contact_duration(kStiffness, kMass, eta);
+  double peak = 0.0;
+  for (int i = 0; i <= 200000; ++i) {
+    const auto k = osc.at(t_c * i / 200000.0);
+    peak = std::max(peak, std::abs(kStiffness * k.position + eta * k.velocity));
+  }
+  EXPECT_NEAR(r.exact_metrics.at("tangential_force_max"), mu * peak, 1e-9 * mu * peak);
+  EXPECT_NEAR(mu * peak, 7.4338, 1e-4);  // the figure the canonical case's tolerance note states
+  // The core, from its trace, within the half-step dashpot error at Δt = 1e-6 s.
+  cases::Scene scene = oblique_scene(60.0, mu, e, false);
+  scene.compare.metrics = {"tangential_force_max"};
+  cases::RunResult core = reference::run_engine(reference::InhouseEngine{}, scene, {});
+  const auto m = comparison::compute_metrics(scene, core, nullptr);
+  ASSERT_TRUE(m.at("tangential_force_max").value) << m.at("tangential_force_max").problem;
+  EXPECT_NEAR(*m.at("tangential_force_max").value, mu * peak, 1e-3 * mu * peak);
 }
 
 TEST(AnalyticObliqueImpact, ContactPointLeverReducesTheSpinByTheForceWeightedOverlap) {
