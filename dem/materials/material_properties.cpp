@@ -44,6 +44,8 @@ const std::array kSpecs{
                  ValueRange{1.0, kInf, false, true}, &MaterialProperties::interaction_ratio, nullptr, MixingRule::max},
     PropertySpec{"damping_coefficient", "kg/s", "normal dashpot coefficient η given directly",
                  ValueRange{0.0, kInf, false, true}, &MaterialProperties::damping_coefficient, &PairProperties::damping_coefficient, MixingRule::arithmetic},
+    PropertySpec{"viscous_modulus", "Pa·s", "dissipative modulus E' of the Kuwabara–Kono dashpot η = 2 E' √(R* δ) (eq 3.14)",
+                 ValueRange{0.0, kInf, false, true}, &MaterialProperties::viscous_modulus, &PairProperties::viscous_modulus, MixingRule::arithmetic},
     PropertySpec{"damping_rate", "1/s", "mass-scaled normal dashpot η/m*",
                  ValueRange{0.0, kInf, false, true}, &MaterialProperties::damping_rate, &PairProperties::damping_rate, MixingRule::arithmetic},
     PropertySpec{"viscoelastic_damping", "1/(m·s)", "η_0 of the viscoelastic dashpot η = η_0 a m*",

@@ -37,6 +37,7 @@ struct MaterialProperties {
   std::optional<double> surface_energy;          ///< γ [J/m²], per surface (eq 3.34)
   std::optional<double> interaction_ratio;       ///< λ = r̂/r [-], effect radius default
   std::optional<double> damping_coefficient;     ///< η [kg/s], dashpot given directly
+  std::optional<double> viscous_modulus;         ///< E' [Pa·s], Kuwabara–Kono dissipative modulus (eq 3.14)
   std::optional<double> damping_rate;            ///< η/m* [1/s], mass-scaled dashpot
   std::optional<double> viscoelastic_damping;    ///< η_0 [1/(m·s)], η = η_0 a m*
   std::optional<double> relative_permittivity;   ///< ε_r [-] of the medium (eq 3.36)
@@ -65,6 +66,7 @@ struct PairProperties {
   std::optional<double> cohesive_stiffness;
   std::optional<double> surface_energy;
   std::optional<double> damping_coefficient;
+  std::optional<double> viscous_modulus;
   std::optional<double> damping_rate;
   std::optional<double> viscoelastic_damping;
   std::optional<double> relative_permittivity;

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,26 @@ struct YadePairParameters {
   double cohesive_stiffness = 0.0;  ///< k_c [N/m] of the per-step Python force (linear cohesion)
 };
 
+/// A YADE material written for one wall: its base scene material (density, label, pair values)
+/// with its own young and poisson.
+struct YadeWallMaterial {
+  std::size_t base = 0;
+  double young = 0.0;    ///< FrictMat.young [Pa]; negative for a rigid wall
+  double poisson = 0.0;  ///< FrictMat.poisson
+};
+
+/// young and poisson of a wall's YADE material for which Ip2_FrictMat_FrictMat_MindlinPhys,
+/// against a sphere of (young_s, poisson_s) at the wall's R = r/2 (Ig2_Wall_Sphere_ScGeom gives
+/// the wall the sphere's radius), yields k_no = 4/3 E* √r and k_so = 8 G* √r, the sphere–plane
+/// contact with R* = r: YADE's E* and G* must be √2 times the case's. With c = (1 − ν²)/E and
+/// d = (2 − ν)/G per material (YADE's mixing is 1/E* = c_s + c_w, 1/G* = d_s + d_w), the wall
+/// needs c′ = 1/(√2 E*) − c_s and d′ = 1/(√2 G*) − d_s, solved by ν′ = (ρ − 4)/(ρ − 2),
+/// ρ = d′/c′, and E′ = (1 − ν′²)/c′. E′ < 0 when the wall is stiffer than that (a rigid wall:
+/// E′ = −(2 + √2) E_s, ν′ = ν_s); YADE takes it as given. Empty `shear_modulus`: no tangential
+/// law, ν′ = ν_s. Returns nothing when no finite solution exists.
+[[nodiscard]] std::optional<YadeWallMaterial> compensated_wall_material(
+    double young_s, double poisson_s, double effective_modulus, std::optional<double> effective_shear_modulus);
+
 /// How the scene's contact model and walls are expressed in YADE 2023.02a.
 struct YadeModelMapping {
   YadeLaw law = YadeLaw::frict;
@@ -40,7 +61,12 @@ struct YadeModelMapping {
   double surface_energy = 0.0;                 ///< Mindlin DMT gamma (one value for every pair); 0: none
   bool python_cohesion = false;                ///< linear cohesion as a per-step Python force
   double aabb_enlarge = 1.0;                   ///< largest r̂/r: the collider's box enlargement for it
-  std::vector<YadePairParameters> pairs;       ///< every material pair a ≤ b
+  std::vector<YadePairParameters> pairs;       ///< every material pair a ≤ b (and each wall material's copies)
+  /// O.materials added after the scene's (ids scene.materials.size() + k), one per plane wall
+  /// under Hertz–Mindlin: the wall's material with young and poisson chosen so that YADE's
+  /// k_no and k_so at R = r/2 equal the case's at R* = r (see compensated_wall_material).
+  std::vector<YadeWallMaterial> wall_materials;
+  std::vector<std::size_t> wall_material_ids;  ///< O.materials id per scene wall (the scene's material unless compensated)
   std::vector<std::string> reasons;            ///< why the model cannot be expressed (empty: it can)
   std::vector<std::string> warnings;           ///< where YADE's law differs from the workbench's
   std::map<std::string, std::string> conventions;  ///< "contact <slot>" → registry mapping text

@@ -74,6 +74,12 @@ void write_materials(std::string& s, const cases::Scene& scene, const YadeRunPla
                    py_float(scene.materials[k].density), py_float(at(m.material_young, 1.0)),
                    py_float(at(m.material_poisson, 0.25)), py_float(at(m.material_damping_ratio, 0.0)));
   }
+  for (const YadeWallMaterial& w : m.wall_materials) {
+    fmt::format_to(out, "    ({}, {}, {}, {}, {}),  # wall material: R* = r compensation\n",
+                   py_string(scene.materials[w.base].name + " (wall)"), py_float(scene.materials[w.base].density),
+                   py_float(w.young), py_float(w.poisson),
+                   py_float(w.base < m.material_damping_ratio.size() ? m.material_damping_ratio[w.base] : 0.0));
+  }
   s += "]\n"
        "def _append_materials():\n"
        "    for k, (label, density, young, poisson, betan) in enumerate(MATERIALS):\n";
@@ -167,7 +173,7 @@ void write_python_cohesion(std::string& s, const cases::Scene& scene, const Yade
 }
 
 /// Plane walls as utils.wall bodies after the particles (body id = particle count + wall index).
-void write_walls(std::string& s, const cases::Scene& scene) {
+void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   auto out = std::back_inserter(s);
   s += "# Plane walls, body id = len(PARTICLES) + wall index: (position along the axis, axis, sense,\n"
        "# material). sense = +1/-1: only the side the case's normal points to interacts.\n"
@@ -179,7 +185,7 @@ void write_walls(std::string& s, const cases::Scene& scene) {
       throw std::invalid_argument(fmt::format("walls[{}]: the YADE driver writes axis-aligned plane walls only", k));
     }
     fmt::format_to(out, "    ({}, {}, {}, {}),\n", py_float(w.point[static_cast<std::size_t>(a.axis)]),
-                   a.axis, a.sense, w.material);
+                   a.axis, a.sense, k < plan.model.wall_material_ids.size() ? plan.model.wall_material_ids[k] : w.material);
   }
   s += "]\n"
        "def _append_walls():\n"
@@ -319,7 +325,7 @@ std::string write_yade_script(const cases::Scene& scene, const YadeRunPlan& plan
   write_header(s, scene, plan);
   write_materials(s, scene, plan);
   write_particles(s, scene, plan);
-  write_walls(s, scene);
+  write_walls(s, scene, plan);
   if (plan.model.python_cohesion) write_python_cohesion(s, scene, plan);
   if (plan.calibration) s += write_calibration_block(*plan.calibration);
   write_recorders(s, scene, plan);

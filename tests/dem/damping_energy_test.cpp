@@ -17,8 +17,8 @@ void dissipative_properties(dem::SimulationSetup& s) {
   dem::MaterialProperties& m = s.materials[0];
   m.restitution = 0.5;
   m.normal_stiffness = 1e5;
-  // kuwabara_kono reads it as E' [Pa·s], lammps_velocity as η [kg/s].
-  m.damping_coefficient = s.model.damping == "kuwabara_kono" ? 200.0 : 5.0;
+  m.damping_coefficient = 5.0;  // lammps_velocity's η [kg/s]
+  m.viscous_modulus = 200.0;    // kuwabara_kono's E' [Pa·s]
   m.damping_rate = 2000.0;       // [1/s]
   m.viscoelastic_damping = 1e6;  // [1/(m·s)]
 }

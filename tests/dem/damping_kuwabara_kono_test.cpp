@@ -14,7 +14,7 @@ namespace damping_kuwabara_kono_test {
 
 TEST(KuwabaraKonoDamping, CoefficientIsTwoEPrimeSqrtRStarDelta) {
   dem::PairProperties p;
-  p.damping_coefficient = 250.0;  // E' [Pa·s]
+  p.viscous_modulus = 250.0;  // E' [Pa·s]
   const dem::KuwabaraKonoDamping d = dem::KuwabaraKonoDamping::from_pair(p);
   dem::ContactGeometry g{};
   g.reduced_radius = 5e-3;
@@ -40,7 +40,7 @@ TEST(KuwabaraKonoCollision, WeakDampingLosesTheWorkOfTheDashpotAlongTheElasticPa
     const double tc = hertz_test::elastic_duration(v);
     const double dt = tc / 2000.0;
     dem::Simulation sim(hertz_test::impact(dem::SchemeId::rk4, dt, "kuwabara_kono",
-                                           [](dem::SimulationSetup& s) { s.materials[0].damping_coefficient = 20.0; },
+                                           [](dem::SimulationSetup& s) { s.materials[0].viscous_modulus = 20.0; },
                                            v));
     while (sim.time() < 12.0 * dt + 1.5 * tc) sim.step();
     const double loss = 1.0 + sim.state().velocity(0, 0) / v;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Walls as users write them, through the real codes: a rigid wall (no compliance), a material per
-// wall and a velocity aimed at a wall, each checked against closed forms written out here, not
+// wall, a velocity aimed at a wall and Hertz walls on YADE, each checked against closed forms written out here, not
 // taken from the analytic engine or the core's mixing.
 #include <cmath>
 #include <numbers>
@@ -121,12 +121,31 @@ TEST(WallMaterialEngines, YadeGivesEachWallItsOwnMaterialAndRigidity) {
       t, reference::run_engine(reference::YadeEngine{}, t.scene, {demwb_yade_test::scratch("two-walls"), 120.0}));
 }
 
-TEST(RigidWallEngines, YadeDeclinesHertzAgainstARigidWallWithItsReason) {
+TEST(RigidWallEngines, YadeReproducesTheRigidWallClosedFormThroughItsCompensatingMaterial) {
   DEMWB_REQUIRE_YADE();
   const cases::Scene scene = demwb_lammps_test::canonical("rigid_wall_hertz");
-  const auto support = reference::YadeEngine{}.supports(scene);
-  ASSERT_FALSE(support.reasons.empty());
-  EXPECT_NE(support.reasons.front().find("rigid material 'steel'"), std::string::npos) << support.reasons.front();
+  const RigidHertzClosedForm exact = rigid_hertz_closed_form();
+  const cases::RunResult run =
+      reference::run_engine(reference::YadeEngine{}, scene, {demwb_yade_test::scratch("rigid-hertz"), 120.0});
+  ASSERT_EQ(run.status, cases::RunStatus::ok) << run.reason << "\n" << run.log_tail;
+  EXPECT_NEAR(metric(scene, run, 0, 0, "contact_duration"), exact.duration, 1e-4 * exact.duration);
+  EXPECT_NEAR(metric(scene, run, 0, 0, "max_overlap"), exact.max_overlap, 1e-4 * exact.max_overlap);
+  EXPECT_EQ(run.conventions.count("wall contact radius"), 1U);
+}
+
+TEST(RigidWallEngines, YadeRunsClippedTsujiAgainstACompliantWallAsTheCoreDoes) {
+  DEMWB_REQUIRE_YADE();
+  // Compliant wall (E = 2e8, ν = 0.25), tsuji ε = 0.7 with clamp_tensile: the same law in both
+  // codes, so the native runs agree at round-off, not merely within a tolerance.
+  const cases::Scene scene = cases::load_case(std::string(DEMWB_TEST_DATA_DIR) + "/walls/hertz_wall_tsuji.toml");
+  const auto core = reference::run_engine(reference::InhouseEngine{}, scene, {});
+  const auto yade = reference::run_engine(reference::YadeEngine{}, scene, {demwb_yade_test::scratch("wall-tsuji"), 120.0});
+  ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
+  for (const char* name : {"contact_duration", "max_overlap", "max_force", "restitution"}) {
+    const double a = metric(scene, core, 0, 0, name), b = metric(scene, yade, 0, 0, name);
+    EXPECT_NEAR(b, a, 1e-12 * std::abs(a)) << name;
+  }
+  EXPECT_LT(metric(scene, core, 0, 0, "restitution"), 0.75);  // damped: the dashpot acted
 }
 
 }  // namespace wall_options_engines_test

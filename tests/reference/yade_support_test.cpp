@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What the YADE driver can express (phase 1), and why not, without running YADE.
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -57,14 +59,75 @@ TEST(YadeSupport, Phase2CanonicalCasesAreSupportedAndJkrIsNot) {
   EXPECT_TRUE(mentions(jkr, "YADE 2023.02a has no JKR law")) << jkr.explain();
 }
 
-TEST(YadeSupport, HertzAgainstAWallIsRefusedForMindlinsWallRadius) {
+/// YADE's Mindlin stiffness factors against a wall material: E* and G* as
+/// Ip2_FrictMat_FrictMat_MindlinPhys forms them (G = E/(2(1 + ν)) per material).
+struct YadeMix {
+  double e_star;
+  double g_star;
+};
+YadeMix yade_mix(double e_s, double nu_s, double e_w, double nu_w) {
+  const double g_s = e_s / (2.0 * (1.0 + nu_s)), g_w = e_w / (2.0 * (1.0 + nu_w));
+  return {reference::yade::yade_effective_modulus(e_s, nu_s, e_w, nu_w),
+          1.0 / ((2.0 - nu_s) / g_s + (2.0 - nu_w) / g_w)};
+}
+
+TEST(YadeSupport, AHertzWallGetsAMaterialThatRestoresRStarEqualToR) {
+  // Sphere E = 8.4e7, ν = 0.3 against (a) a compliant wall of the same material and (b) a rigid
+  // one: YADE's R = r/2 needs E* and G* √2 times the case's.
+  const double e_s = 8.4e7, nu_s = 0.3;
+  const double g_s = e_s / (2.0 * 1.3);
+  struct Wall {
+    double e_star, g_star;
+  };
+  for (const Wall w : {Wall{e_s / (2.0 * 0.91), 1.0 / (2.0 * (2.0 - nu_s) / g_s)},
+                       Wall{e_s / 0.91, g_s / (2.0 - nu_s)}}) {
+    const auto m = reference::yade::compensated_wall_material(e_s, nu_s, w.e_star, w.g_star);
+    ASSERT_TRUE(m.has_value());
+    const YadeMix mix = yade_mix(e_s, nu_s, m->young, m->poisson);
+    EXPECT_NEAR(mix.e_star * std::sqrt(0.005 / 2.0), w.e_star * std::sqrt(0.005), 1e-14 * w.e_star * 0.1);
+    EXPECT_NEAR(mix.g_star * std::sqrt(0.005 / 2.0), w.g_star * std::sqrt(0.005), 1e-14 * w.g_star * 0.1);
+  }
+  // The rigid wall's material: E′ = −(2 + √2) E_s, ν′ = ν_s.
+  const auto rigid = reference::yade::compensated_wall_material(e_s, nu_s, e_s / 0.91, g_s / (2.0 - nu_s));
+  EXPECT_NEAR(rigid->young, -(2.0 + std::sqrt(2.0)) * e_s, 1e-6);
+  EXPECT_NEAR(rigid->poisson, nu_s, 1e-14);
+  // Without a tangential law only E* matters; ν′ = ν_s.
+  const auto normal_only = reference::yade::compensated_wall_material(e_s, nu_s, e_s / 0.91, std::nullopt);
+  EXPECT_EQ(normal_only->poisson, nu_s);
+}
+
+TEST(YadeSupport, HertzAgainstAWallIsMappedWithoutFrictionAndRefusedWithIt) {
   cases::Scene scene = cases::load_case(kCanonical / "hertz_collision.toml");
   cases::WallSpec floor;
   floor.name = "floor";
   floor.normal = {0.0, 0.0, 1.0};
+  floor.point = {0.0, 0.0, -1.0};
   scene.walls.push_back(floor);
+  EXPECT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
+  const auto mapping = reference::yade::map_contact_model(scene);
+  ASSERT_EQ(mapping.wall_materials.size(), 1U);
+  ASSERT_EQ(mapping.wall_material_ids.size(), 1U);
+  EXPECT_EQ(mapping.wall_material_ids[0], scene.materials.size());  // its own O.materials entry
+  scene.model.tangential = "mindlin_8g";
+  scene.materials[0].friction = 0.3;
+  scene.materials[0].tangential_damping_ratio = 0.0;
   const auto s = offline_engine().supports(scene);
-  EXPECT_TRUE(mentions(s, "R* = r/2 instead of r")) << s.explain();
+  EXPECT_TRUE(mentions(s, "lever arm r − δ")) << s.explain();
+}
+
+TEST(YadeSupport, TsujiMapsOnlyWhenTheNormalForceIsClipped) {
+  cases::Scene scene = cases::load_case(kCanonical / "hertz_damped_collision.toml");
+  ASSERT_EQ(scene.model.damping, "tsuji");
+  const auto unclipped = offline_engine().supports(scene);
+  EXPECT_TRUE(mentions(unclipped, "clips the normal force")) << unclipped.explain();
+  scene.model.clamp_tensile = true;
+  const auto mapping = reference::yade::map_contact_model(scene);
+  ASSERT_TRUE(mapping.reasons.empty()) << mapping.reasons.front();
+  ASSERT_FALSE(mapping.pairs.empty());
+  // β_n = α/(2√1.5), α = −√5 ln ε/√(π² + ln² ε) for the case's ε = 0.5.
+  const double l = std::log(0.5);
+  const double alpha = -std::sqrt(5.0) * l / std::sqrt(std::numbers::pi * std::numbers::pi + l * l);
+  EXPECT_NEAR(mapping.pairs[0].damping_ratio, alpha / (2.0 * std::sqrt(1.5)), 1e-15);
 }
 
 TEST(YadeSupport, WallAxisAndSenseFollowTheNormal) {

@@ -11,13 +11,12 @@
 namespace dem {
 
 /// Damping sub-model `kuwabara_kono`: η = 2 E' √(R* δ) (thesis eq 3.14; Kuwabara & Kono 1987,
-/// Brilliantov et al. 1996). The dissipative modulus E' [Pa·s] is read from the pair property
-/// `damping_coefficient`, whose number is taken as E' (its unit label "kg/s" does not apply here).
+/// Brilliantov et al. 1996), with the pair's dissipative modulus E' [Pa·s] (`viscous_modulus`).
 struct KuwabaraKonoDamping {
   static constexpr std::string_view kKeyword = "kuwabara_kono";
   static constexpr std::string_view kDescription =
-      "viscoelastic dashpot η = 2 E' √(R* δ) (eq 3.14); E' [Pa·s] given as damping_coefficient";
-  static constexpr std::array<std::string_view, 1> kProperties{"damping_coefficient"};
+      "viscoelastic dashpot η = 2 E' √(R* δ) (eq 3.14); E' [Pa·s] is viscous_modulus";
+  static constexpr std::array<std::string_view, 1> kProperties{"viscous_modulus"};
   static constexpr std::string_view kLammps =
       "`damping viscoelastic` with η₀ = 2 E'/m* per type pair (LAMMPS: η = η₀ a m*, the same "
       "a-proportional form; one m* per type pair, so one type per size class)";
@@ -28,8 +27,8 @@ struct KuwabaraKonoDamping {
 
   /// Sub-model for one material pair.
   static KuwabaraKonoDamping from_pair(const PairProperties& pair) {
-    return {required_property(pair, &PairProperties::damping_coefficient, "damping_coefficient",
-                              "damping = 'kuwabara_kono' (as E' in Pa·s)")};
+    return {required_property(pair, &PairProperties::viscous_modulus, "viscous_modulus",
+                              "damping = 'kuwabara_kono'")};
   }
   /// Dashpot coefficient η [kg/s] for this contact (0 when δ ≤ 0).
   [[nodiscard]] double coefficient(const ContactGeometry& g, const NormalResponse&) const noexcept {

@@ -26,9 +26,9 @@ struct TsujiDamping {
       "0.3666514 for ε = 0.5, 0.8621222 for ε = 0.9; LAMMPS 2021 measured 0.49996 and 0.90000), "
       "no limit_damping";
   static constexpr std::string_view kYade =
-      "no exact counterpart: Ip2_FrictMat_FrictMat_MindlinPhys(betan = α/(2√1.5)) has the same "
-      "dashpot but Law2_ScGeom_MindlinPhys_Mindlin clips F_n ≥ 0 (matches only with "
-      "clamp_tensile = true, rebound then 0.5503 for ε = 0.5)";
+      "with clamp_tensile = true: Ip2_FrictMat_FrictMat_MindlinPhys(betan = α/(2√1.5)), the same "
+      "dashpot, exact (rebound 0.5503 for ε = 0.5); unclipped it has no counterpart, since "
+      "Law2_ScGeom_MindlinPhys_Mindlin clips F_n ≥ 0";
 
   double restitution;  ///< ε ∈ (0, 1]
   double factor;       ///< α(ε) [-]
