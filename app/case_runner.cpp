@@ -11,6 +11,7 @@
 #include "cases/case_library.hpp"
 #include "cases/catalogue.hpp"
 #include "cases/output_budget.hpp"
+#include "compare/time_step_refinement.hpp"
 #include "store/scene_json.hpp"
 
 namespace app {
@@ -143,6 +144,35 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
   return result;
 }
 
+/// Checks the time step of every native reference-code run that was made here (not a baseline):
+/// the refined runs go through run_one (cache, scratch directory <engine>/dt-<2^k>).
+void refine_reference_runs(const cases::Scene& scene, std::vector<cases::RunResult>& runs, const RunContext& context) {
+  const cases::RunResult* analytic = nullptr;
+  for (const auto& r : runs) {
+    if (r.engine == "analytic" && r.status == cases::RunStatus::ok) analytic = &r;
+  }
+  for (auto& r : runs) {
+    if (!cases::is_reference_code(r.engine) || r.status != cases::RunStatus::ok || r.source == "baseline") continue;
+    if (scene.compare.metrics.empty()) continue;
+    int level = 0;
+    const auto runner = [&](const cases::Scene& finer) {
+      ++level;
+      RunContext ctx = context;
+      ctx.options.work_dir = context.options.work_dir / fmt::format("{}-dt{}", r.engine, 1 << level);
+      cases::RunResult result = run_one(finer, r.engine, ctx);
+      return result;
+    };
+    r.refinement = comparison::refine_time_step(scene, r, runner, analytic);
+    const auto& f = *r.refinement;
+    r.conventions["time step check"] = fmt::format(
+        "metrics at Δt = {:.6g} s ({} halving{} of the case's Δt; runs down to Δt/{}); each error estimated as "
+        "2|m(Δt) − m(Δt/2)|{}{}",
+        f.timestep, f.halvings, f.halvings == 1 ? "" : "s", 1 << std::min(f.halvings + 1, f.limit),
+        f.limit_reached ? "; the limit was reached with an estimate above a tenth of a tolerance" : "",
+        f.problem.empty() ? "" : "; stopped: " + f.problem);
+  }
+}
+
 }  // namespace
 
 comparison::CaseOutcome run_case(const cases::Scene& input, const std::vector<std::string>& engines,
@@ -170,6 +200,7 @@ comparison::CaseOutcome run_case(const cases::Scene& input, const std::vector<st
     runs.push_back(run_one(scene, name, context));
     if (context.on_engine_done) context.on_engine_done(scene, runs.back());
   }
+  if (context.refine_time_step) refine_reference_runs(scene, runs, context);
   return comparison::evaluate_runs(scene, std::move(runs));
 }
 

@@ -28,6 +28,9 @@ struct RunContext {
   cases::Tier tier = cases::Tier::full;
   std::optional<std::filesystem::path> baselines; ///< directory of committed baselines
   bool wall_times = true;                         ///< false: results.json without wall times and scratch directories
+  /// Check each native reference-code run's time step by halving it (docs/metrics.md,
+  /// "Reference discretisation error"); sweeps, whose ensembles are statistics, turn it off.
+  bool refine_time_step = true;
   /// Called after each engine of a case finished (progress lines); may be called from several
   /// threads at once when cases run concurrently.
   std::function<void(const cases::Scene&, const cases::RunResult&)> on_engine_done;
@@ -38,7 +41,9 @@ struct RunContext {
 /// scene, and when preparation fails every engine is an `error` with the reason. Reference
 /// codes (LAMMPS, YADE) are read from the cache when their result for this scene and version is
 /// there, stored after a successful run, and replaced by the committed baseline (with a warning)
-/// when not installed. Unknown engine names must have been rejected by the caller.
+/// when not installed. Each native reference-code run that ran (or came from the cache) then has
+/// its time step checked by halving (comparison::refine_time_step) when `refine_time_step` is set.
+/// Unknown engine names must have been rejected by the caller.
 comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<std::string>& engines,
                                  const RunContext& context);
 

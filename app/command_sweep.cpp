@@ -48,6 +48,7 @@ sweeps::SweepRun run_job(const sweeps::SweepSpec& spec, const sweeps::SweepPoint
     cases::Scene scene = cases::load_case_text(text, spec.case_file.string(), ctx.load);
     scene.compare.metrics = metrics;
     ctx.options.work_dir = out / "work" / fmt::format("p{:04d}_s{}", point.index, seed);
+    ctx.refine_time_step = false;  // an ensemble's spread, not one run's Δt, is what its rows judge
     const comparison::CaseOutcome o = run_case(scene, engines, ctx);
     for (const auto& r : o.runs) {
       sweeps::SweepRow row{point.index, seed, r.engine, std::string(cases::to_string(r.status)), {}, r.reason};

@@ -62,6 +62,9 @@ void add_run_options(po::options_description& opts) {
       "cache", po::value<std::string>(),
       "reference-result cache directory (default $DEMWB_CACHE_DIR, else $XDG_CACHE_HOME/demwb, else ~/.cache/demwb, else ./.demwb-cache)")(
       "no-cache", "run reference codes every time and store nothing")(
+      "no-time-step-check",
+      "do not rerun LAMMPS and YADE at halved time steps to estimate their own discretisation error "
+      "(faster; native rows then carry no estimate and use the case's time step)")(
       "baselines", po::value<std::string>(),
       "committed baselines used when a reference code is not installed (default cases/baselines)")(
       "reproducible",
@@ -116,6 +119,7 @@ std::vector<std::string> forwarded_run_options(const po::variables_map& vm) {
   std::vector<std::string> args{"--timeout", fmt::format("{}", vm["timeout"].as<double>()), "--threads",
                                 std::to_string(vm["threads"].as<int>())};
   if (vm.count("no-cache") != 0) args.emplace_back("--no-cache");
+  if (vm.count("no-time-step-check") != 0) args.emplace_back("--no-time-step-check");
   for (const char* option : {"cache", "lammps", "yade"}) {
     if (vm.count(option) != 0) args.insert(args.end(), {std::string("--") + option, vm[option].as<std::string>()});
   }
@@ -195,6 +199,7 @@ RunContext run_context(const po::variables_map& vm, const std::filesystem::path&
   ctx.prepare.core_revision = kCoreRevision;
   if (ctx.cache) ctx.prepare.cache_dir = ctx.cache->dir() / "stages";
   ctx.wall_times = vm.count("reproducible") == 0;
+  ctx.refine_time_step = vm.count("no-time-step-check") == 0;
   ctx.baselines = vm.count("baselines") != 0
                       ? std::optional<std::filesystem::path>(vm["baselines"].as<std::string>())
                       : default_baselines();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,6 +43,21 @@ struct Calibration {
   std::string method;                              ///< how `chosen` was found, and any cache use
 };
 
+/// A reference code's native run repeated at halved time steps to measure its own
+/// discretisation error (docs/metrics.md, "Reference discretisation error"). With m_k the
+/// metric at Δt/2^k, the error of m_k is estimated as 2 |m_k − m_{k+1}| (Richardson with an
+/// assumed order p = 1, an upper bound for any order p ≥ 1); the first level whose every
+/// estimate is within a fraction of its tolerance is kept.
+struct TimeStepRefinement {
+  double timestep = 0.0;                   ///< Δt of `metrics` [s] (the case's Δt / 2^halvings)
+  int halvings = 0;                        ///< 0: the case's own Δt sufficed
+  int limit = 0;                           ///< most halvings allowed
+  bool limit_reached = false;              ///< an estimate was still too large at the limit
+  std::map<std::string, double> metrics;   ///< metric values at `timestep`
+  std::map<std::string, double> estimates; ///< estimated |error| of each of those values
+  std::string problem;                     ///< why the refinement stopped early (a run failed), else empty
+};
+
 /// What an engine returns. Metrics are computed from `trace` by compare/, the same way for
 /// every engine; `exact_metrics` holds closed-form values an analytic engine knows exactly.
 struct RunResult {
@@ -64,6 +80,8 @@ struct RunResult {
   /// a rupture point that the code places elsewhere by design.
   std::map<std::string, std::string> inexpressible_metrics;
   std::vector<Calibration> calibrations;
+  /// Set on a reference code's native run once its time step was checked by halving.
+  std::optional<TimeStepRefinement> refinement;
   std::vector<std::string> warnings;
 };
 

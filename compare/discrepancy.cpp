@@ -121,6 +121,29 @@ void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
   row.status = judge(*row.value, *row.reference_value, row.tolerance);
 }
 
+/// A native reference-code row's own discretisation error and the Δt of its value; a note when
+/// the estimate could not be brought within a tenth of the tolerance.
+void attach_refinement(Comparison& row, const cases::TimeStepRefinement& r) {
+  if (!r.metrics.contains(row.metric)) return;
+  row.timestep = r.timestep;
+  const auto e = r.estimates.find(row.metric);
+  if (e == r.estimates.end()) {
+    row.note += (row.note.empty() ? "" : "; ") +
+                std::string("no estimate of the reference code's own error") +
+                (r.problem.empty() ? "" : ": " + r.problem);
+    return;
+  }
+  row.error_estimate = e->second;
+  if (!r.problem.empty()) {
+    row.note += (row.note.empty() ? "" : "; ") + fmt::format("Δt refinement stopped after {} halvings: {}", r.halvings, r.problem);
+  } else if (r.limit_reached) {
+    row.note += (row.note.empty() ? "" : "; ") +
+                fmt::format("Δt refined {} times (the limit): the code's own error is still estimated "
+                            "above a tenth of the tolerance",
+                            r.halvings);
+  }
+}
+
 /// Rows comparing each matched run "inhouse@<code>" with <code>: every metric but the amplitude
 /// error, and the position-trace deviation.
 void append_matched_rows(const cases::Scene& scene, const std::vector<cases::RunResult>& runs,
@@ -155,6 +178,7 @@ void append_matched_rows(const cases::Scene& scene, const std::vector<cases::Run
     cases::RunResult raw = *target;
     const auto inexpressible = raw.inexpressible_metrics;
     raw.inexpressible_metrics.clear();
+    raw.refinement.reset();  // matched runs share the case's Δt
     matched_metrics[target->engine] = compute_metrics(scene, raw, find_run(runs, "analytic"));
     for (const std::string& metric : scene.compare.metrics) {
       if (metric == "amplitude_error") continue;  // measured against the analytic solution
@@ -237,6 +261,7 @@ std::vector<Comparison> compare_runs(const cases::Scene& scene,
       } else {
         static const cases::RunResult kNoReference{};
         judge_row(row, metrics, reference != nullptr ? *reference : kNoReference);
+        if (run.refinement && row.value) attach_refinement(row, *run.refinement);
       }
       rows.push_back(std::move(row));
     }

@@ -26,6 +26,10 @@ struct Comparison {
   cases::Tolerance tolerance;
   Status status = Status::error;
   std::string note;                 ///< reason for error / missing / n/a
+  /// A native reference-code row: the estimated discretisation error of `value` (its code's own
+  /// time-stepping error, from halving Δt) and the Δt `value` was computed at.
+  std::optional<double> error_estimate;
+  std::optional<double> timestep;
 };
 
 /// Tolerance used when the case gives none for `metric` (documented in docs/metrics.md).

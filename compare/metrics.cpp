@@ -358,6 +358,9 @@ MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run
     } else if (const auto exact = run.exact_metrics.find(name); exact != run.exact_metrics.end()) {
       v.value = exact->second;
       v.source = "closed form";
+    } else if (run.refinement && run.refinement->metrics.contains(name)) {
+      v.value = run.refinement->metrics.at(name);
+      v.source = fmt::format("trace at Δt = {:.6g} s", run.refinement->timestep);
     } else {
       try {
         v.value = from_trace(name, scene, run, analytic);

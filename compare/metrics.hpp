@@ -24,7 +24,8 @@ using MetricSet = std::map<std::string, MetricValue>;
 
 /// Computes every metric the scene lists (scene.compare.metrics) from one engine's result,
 /// with one implementation shared by all engines (docs/metrics.md). Closed-form values an
-/// engine supplies in exact_metrics take precedence. `analytic` (may be null) is the analytic
+/// engine supplies in exact_metrics take precedence, then the values of a time-step refinement
+/// (the run's metrics at the Δt its error estimate asked for). `analytic` (may be null) is the analytic
 /// engine's result, needed by amplitude_error. A run that is not ok yields no values.
 MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run,
                           const cases::RunResult* analytic);

@@ -248,14 +248,21 @@ std::string warnings_section(const comparison::CaseOutcome& o, int level) {
 
 std::string discrepancy_table(const comparison::CaseOutcome& o) {
   MarkdownTable t({"metric", "engine", "value", "reference", "ref. value", "abs. diff",
-                   "rel. diff", "tolerance", "status", "note"});
+                   "rel. diff", "tolerance", "own Δt error (Δt used)", "status", "note"});
   for (const auto& c : o.comparisons) {
     std::string tol;
     if (c.tolerance.rel > 0.0) tol += fmt::format("rel {:.1e}", c.tolerance.rel);
     if (c.tolerance.abs > 0.0) tol += fmt::format("{}abs {:.1e}", tol.empty() ? "" : ", ", c.tolerance.abs);
+    // A native reference-code row: the code's own discretisation error at the Δt of its value.
+    std::string own;
+    if (c.error_estimate) {
+      own = fmt::format("{:.2e} ({:.4g} s)", *c.error_estimate, c.timestep.value_or(0.0));
+    } else if (c.timestep) {
+      own = fmt::format("— ({:.4g} s)", *c.timestep);
+    }
     t.add_row({c.metric, c.engine, format_number(c.value), c.reference,
                format_number(c.reference_value), format_ratio(c.abs_diff), format_ratio(c.rel_diff),
-               tol, status_cell(c.status), c.note});
+               tol, own, status_cell(c.status), c.note});
   }
   return t.render();
 }

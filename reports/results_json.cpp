@@ -56,6 +56,13 @@ Json engine_entry(const cases::RunResult& run, const comparison::MetricSet& metr
     }
     e["calibrations"] = cs;
   }
+  if (const auto& f = run.refinement) {
+    Json estimates = Json::object();
+    for (const auto& [k, v] : f->estimates) estimates[k] = number(v);
+    e["time_step_check"] = {{"timestep", f->timestep}, {"halvings", f->halvings}, {"limit", f->limit},
+                            {"limit_reached", f->limit_reached}, {"error_estimates", estimates}};
+    if (!f->problem.empty()) e["time_step_check"]["problem"] = f->problem;
+  }
   if (!run.log_tail.empty()) e["log_tail"] = run.log_tail;
   return e;
 }
@@ -74,6 +81,8 @@ Json comparison_entry(const comparison::Comparison& c) {
   if (c.tolerance.abs > 0.0) tol["abs"] = c.tolerance.abs;
   j["tolerance"] = tol;
   j["status"] = std::string(comparison::to_string(c.status));
+  if (c.error_estimate) j["error_estimate"] = *c.error_estimate;
+  if (c.timestep) j["timestep"] = *c.timestep;
   if (!c.note.empty()) j["note"] = c.note;
   return j;
 }

@@ -91,6 +91,11 @@ nlohmann::ordered_json run_result_json(const cases::RunResult& run) {
                             {"method", c.method}});
   }
   j["calibrations"] = calibrations;
+  if (const auto& f = run.refinement) {
+    j["refinement"] = {{"timestep", f->timestep}, {"halvings", f->halvings},   {"limit", f->limit},
+                       {"limit_reached", f->limit_reached}, {"metrics", f->metrics},
+                       {"estimates", f->estimates},         {"problem", f->problem}};
+  }
   j["trace"] = trace_json(run.trace);
   j["energy"] = trace_json(run.energy);
   Json snaps = Json::array();
@@ -127,6 +132,18 @@ cases::RunResult run_result_from_json(const nlohmann::ordered_json& j) {
                                   c.at("samples").get<std::vector<std::pair<double, double>>>(),
                                   c.at("method").get<std::string>()});
       }
+    }
+    if (j.contains("refinement")) {
+      const auto& f = j.at("refinement");
+      cases::TimeStepRefinement t;
+      t.timestep = f.at("timestep").get<double>();
+      t.halvings = f.at("halvings").get<int>();
+      t.limit = f.at("limit").get<int>();
+      t.limit_reached = f.at("limit_reached").get<bool>();
+      t.metrics = f.at("metrics").get<std::map<std::string, double>>();
+      t.estimates = f.at("estimates").get<std::map<std::string, double>>();
+      t.problem = f.at("problem").get<std::string>();
+      r.refinement = t;
     }
     r.trace = trace_from(j.at("trace"));
     r.energy = trace_from(j.at("energy"));

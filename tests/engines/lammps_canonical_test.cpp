@@ -2,7 +2,10 @@
 // The canonical cases through the real LAMMPS binary, against the closed forms (native numerics).
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include "compare/case_outcome.hpp"
+#include "compare/time_step_refinement.hpp"
 #include "lammps_test_support.hpp"
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
@@ -45,6 +48,48 @@ TEST(LammpsCanonical, SingleCollisionMatchesTheClosedFormsWithinTheCaseTolerance
 TEST(LammpsCanonical, SandwichMatchesTheClosedFormsWithinTheCaseTolerances) {
   if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "lmp not installed";
   expect_lammps_passes(compare_three(canonical("sandwich"), "canonical_sandwich"));
+}
+
+TEST(LammpsCanonical, HertzDampedCollisionPassesAtTheTimeStepItsOwnErrorEstimateAsksFor) {
+  if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "lmp not installed";
+  const cases::Scene scene = canonical("hertz_damped_collision");
+  std::vector<cases::RunResult> runs;
+  runs.push_back(reference::run_engine(reference::InhouseEngine{}, scene, {}));
+  runs.push_back(reference::run_engine(reference::AnalyticEngine{}, scene, {}));
+  runs.push_back(reference::run_engine(reference::LammpsEngine{}, scene, scratch("canonical_damped")));
+  cases::RunResult& lammps = runs.back();
+  ASSERT_EQ(lammps.status, cases::RunStatus::ok) << lammps.reason << "\n" << lammps.log_tail;
+  // At the case's Δt LAMMPS's velocity Verlet misses the contact time by 0.27 % (tolerance 0.2 %).
+  const comparison::CaseOutcome unrefined = comparison::evaluate_runs(scene, runs);
+  bool failed_before = false;
+  for (const auto& c : unrefined.comparisons) {
+    failed_before = failed_before || (c.engine == "lammps" && c.metric == "contact_duration" &&
+                                      c.status == comparison::Status::fail);
+  }
+  EXPECT_TRUE(failed_before);
+  int level = 0;
+  lammps.refinement = comparison::refine_time_step(
+      scene, lammps,
+      [&](const cases::Scene& finer) {
+        return reference::run_engine(reference::LammpsEngine{}, finer, scratch(fmt::format("canonical_damped_{}", ++level)));
+      },
+      &runs[1]);
+  const cases::TimeStepRefinement& f = *lammps.refinement;
+  EXPECT_TRUE(f.problem.empty()) << f.problem;
+  EXPECT_FALSE(f.limit_reached);
+  EXPECT_GE(f.halvings, 1);
+  const comparison::CaseOutcome outcome = comparison::evaluate_runs(scene, runs);
+  std::size_t checked = 0;
+  for (const auto& c : outcome.comparisons) {
+    if (c.engine != "lammps") continue;
+    ++checked;
+    EXPECT_EQ(c.status, comparison::Status::pass) << c.metric << ": " << c.note;
+    ASSERT_TRUE(c.error_estimate.has_value()) << c.metric;
+    EXPECT_EQ(*c.timestep, f.timestep);
+    // The estimate is an error bound the comparison can trust: within a tenth of the tolerance.
+    EXPECT_LE(*c.error_estimate, 0.1 * (c.tolerance.abs + c.tolerance.rel * std::abs(*c.value))) << c.metric;
+  }
+  EXPECT_EQ(checked, scene.compare.metrics.size());
 }
 
 TEST(LammpsCanonical, TraceHasTheInhouseColumnsSampleTimesAndSnapshots) {

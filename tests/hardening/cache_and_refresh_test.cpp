@@ -35,12 +35,22 @@ TEST(Refresh, AMissingReferenceCodeFailsIt) {
   EXPECT_NE(r.out.find("| lammps | missing |"), std::string::npos) << r.out;
 }
 
-/// The single cache entry of `engine` under `cache`.
-fs::path only_entry(const fs::path& cache, const std::string& engine) {
-  std::vector<fs::path> found;
-  for (const auto& e : fs::directory_iterator(cache / engine)) found.push_back(e.path());
-  EXPECT_EQ(found.size(), 1U);
-  return found.empty() ? fs::path() : found.front();
+/// The cache entry of `engine` under `cache` for the case's own run: the time-step check adds
+/// entries for the same scene at Δt/2, Δt/4, …, so it is the entry with the largest Δt.
+fs::path case_entry(const fs::path& cache, const std::string& engine) {
+  fs::path best;
+  double largest = 0.0;
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator(cache / engine)) {
+    ++entries;
+    const double dt = Json::parse(support::read_file(e.path()))["scene"]["integration"]["timestep"].get<double>();
+    if (dt > largest) {
+      largest = dt;
+      best = e.path();
+    }
+  }
+  EXPECT_GE(entries, 2U) << "the case's run and at least its Δt/2 check";
+  return best;
 }
 
 TEST(Cache, ATamperedEntryIsDetectedRunAgainAndReplaced) {
@@ -57,7 +67,7 @@ TEST(Cache, ATamperedEntryIsDetectedRunAgainAndReplaced) {
     return a;
   };
   ASSERT_EQ(demwb(with_out(first)).exit_code, 0);
-  const fs::path entry = only_entry(cache, "lammps");
+  const fs::path entry = case_entry(cache, "lammps");
   const std::string genuine = support::read_file(entry);
   // Scale every position of the stored trace by 1 + 1e-5: valid JSON, plausible numbers.
   Json j = Json::parse(genuine);
@@ -106,6 +116,33 @@ TEST(Reproducible, TwoFreshRunsWriteIdenticalResults) {
   EXPECT_EQ(texts[0], texts[1]);
   EXPECT_EQ(texts[0].find("scratch_directory"), std::string::npos);
   EXPECT_EQ(texts[0].find("wall_time_s"), std::string::npos);
+}
+
+
+TEST(TimeStepCheck, NativeRowsCarryTheEstimateUnlessTheCheckIsTurnedOff) {
+  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
+  const fs::path with = scratch("step-check-on");
+  const fs::path without = scratch("step-check-off");
+  const std::vector<std::string> base{"compare", canonical("hertz_damped_collision"), "--engines", "analytic,lammps",
+                                      "--no-cache", "--reproducible"};
+  auto on = base;
+  on.insert(on.end(), {"-o", with.string()});
+  auto off = base;
+  off.insert(off.end(), {"--no-time-step-check", "-o", without.string()});
+  // With the check LAMMPS passes at a refined Δt; without it, at the case's Δt, it misses by 0.27 %.
+  EXPECT_EQ(demwb(on).exit_code, 0);
+  EXPECT_EQ(demwb(off).exit_code, 1);
+  const Json a = Json::parse(support::read_file(with / "results.json"));
+  const Json b = Json::parse(support::read_file(without / "results.json"));
+  ASSERT_TRUE(a["engines"]["lammps"].contains("time_step_check")) << a["engines"]["lammps"].dump(1);
+  EXPECT_FALSE(b["engines"]["lammps"].contains("time_step_check"));
+  for (const Json& row : a["comparisons"]) {
+    if (row["engine"] != "lammps") continue;
+    EXPECT_TRUE(row.contains("error_estimate")) << row.dump();
+    EXPECT_LT(row["timestep"].get<double>(), 6.9e-6) << row.dump();
+  }
+  for (const Json& row : b["comparisons"]) EXPECT_FALSE(row.contains("error_estimate")) << row.dump();
+  EXPECT_NE(support::read_file(with / "report.md").find("own Δt error"), std::string::npos);
 }
 
 }  // namespace
