@@ -36,7 +36,14 @@ Simulation::Simulation(const SimulationSetup& setup)
   std::iota(slot_of_id_.begin(), slot_of_id_.end(), 0U);
   id_of_slot_ = slot_of_id_;
   apply_prescribed_motion();
-  field_->commit(state_, 0.0, acc_);
+  // The forces at t = 0. Contact history normally starts there (nothing has elapsed). When the
+  // given velocities are v(−Δt/2) (leapfrog, given_is_half_step: YADE's NewtonIntegrator), a
+  // contact present at t = 0 has already slid for the half-step velocity over one Δt, as YADE's
+  // iteration 0 books it (ScGeom::precompute integrates the shear increment of a new interaction
+  // too): its first tangential force is the one of that slip, not zero.
+  const bool given_half_step = setup.scheme == SchemeId::leapfrog &&
+                               setup.scheme_settings.leapfrog_start == LeapfrogStart::given_is_half_step;
+  field_->commit(state_, given_half_step ? dt_ : 0.0, acc_);
   builds_at_last_sort_ = field_->list_builds();
   // A generated population arrives in generation order, which scatters neighbours over memory:
   // sort once at the start, then every `sort_every` builds (docs/performance.md, box scaling).

@@ -77,12 +77,18 @@ TEST(RigidMixing, DropsTheRigidBodysComplianceFromEStarAndGStar) {
   EXPECT_DOUBLE_EQ(*compliant.normal_stiffness, 1e5);
 }
 
-TEST(RigidMixing, TakesNoElasticValueFromTheRigidMaterialAndNeedsNone) {
-  dem::MaterialProperties glass = elastic("glass", 1e8, 0.3, 0.5);
+/// A rigid wall material with a density and nothing else (no elastic constants).
+dem::MaterialProperties bare_rigid_wall() {
   dem::MaterialProperties wall;
   wall.name = "steel";
   wall.density = 7800.0;
   wall.rigid = true;
+  return wall;
+}
+
+TEST(RigidMixing, TakesNoElasticValueFromTheRigidMaterialAndNeedsNone) {
+  const dem::MaterialProperties glass = elastic("glass", 1e8, 0.3, 0.5);
+  dem::MaterialProperties wall = bare_rigid_wall();
   wall.friction = 0.2;
   const auto p = dem::mix_properties(glass, wall, {});
   EXPECT_DOUBLE_EQ(*p.effective_modulus, 1e8 / 0.91);
@@ -97,11 +103,8 @@ TEST(RigidMixing, TakesNoElasticValueFromTheRigidMaterialAndNeedsNone) {
 }
 
 TEST(RigidMixing, PairTableBuildsTheRigidLawAndSkipsRigidPairs) {
-  dem::MaterialProperties glass = elastic("glass", 1e8, 0.3, 0.5);
-  dem::MaterialProperties wall;
-  wall.name = "steel";
-  wall.density = 7800.0;
-  wall.rigid = true;
+  const dem::MaterialProperties glass = elastic("glass", 1e8, 0.3, 0.5);
+  const dem::MaterialProperties wall = bare_rigid_wall();
   dem::ModelChoice choice;
   choice.normal = "hertz";
   const dem::PairTable t({glass, wall}, {}, {}, choice);
