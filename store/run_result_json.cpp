@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "store/run_result_json.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -23,11 +27,29 @@ cases::RunStatus parse_status(const std::string& s) {
 /// Names what packed traces are, so that a reader meets a format it knows or a clear refusal.
 constexpr const char* kPackedEncoding = "demwb-packed-1";
 
+/// Marks a column stored as a copy of an earlier one: "=" + that column's name. Packed text is
+/// canonical Base64, which never starts with "=", so the two cannot be confused.
+constexpr char kSameAs = '=';
+
 /// A trace in packed form (docs/results-format.md, "Packed traces"): the row count and, per
-/// column in order, its pack_column text.
+/// column in order, its pack_column text, or "=<name>" when an earlier column holds the same
+/// values bit for bit (a two-body trace's contact force is often its sphere's force).
 Json trace_json(const cases::Trace& t) {
   Json columns = Json::object();
-  for (std::size_t c = 0; c < t.columns().size(); ++c) columns[t.columns()[c]] = pack_column(t.values(c));
+  std::vector<std::pair<std::string, std::string>> packed;  // (text, name) of the columns so far
+  for (std::size_t c = 0; c < t.columns().size(); ++c) {
+    std::string text = pack_column(t.values(c));
+    std::string stored = text;
+    for (const auto& [earlier_text, earlier_name] : packed) {
+      // Equal packed texts are equal bit patterns (the packing is lossless and deterministic).
+      if (earlier_text == text) {
+        stored = std::string(1, kSameAs) + earlier_name;
+        break;
+      }
+    }
+    if (stored.front() != kSameAs) packed.emplace_back(text, t.columns()[c]);
+    columns[t.columns()[c]] = std::move(stored);
+  }
   return Json{{"encoding", kPackedEncoding}, {"rows", t.rows()}, {"columns", std::move(columns)}};
 }
 
@@ -43,8 +65,21 @@ cases::Trace trace_from(const Json& j) {
     }
     rows = j.at("rows").get<std::size_t>();
     for (const auto& [name, text] : j.at("columns").items()) {
+      const std::string value = text.get<std::string>();
+      if (!value.empty() && value.front() == kSameAs) {
+        // A copy of an earlier column that is stored in full (never a chain, never itself).
+        const std::string source = value.substr(1);
+        const auto found = std::find_if(columns.begin(), columns.end(), [&](const auto& c) { return c.first == source; });
+        const Json& source_text = j.at("columns").contains(source) ? j.at("columns").at(source) : Json();
+        if (found == columns.end() || !source_text.is_string() || source_text.get<std::string>().starts_with(kSameAs)) {
+          throw std::runtime_error("trace column '" + name + "': names '" + source.substr(0, 64) +
+                                   "' as its copy, which is not an earlier column stored in full");
+        }
+        columns.emplace_back(name, found->second);
+        continue;
+      }
       try {
-        columns.emplace_back(name, unpack_column(text.get<std::string>(), rows));
+        columns.emplace_back(name, unpack_column(value, rows));
       } catch (const std::runtime_error& e) {
         throw std::runtime_error("trace column '" + name + "': " + e.what());
       }

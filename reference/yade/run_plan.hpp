@@ -25,6 +25,8 @@ struct YadeRunPlan {
   std::optional<YadeCalibrationPlan> calibration;  ///< betan calibration run first, if any
   std::vector<std::string> warnings;              ///< time step, start velocity, mapping
   std::map<std::string, std::string> conventions; ///< for RunResult::conventions
+  /// Metrics YADE cannot give this case by design, with the reason (RunResult::inexpressible_metrics).
+  std::map<std::string, std::string> inexpressible_metrics;
 };
 
 /// Builds the plan. Throws dem::ModelError when the core cannot resolve the time step.

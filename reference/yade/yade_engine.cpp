@@ -113,6 +113,7 @@ cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& op
   const yade::YadeProcessOutcome outcome =
       yade::run_yade_script(install_, script, options.work_dir, options.timeout_s);
   result.conventions = plan.conventions;
+  result.inexpressible_metrics = plan.inexpressible_metrics;
   result.scratch_dir = outcome.directory.string();
   result.warnings = plan.warnings;
   for (auto& w : yade::unproduced_outputs(scene)) result.warnings.push_back(std::move(w));

@@ -9,6 +9,7 @@
 
 #include "cases/case_loader.hpp"
 #include "reference/yade/model_mapping.hpp"
+#include "reference/yade/run_plan.hpp"
 #include "reference/yade/yade_engine.hpp"
 #include "reference/yade/yade_installation.hpp"
 
@@ -246,6 +247,20 @@ TEST(YadeSupport, TotalFrictionBasisWithPythonCohesionIsFlagged) {
   bool flagged = false;
   for (const auto& w : m.warnings) flagged = flagged || w.find("friction limit: YADE caps with the elastic + damping") != std::string::npos;
   EXPECT_TRUE(flagged);
+}
+
+TEST(YadeSupport, LinearCohesionRestitutionIsAStatedConventionGap) {
+  // The betan calibration runs two bodies without the Python cohesion, so it cannot be made; the
+  // restitution is n/a with the reason, the other metrics of the case are compared.
+  const cases::Scene scene = cases::load_case(kCanonical / "linear_cohesion_pair.toml");
+  ASSERT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
+  const auto plan = reference::yade::make_run_plan(scene);
+  EXPECT_FALSE(plan.calibration.has_value());
+  ASSERT_EQ(plan.inexpressible_metrics.size(), 1U);
+  EXPECT_NE(plan.inexpressible_metrics.at("restitution").find("known convention gap"), std::string::npos);
+  // Without cohesion the same dashpot is calibrated and nothing is declared.
+  const auto single = reference::yade::make_run_plan(cases::load_case(kCanonical / "single_collision.toml"));
+  EXPECT_TRUE(single.inexpressible_metrics.empty());
 }
 
 }  // namespace

@@ -52,6 +52,7 @@ cases::RunResult sample_result() {
   r.trace.append_row({0.0, 0.1 + 0.2});
   r.trace.append_row({1e-6, std::nextafter(1.0, 2.0)});
   r.snapshots.push_back({0.0, {{1.0, 2.0, 3.0}}, {{0.0, 0.0, -1.0}}, {{0.0, 0.0, 0.0}}});
+  r.refinement = cases::TimeStepRefinement{2.5e-7, 2, 6, false, {{"restitution", 0.49997}}, {{"restitution", 2.5e-5}}, ""};
   return r;
 }
 
@@ -79,6 +80,39 @@ TEST(RunResultJson, RoundTripsEveryFieldAndDoublesExactly) {
   EXPECT_EQ(back.trace.values(1)[1], std::nextafter(1.0, 2.0));
   ASSERT_EQ(back.snapshots.size(), 1U);
   EXPECT_EQ(back.snapshots[0].position[0][2], 3.0);
+  ASSERT_TRUE(back.refinement.has_value());
+  EXPECT_EQ(back.refinement->timestep, 2.5e-7);
+  EXPECT_EQ(back.refinement->halvings, 2);
+  EXPECT_EQ(back.refinement->limit, 6);
+  EXPECT_EQ(back.refinement->metrics, r.refinement->metrics);
+  EXPECT_EQ(back.refinement->estimates, r.refinement->estimates);
+}
+
+TEST(RunResultJson, StoresAColumnEqualToAnEarlierOneAsAReferenceAndRestoresItExactly) {
+  cases::RunResult r = sample_result();
+  r.trace = cases::Trace{};
+  for (const char* c : {"time", "p0.fx", "c0-1.fn", "c0-1.overlap"}) r.trace.add_column(c);
+  for (int k = 0; k < 50; ++k) {
+    const double f = std::sin(0.1 * k) * 3.7;
+    r.trace.append_row({1e-6 * k, f, f, k == 7 ? std::nextafter(f, 10.0) : f});  // the last differs by 1 ulp once
+  }
+  const auto j = store::run_result_json(r);
+  const auto& columns = j["trace"]["columns"];
+  EXPECT_EQ(columns["c0-1.fn"], "=p0.fx");
+  EXPECT_NE(columns["c0-1.overlap"].get<std::string>().front(), '=');  // not equal bit for bit
+  const cases::RunResult back = store::run_result_from_json(nlohmann::ordered_json::parse(j.dump()));
+  for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(back.trace.values(c), r.trace.values(c)) << c;
+  // A reference to a missing, later or itself-referring column is refused with the column named.
+  for (const char* bad : {"=nowhere", "=c0-1.overlap", "=c0-1.fn"}) {
+    auto damaged = j;
+    damaged["trace"]["columns"]["c0-1.fn"] = bad;
+    try {
+      static_cast<void>(store::run_result_from_json(damaged));
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("c0-1.fn"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(RunResultJson, AMissingFieldIsAnErrorNamingIt) {
