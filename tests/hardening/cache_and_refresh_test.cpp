@@ -145,4 +145,16 @@ TEST(TimeStepCheck, NativeRowsCarryTheEstimateUnlessTheCheckIsTurnedOff) {
   EXPECT_NE(support::read_file(with / "report.md").find("own Δt error"), std::string::npos);
 }
 
+TEST(TimeStepCheck, AManyBodyCaseIsNotRefined) {
+  // 27 spheres: chaotic, compared as an ensemble elsewhere; one run's Δt error is not the question.
+  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
+  const fs::path out = scratch("step-check-many");
+  const auto r = demwb({"run", std::string(DEMWB_TEST_DATA_DIR) + "/many_body/jkr_cluster_wall.toml", "--engine",
+                        "lammps", "--no-cache", "-o", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const Json results = Json::parse(support::read_file(out / "results.json"));
+  EXPECT_EQ(results["engines"]["lammps"]["status"], "ok");
+  EXPECT_FALSE(results["engines"]["lammps"].contains("time_step_check")) << results["engines"]["lammps"].dump(1);
+}
+
 }  // namespace
