@@ -166,8 +166,7 @@ void refine_reference_runs(const cases::Scene& scene, std::vector<cases::RunResu
       ++level;
       RunContext ctx = context;
       ctx.options.work_dir = context.options.work_dir / fmt::format("{}-dt{}", r.engine, 1 << level);
-      cases::RunResult result = run_one(finer, r.engine, ctx);
-      return result;
+      return run_one(finer, r.engine, ctx);
     };
     r.refinement = comparison::refine_time_step(scene, r, runner, analytic);
     const auto& f = *r.refinement;

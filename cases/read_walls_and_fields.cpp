@@ -64,7 +64,8 @@ std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t i
     if (!(hi[k] > lo[k])) t.fail("max", fmt::format("must exceed min in every component, got {} <= {}", hi[k], lo[k]));
   }
   const std::size_t material = material_index(t.require("material"), scene);
-  const bool rigid = t.has("rigid") && t.require("rigid").boolean();
+  bool rigid = false;
+  if (const auto v = t.find("rigid")) rigid = v->boolean();
   std::vector<std::string> open;
   if (const auto v = t.find("open_faces")) {
     for (const Value& f : v->elements()) open.push_back(f.keyword(kBoxFaces, "box face"));

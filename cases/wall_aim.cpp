@@ -69,7 +69,7 @@ Vector3 read_initial_velocity(const Value& value, const Scene& scene) {
   if (const auto d = t.find("direction")) {
     heading = in_plane_direction(*d, wall);
   } else if (incidence > 0.0) {
-    static_cast<void>(t.require("direction"));  // throws: an oblique velocity needs a heading
+    t.fail("direction", fmt::format("missing: an incidence of {} degrees needs a heading along the wall", incidence));
   }
   // u = speed (sin θ t̂ − cos θ n): θ from the normal, towards the wall (n points away from it).
   const double theta = incidence * std::numbers::pi / 180.0;

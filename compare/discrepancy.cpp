@@ -121,26 +121,26 @@ void judge_row(Comparison& row, const std::map<std::string, MetricSet>& metrics,
   row.status = judge(*row.value, *row.reference_value, row.tolerance);
 }
 
+/// Appends `text` to a row's note, separated by "; ".
+void add_note(Comparison& row, const std::string& text) { row.note += (row.note.empty() ? "" : "; ") + text; }
+
 /// A native reference-code row's own discretisation error and the Δt of its value; a note when
-/// the estimate could not be brought within a tenth of the tolerance.
+/// the check stopped early or could not bring the estimate within a tenth of the tolerance.
 void attach_refinement(Comparison& row, const cases::TimeStepRefinement& r) {
   if (!r.metrics.contains(row.metric)) return;
   row.timestep = r.timestep;
   const auto e = r.estimates.find(row.metric);
   if (e == r.estimates.end()) {
-    row.note += (row.note.empty() ? "" : "; ") +
-                std::string("no estimate of the reference code's own error") +
-                (r.problem.empty() ? "" : ": " + r.problem);
+    add_note(row, "no estimate of the reference code's own error" + (r.problem.empty() ? "" : ": " + r.problem));
     return;
   }
   row.error_estimate = e->second;
   if (!r.problem.empty()) {
-    row.note += (row.note.empty() ? "" : "; ") + fmt::format("Δt refinement stopped after {} halvings: {}", r.halvings, r.problem);
+    add_note(row, fmt::format("Δt refinement stopped after {} halvings: {}", r.halvings, r.problem));
   } else if (r.limit_reached) {
-    row.note += (row.note.empty() ? "" : "; ") +
-                fmt::format("Δt refined {} times (the limit): the code's own error is still estimated "
-                            "above a tenth of the tolerance",
-                            r.halvings);
+    add_note(row, fmt::format("Δt refined {} times (the limit): the code's own error is still estimated "
+                              "above a tenth of the tolerance",
+                              r.halvings));
   }
 }
 

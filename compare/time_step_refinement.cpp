@@ -15,13 +15,11 @@
 namespace comparison {
 namespace {
 
-/// The metrics of one run that have values (metric → value).
+/// The metrics of one run that have values (metric → value); the runs here carry no refinement.
 std::map<std::string, double> values_of(const cases::Scene& scene, const cases::RunResult& run,
                                         const cases::RunResult* analytic) {
   std::map<std::string, double> out;
-  cases::RunResult plain = run;
-  plain.refinement.reset();
-  for (const auto& [name, v] : compute_metrics(scene, plain, analytic)) {
+  for (const auto& [name, v] : compute_metrics(scene, run, analytic)) {
     if (v.value) out[name] = *v.value;
   }
   return out;
@@ -73,7 +71,8 @@ cases::TimeStepRefinement refine_time_step(const cases::Scene& scene, const case
                                            const RefinementPolicy& policy) {
   cases::TimeStepRefinement out;
   out.limit = policy.max_halvings;
-  out.timestep = cases::run_timestep(scene);
+  const double dt = cases::run_timestep(scene);
+  out.timestep = dt;
   std::map<std::string, double> level = values_of(scene, base, analytic);
   out.metrics = level;
   for (int k = 0; k < policy.max_halvings; ++k) {
@@ -85,7 +84,7 @@ cases::TimeStepRefinement refine_time_step(const cases::Scene& scene, const case
     }
     const std::map<std::string, double> next = values_of(finer, r, analytic);
     out.halvings = k;
-    out.timestep = cases::run_timestep(halved_time_step(scene, k));
+    out.timestep = std::ldexp(dt, -k);  // exactly what halved_time_step(scene, k) runs
     out.metrics = level;
     out.estimates = estimates_of(level, next);
     if (small_enough(scene, level, out.estimates, policy.fraction_of_tolerance)) return out;

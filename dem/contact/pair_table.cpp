@@ -88,12 +88,12 @@ PairTable::PairTable(const std::vector<MaterialProperties>& materials, const Mix
     properties_[index(o.material_b, o.material_a)] = properties_[index(o.material_a, o.material_b)];
   }
   laws_.reserve(count_ * count_);
-  interacts_.assign(count_ * count_, true);
+  rigid_.reserve(count_);
+  for (const auto& m : materials) rigid_.push_back(m.rigid);
   for (std::size_t a = 0; a < count_; ++a) {
     for (std::size_t b = 0; b < count_; ++b) {
-      if (materials[a].rigid && materials[b].rigid) {
+      if (!interacts(a, b)) {
         // Two rigid bodies (walls) never touch: no law, and no property is required of the pair.
-        interacts_[index(a, b)] = false;
         laws_.emplace_back();
         continue;
       }

@@ -31,7 +31,7 @@ class PairTable {
   }
   /// False for a pair of two rigid materials (walls never touch each other): it has no law.
   [[nodiscard]] bool interacts(std::size_t a, std::size_t b) const noexcept {
-    return interacts_[index(a, b)];
+    return !(rigid_[a] && rigid_[b]);
   }
   /// The model choice the laws were built from.
   [[nodiscard]] const ModelChoice& choice() const noexcept { return choice_; }
@@ -44,7 +44,7 @@ class PairTable {
   ModelChoice choice_;
   std::vector<PairProperties> properties_;
   std::vector<PairLaw> laws_;
-  std::vector<bool> interacts_;
+  std::vector<bool> rigid_;  ///< per material: MaterialProperties::rigid
 };
 
 /// Builds a pair's law from its properties; throws ModelError on an unknown keyword

@@ -59,37 +59,29 @@ bool is_compliance_property(std::string_view key) noexcept {
 PairProperties mix_properties(const MaterialProperties& a, const MaterialProperties& b,
                               const MixingRules& rules) {
   PairProperties pair;
-  if (a.rigid || b.rigid) {
-    // Against a rigid body only the compliant body deforms; two rigid bodies get no elastic values.
-    const MaterialProperties& soft = a.rigid ? b : a;
-    const bool one_rigid = a.rigid != b.rigid;
-    if (one_rigid && soft.youngs_modulus && soft.poisson_ratio) {
-      pair.effective_modulus = rigid_effective_modulus(*soft.youngs_modulus, *soft.poisson_ratio);
-      pair.effective_shear_modulus = rigid_effective_shear_modulus(*soft.youngs_modulus, *soft.poisson_ratio);
-    }
-    for (const auto& spec : property_specs()) {
-      if (spec.material_field == nullptr || spec.pair_field == nullptr) continue;
-      const auto& va = a.*spec.material_field;
-      const auto& vb = b.*spec.material_field;
-      if (is_compliance_property(spec.key)) {
-        if (one_rigid && soft.*spec.material_field) pair.*spec.pair_field = 2.0 * *(soft.*spec.material_field);
-      } else if (va && vb) {
-        pair.*spec.pair_field = mix_values(rule_for(rules, spec), *va, *vb);
-      }
-    }
-    return pair;
-  }
-  if (a.youngs_modulus && a.poisson_ratio && b.youngs_modulus && b.poisson_ratio) {
+  // Against a rigid body only the compliant one deforms; two rigid bodies get no elastic values.
+  const bool any_rigid = a.rigid || b.rigid;
+  const bool one_rigid = a.rigid != b.rigid;
+  const MaterialProperties& soft = a.rigid ? b : a;
+  if (!any_rigid && a.youngs_modulus && a.poisson_ratio && b.youngs_modulus && b.poisson_ratio) {
     pair.effective_modulus =
         effective_modulus(*a.youngs_modulus, *a.poisson_ratio, *b.youngs_modulus, *b.poisson_ratio);
     pair.effective_shear_modulus = effective_shear_modulus(*a.youngs_modulus, *a.poisson_ratio,
                                                            *b.youngs_modulus, *b.poisson_ratio);
+  } else if (one_rigid && soft.youngs_modulus && soft.poisson_ratio) {
+    pair.effective_modulus = rigid_effective_modulus(*soft.youngs_modulus, *soft.poisson_ratio);
+    pair.effective_shear_modulus = rigid_effective_shear_modulus(*soft.youngs_modulus, *soft.poisson_ratio);
   }
   for (const auto& spec : property_specs()) {
     if (spec.material_field == nullptr || spec.pair_field == nullptr) continue;
     const auto& va = a.*spec.material_field;
     const auto& vb = b.*spec.material_field;
-    if (va && vb) pair.*spec.pair_field = mix_values(rule_for(rules, spec), *va, *vb);
+    if (any_rigid && is_compliance_property(spec.key)) {
+      // The harmonic rule 2ab/(a + b) with the rigid side infinitely stiff: 2k of the soft side.
+      if (one_rigid && soft.*spec.material_field) pair.*spec.pair_field = 2.0 * *(soft.*spec.material_field);
+    } else if (va && vb) {
+      pair.*spec.pair_field = mix_values(rule_for(rules, spec), *va, *vb);
+    }
   }
   return pair;
 }

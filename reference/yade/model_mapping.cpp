@@ -273,7 +273,9 @@ void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
 /// scene material. Adds a reason when a wall cannot be expressed.
 void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, YadeModelMapping& out) {
   std::vector<bool> meets_walls(scene.materials.size(), false);
-  for (const auto& p : scene.particles) meets_walls[p.material] = meets_walls[p.material] || !p.fixed;
+  for (const auto& p : scene.particles) {
+    if (!p.fixed) meets_walls[p.material] = true;
+  }
   const std::size_t base_pairs = out.pairs.size();
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
     const cases::WallSpec& w = scene.walls[k];
@@ -300,12 +302,10 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
       if (!meets_walls[m]) continue;
       const auto* hertz = std::get_if<dem::HertzNormal>(&table.law(m, w.material).normal);
       if (hertz == nullptr) continue;
-      const auto& props = table.properties(m, w.material);
-      const bool shear = scene.model.tangential != "none";
+      // Frictionless (friction was refused above): only k_no matters, so ν′ = ν of the sphere.
       const auto wall = compensated_wall_material(out.material_young[m], out.material_poisson[m],
-                                                  hertz->effective_modulus,
-                                                  shear ? props.effective_shear_modulus : std::nullopt);
-      if (!wall || (shear && !props.effective_shear_modulus)) {
+                                                  hertz->effective_modulus, std::nullopt);
+      if (!wall) {
         add_reason(out.reasons, fmt::format("YADE driver: no YADE material gives wall '{}' the "
                                             "Hertz–Mindlin stiffness of R* = r against material '{}'",
                                             w.name, scene.materials[m].name));
