@@ -68,6 +68,8 @@ inline constexpr std::string_view kPairQuantities[] = {"overlap", "fn"};
 /// Columns of the energy trace (RunResult::energy), after "time".
 inline constexpr std::string_view kEnergyQuantities[] = {
     "energy.kinetic", "energy.elastic", "energy.cohesive", "energy.gravitational",
-    "energy.dissipated_damping", "energy.dissipated_friction", "energy.fluid_work", "energy.balance"};
+    "energy.dissipated_damping", "energy.dissipated_friction",
+    "energy.dissipated_adhesion", "energy.dissipated_plastic", "energy.fluid_work", "energy.boundary_work",
+    "energy.integration_error", "energy.balance"};
 
 }  // namespace cases

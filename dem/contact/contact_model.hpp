@@ -70,7 +70,10 @@ struct ContactOutcome {
   double normal_force = 0.0;         ///< total normal force [N], repulsive positive
   double elastic_energy = 0.0;       ///< normal and tangential spring energy [J]
   double cohesive_energy = 0.0;      ///< cohesive potential energy [J]
-  double dissipated_damping = 0.0;   ///< dashpot work since the last commit [J], ≥ 0
+  double dissipated_damping = 0.0;   ///< dashpot work since the last commit [J], ≥ 0 (rectangle rule)
+  double damping_force = 0.0;        ///< dashpot force along the normal on p [N] (after the clamp)
+  double dissipated_adhesion = 0.0;  ///< energy released by a JKR snap-in or rupture at this evaluation [J] (signed)
+  double dissipated_plastic = 0.0;   ///< plastic work of a hysteretic normal law since the last commit [J]
   double dissipated_friction = 0.0;  ///< sliding and rolling work since the last commit [J], ≥ 0
   Vec3 force_on_p = Vec3::Zero();    ///< force on p [N]; q receives the opposite
   Vec3 torque_on_p = Vec3::Zero();   ///< torque on p about its centre [N·m]
@@ -143,6 +146,19 @@ template <class Slots>
   out.contact = g.overlap > 0.0 || (policies.contact_at_zero_overlap && g.overlap == 0.0) ||
                 cohesion.contact;
   out.interacting = out.contact || elastic.active || cohesion.active;
+  out.dissipated_adhesion = cohesion.released;
+  out.dissipated_plastic = elastic.dissipated;
+  if (!out.contact) {
+    // Parted: the history goes, and with it what the tangential and rolling springs still held.
+    const auto released = [&](const auto& m) {
+      if constexpr (requires { m.released_at_separation(in); }) {
+        return m.released_at_separation(in);
+      } else {
+        return 0.0;
+      }
+    };
+    out.dissipated_friction = slots.tangential(released) + slots.rolling(released);
+  }
   if (!out.interacting) return out;
 
   // Two infinite masses (a fixed sphere driven against another, m* = ∞): a dashpot scaled by m*
@@ -181,10 +197,11 @@ template <class Slots>
   out.force_on_p = out.normal_force * g.normal + tangential.force;
   out.torque_on_p = g.branch_p.cross(tangential.force) + rolling.torque_p;
   out.torque_on_q = g.branch_q.cross(-tangential.force) + rolling.torque_q;
-  out.elastic_energy = elastic.energy + tangential.energy;
+  out.elastic_energy = elastic.energy + tangential.energy + rolling.energy;
   out.cohesive_energy = cohesion.energy;
   out.dissipated_damping = std::max(0.0, -damping * g.normal_speed) * elapsed;
-  out.dissipated_friction = tangential.dissipated + rolling.dissipated;
+  out.damping_force = damping;
+  out.dissipated_friction += tangential.dissipated + rolling.dissipated;
   return out;
 }
 

@@ -43,12 +43,16 @@ struct ExternalFields {
   [[nodiscard]] double added_mass(double radius) const noexcept {
     return fluid ? fluid->added_mass(radius) : 0.0;
   }
-  /// Power of the non-conservative field forces on a sphere [W]: drag, pressure gradient and
-  /// the (time-dependent) pull.
-  [[nodiscard]] double hydrodynamic_power(const FieldInput& in) const noexcept {
-    double p = fluid ? fluid->hydrodynamic_force(in).dot(in.velocity) : 0.0;
-    if (pull) p += in.mass * pull->at(in.position, in.time).dot(in.velocity);
-    return p;
+  /// The non-conservative field forces on a sphere [N]: drag, pressure gradient and the pull.
+  [[nodiscard]] Vec3 work_force(const FieldInput& in) const noexcept {
+    Vec3 f = fluid ? fluid->hydrodynamic_force(in) : Vec3::Zero();
+    if (pull) f += in.mass * pull->at(in.position, in.time);
+    return f;
+  }
+  /// The weight, with buoyancy when the fluid asks for it [N] (a constant force: its potential
+  /// is −F·x).
+  [[nodiscard]] Vec3 gravity_force(const FieldInput& in) const noexcept {
+    return fluid ? fluid->gravity_force(in, gravity) : weight(in.mass);
   }
 };
 

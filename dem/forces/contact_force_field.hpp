@@ -62,6 +62,21 @@ class ContactForceField final : public ForceEvaluator {
 
   void trial(const KinematicState& state, double elapsed, Accelerations& out) override;
   void commit(const KinematicState& state, double elapsed, Accelerations& out) override;
+  void weigh(double now, double next) noexcept override;
+
+  /// Starts the work booking afresh: the forces of the next commit enter the first step with
+  /// `start_weight` (Scheme::start_weight()). Call before the commit at the start state.
+  void restart_work(double start_weight);
+  /// Takes the state's potential energy as the reference the integration error counts from:
+  /// the contact energies of the last commit plus `gravitational` [J]. Call after that commit.
+  void reset_potential(double gravitational) noexcept;
+  /// Books the work of the step just taken (docs/physics.md, "Energy ledger"): the weighted
+  /// forces of its evaluations times the mean of the velocities before (`velocity_before`,
+  /// `angular_before`) and after (`after`) it, split into dashpot, fluid, boundary work and
+  /// integration error; `gravitational` is the potential of the weights at `after` [J].
+  /// `rotation`: the scheme integrates ω. No-op when the field keeps no ledger.
+  void book_step(const Vec3Array& velocity_before, const Vec3Array& angular_before, const KinematicState& after,
+                 double dt, bool rotation, double gravitational) noexcept;
 
   /// Contacts whose overlap and normal force are recorded at every commit.
   void watch(const std::vector<ContactObservation>& contacts);
@@ -150,6 +165,24 @@ class ContactForceField final : public ForceEvaluator {
   std::vector<EnergyTotals> slab_totals_;   // per slab, summed in slab order
   std::vector<EnergyTotals> chunk_totals_;  // per sphere chunk, summed in chunk order
   EnergyLedger ledger_;
+  /// Forces of the evaluations of one step, each times its weight (ForceEvaluator::weigh).
+  struct WorkSums {
+    Vec3Array force;    ///< total force on each sphere
+    Vec3Array torque;   ///< total torque
+    Vec3Array damping;  ///< normal-dashpot force
+    Vec3Array field;    ///< drag, pressure gradient and pull
+    double wall_power = 0.0;          ///< Σ F·v_wall [W]
+    double wall_damping_power = 0.0;  ///< Σ F_d·v_wall [W]
+  };
+  Vec3Array damping_force_;  // dashpot forces of this evaluation (with the ledger)
+  Vec3Array field_force_;    // drag, pressure-gradient and pull forces of this evaluation
+  WorkSums step_sums_;       // the step under way
+  WorkSums next_sums_;       // the step after it
+  double weight_now_ = -1.0;  // < 0: not stated for the next evaluation
+  double weight_next_ = 0.0;
+  double potential_booked_ = 0.0;  // potential energy at the last booking [J]
+  double lost_booked_ = 0.0;       // dissipated friction + adhesion + plastic at the last booking [J]
+  void add_weighted_forces(double now, double next);
   std::vector<ContactObservation> observations_;
   LoopTiming timing_;
 };

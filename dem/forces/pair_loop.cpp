@@ -71,6 +71,10 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
       evaluate_contact_in(Slots{in.table->law(in.material[i], in.material[j])}, g, committed, in.elapsed);
   if (!c.interacting) {
     if (in.commit) list.contact[k] = kNoContact;
+    if constexpr (Energies) {  // a neck that broke, springs that let go
+      t.adhesion += c.dissipated_adhesion;
+      t.friction += c.dissipated_friction;
+    }
     return;
   }
   double* __restrict fi = force + 3 * static_cast<std::size_t>(i);
@@ -92,8 +96,16 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   if constexpr (Energies) {
     t.elastic += c.elastic_energy;
     t.cohesive += c.cohesive_energy;
-    t.damping += c.dissipated_damping;
     t.friction += c.dissipated_friction;
+    t.adhesion += c.dissipated_adhesion;
+    t.plastic += c.dissipated_plastic;
+    // The dashpot's force on both spheres: the ledger takes its work on the relative motion.
+    double* __restrict di = in.damping_force + 3 * static_cast<std::size_t>(i);
+    double* __restrict dj = in.damping_force + 3 * static_cast<std::size_t>(j);
+    for (int a = 0; a < 3; ++a) {
+      di[a] += c.damping_force * g.normal[a];
+      dj[a] -= c.damping_force * g.normal[a];
+    }
   }
   if (in.commit) {
     list.contact[k] = next;

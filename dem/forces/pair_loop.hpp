@@ -34,6 +34,7 @@ struct PairLoopInput {
   double elapsed;                    ///< time since the last commit [s]
   bool commit;                       ///< store the history the evaluations propose
   bool energies;                     ///< sum the contacts' energies (else the sums stay 0)
+  double* damping_force;             ///< with `energies`: dashpot forces add here, 3 per sphere
 };
 
 /// Evaluates every listed pair owned by the spheres of slab `slab` (list.slabs()), in chunks:

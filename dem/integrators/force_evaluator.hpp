@@ -15,6 +15,14 @@ class ForceEvaluator {
   virtual void trial(const KinematicState& state, double elapsed, Accelerations& out) = 0;
   /// Accelerations at `state`; the contact history advanced by `elapsed` becomes the committed one.
   virtual void commit(const KinematicState& state, double elapsed, Accelerations& out) = 0;
+  /// Says how the forces of the next evaluation (trial or commit) enter the velocity change:
+  /// with weight `now` in the step under way and `next` in the following one (so that
+  /// u_{n+1} − u_n = Δt Σ weight·F/m). An energy ledger books work with these weights; a scheme
+  /// that does not call it gets the trapezoid weights (½, ½) at commits and 0 at trials.
+  virtual void weigh(double now, double next) noexcept {
+    static_cast<void>(now);
+    static_cast<void>(next);
+  }
 };
 
 }  // namespace dem

@@ -40,10 +40,17 @@ void MultiStepScheme::step(KinematicState& state, Accelerations& acc, double dt,
   before_ = state;
   if (filled_ < needed_) {
     // Start-up: RK4 sub-steps until enough time points are known.
+    // Each sub-step's commit is the next sub-step's first stage, within this step; the last
+    // one starts the next step (another start-up step, or the multi-step formula, booked with
+    // the trapezoid rule).
     const int n = settings_.startup_substeps;
+    const double share = 1.0 / n;
+    const double next = filled_ + 1 < needed_ ? share / 6.0 : 0.5;
     for (int i = 0; i < n; ++i) {
+      const bool last = i + 1 == n;
+      const RungeKutta4Weights weights{share, last ? 0.0 : share / 6.0, last ? next : 0.0};
       diagnostics_.force_evaluations += static_cast<std::uint64_t>(
-          runge_kutta_4_step(state, acc, dt / n, f, settings_.rotation, settings_.orientation, rk4_));
+          runge_kutta_4_step(state, acc, dt / n, f, settings_.rotation, settings_.orientation, rk4_, weights));
     }
     ++diagnostics_.startup_steps;
   } else {

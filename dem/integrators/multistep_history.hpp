@@ -21,6 +21,11 @@ class MultiStepScheme : public Scheme {
 
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) final;
   [[nodiscard]] std::size_t past_states_needed() const noexcept final { return needed_; }
+  /// A step that starts with RK4 sub-steps takes the last commit as its first stage (1/6 of the
+  /// first of n sub-steps); the multi-step formula is booked with the trapezoid rule.
+  [[nodiscard]] double start_weight() const noexcept override {
+    return settings_.startup == StartupPolicy::rk4 && filled_ < needed_ ? 1.0 / (6.0 * settings_.startup_substeps) : 0.5;
+  }
   void set_past(const std::vector<KinematicState>& past, ForceEvaluator& f, double dt) final;
   void permute(std::span<const std::uint32_t> order) final;
 

@@ -28,6 +28,12 @@ class Scheme {
   virtual ~Scheme() = default;
   /// Advances one step.
   virtual void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) = 0;
+  /// Weight of the forces committed before the first step in that step's velocity change
+  /// (ForceEvaluator::weigh).
+  [[nodiscard]] virtual double start_weight() const noexcept { return 0.5; }
+  /// True when the scheme states every evaluation's weight (ForceEvaluator::weigh), so that an
+  /// energy ledger's work equals its change of kinetic energy to round-off.
+  [[nodiscard]] virtual bool books_work_exactly() const noexcept { return false; }
   /// Number of past states a multi-step scheme needs for an exact start (0 if none).
   [[nodiscard]] virtual std::size_t past_states_needed() const noexcept { return 0; }
   /// Supplies exact past states, most recent (t = −Δt) first; used with StartupPolicy::exact.

@@ -28,9 +28,19 @@ struct RungeKutta4Workspace {
   Accelerations acc_stage;
 };
 
+/// The weights an RK4 step states for its evaluations (ForceEvaluator::weigh), as shares of the
+/// step being booked: the stages (2/6, 2/6, 1/6) times `scale` (1/n for one of n sub-steps), and
+/// the commit's share of that step (`commit_now`) and of the next one (`commit_next`).
+struct RungeKutta4Weights {
+  double scale = 1.0;
+  double commit_now = 0.0;
+  double commit_next = 1.0 / 6.0;
+};
+
 /// One classical RK4 step (thesis eq D.5) of size dt, committing at the new state.
 /// Returns the number of force evaluations (4).
 int runge_kutta_4_step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
-                       bool rotation, bool orientation, RungeKutta4Workspace& work);
+                       bool rotation, bool orientation, RungeKutta4Workspace& work,
+                       const RungeKutta4Weights& weights);
 
 }  // namespace dem::detail

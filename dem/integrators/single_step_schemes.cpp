@@ -11,10 +11,13 @@ namespace {
 class ForwardEuler final : public Scheme {
  public:
   explicit ForwardEuler(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
+  [[nodiscard]] double start_weight() const noexcept override { return 1.0; }
+  [[nodiscard]] bool books_work_exactly() const noexcept override { return true; }
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
     derivative_of(state, acc, d_);
     advance(state, dt, d_, rotation_, next_, orientation_);
     std::swap(state, next_);
+    f.weigh(0.0, 1.0);  // u_{n+1} − u_n = Δt a_n: these forces drive the next step
     f.commit(state, dt, acc);
     ++diagnostics_.force_evaluations;
   }
@@ -30,12 +33,15 @@ class ForwardEuler final : public Scheme {
 class SymplecticEuler final : public Scheme {
  public:
   explicit SymplecticEuler(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
+  [[nodiscard]] double start_weight() const noexcept override { return 1.0; }
+  [[nodiscard]] bool books_work_exactly() const noexcept override { return true; }
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
     derivative_of(state, acc, d_);
     d_.velocity += dt * acc.linear;
     if (rotation_) d_.angular_velocity += dt * acc.angular;
     advance(state, dt, d_, rotation_, next_, orientation_);
     std::swap(state, next_);
+    f.weigh(0.0, 1.0);  // u_{n+1} − u_n = Δt a_n: these forces drive the next step
     f.commit(state, dt, acc);
     ++diagnostics_.force_evaluations;
   }
@@ -51,13 +57,17 @@ class SymplecticEuler final : public Scheme {
 class RungeKutta2 final : public Scheme {
  public:
   explicit RungeKutta2(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
+  [[nodiscard]] double start_weight() const noexcept override { return 0.0; }
+  [[nodiscard]] bool books_work_exactly() const noexcept override { return true; }
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
     derivative_of(state, acc, d_);
     advance(state, 0.5 * dt, d_, rotation_, mid_, orientation_);
+    f.weigh(1.0, 0.0);  // u_{n+1} − u_n = Δt a(midpoint)
     f.trial(mid_, 0.5 * dt, acc_mid_);
     derivative_of(mid_, acc_mid_, d_);
     advance(state, dt, d_, rotation_, next_, orientation_);
     std::swap(state, next_);
+    f.weigh(0.0, 0.0);
     f.commit(state, dt, acc);
     diagnostics_.force_evaluations += 2;
   }
@@ -75,9 +85,11 @@ class RungeKutta2 final : public Scheme {
 class RungeKutta4 final : public Scheme {
  public:
   explicit RungeKutta4(const SchemeSettings& s) : rotation_(s.rotation), orientation_(s.orientation) {}
+  [[nodiscard]] double start_weight() const noexcept override { return 1.0 / 6.0; }
+  [[nodiscard]] bool books_work_exactly() const noexcept override { return true; }
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
     diagnostics_.force_evaluations +=
-        static_cast<std::uint64_t>(runge_kutta_4_step(state, acc, dt, f, rotation_, orientation_, work_));
+        static_cast<std::uint64_t>(runge_kutta_4_step(state, acc, dt, f, rotation_, orientation_, work_, {}));
   }
 
  private:
@@ -89,15 +101,21 @@ class RungeKutta4 final : public Scheme {
 }  // namespace
 
 int runge_kutta_4_step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f,
-                       bool rotation, bool orientation, RungeKutta4Workspace& w) {
+                       bool rotation, bool orientation, RungeKutta4Workspace& w,
+                       const RungeKutta4Weights& weights) {
+  // Weights of the stages in u_{n+1} − u_n = Δt (a₁ + 2a₂ + 2a₃ + a₄)/6 (a₁: the last commit).
+  const auto stage_weight = [&](double share) { f.weigh(weights.scale * share, 0.0); };
   derivative_of(state, acc, w.k1);
   advance(state, 0.5 * dt, w.k1, rotation, w.stage, orientation);
+  stage_weight(2.0 / 6.0);
   f.trial(w.stage, 0.5 * dt, w.acc_stage);
   derivative_of(w.stage, w.acc_stage, w.k2);
   advance(state, 0.5 * dt, w.k2, rotation, w.stage, orientation);
+  stage_weight(2.0 / 6.0);
   f.trial(w.stage, 0.5 * dt, w.acc_stage);
   derivative_of(w.stage, w.acc_stage, w.k3);
   advance(state, dt, w.k3, rotation, w.stage, orientation);
+  stage_weight(1.0 / 6.0);
   f.trial(w.stage, dt, w.acc_stage);
   derivative_of(w.stage, w.acc_stage, w.k4);
 
@@ -107,6 +125,7 @@ int runge_kutta_4_step(KinematicState& state, Accelerations& acc, double dt, For
   add_scaled(w.sum, 1.0 / 6.0, w.k4);
   advance(state, dt, w.sum, rotation, w.stage, orientation);
   std::swap(state, w.stage);
+  f.weigh(weights.commit_now, weights.commit_next);
   f.commit(state, dt, acc);
   return 4;
 }

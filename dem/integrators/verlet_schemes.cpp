@@ -73,8 +73,11 @@ class KickDrift : public Scheme {
 class VelocityVerlet final : public KickDrift {
  public:
   explicit VelocityVerlet(const SchemeSettings& s) : KickDrift(s) {}
+  [[nodiscard]] double start_weight() const noexcept override { return 0.5; }
+  [[nodiscard]] bool books_work_exactly() const noexcept override { return true; }
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
     kick_and_drift(state, acc, 0.5 * dt, dt);
+    f.weigh(0.5, 0.5);
     f.commit(state, dt, acc);  // forces see v(t + Δt/2), as in LAMMPS
     kick(state, acc, 0.5 * dt);
     ++diagnostics_.force_evaluations;
@@ -88,10 +91,13 @@ class Leapfrog final : public KickDrift {
  public:
   explicit Leapfrog(const SchemeSettings& s)
       : KickDrift(s), first_kick_half_(s.leapfrog_start == LeapfrogStart::half_kick) {}
+  [[nodiscard]] double start_weight() const noexcept override { return first_kick_half_ ? 0.5 : 1.0; }
+  [[nodiscard]] bool books_work_exactly() const noexcept override { return true; }
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
     const double kick = first_kick_half_ ? 0.5 * dt : dt;
     first_kick_half_ = false;
     kick_and_drift(state, acc, kick, dt);
+    f.weigh(0.0, 1.0);  // F_{n+1} kicks the next step in full
     f.commit(state, dt, acc);
     ++diagnostics_.force_evaluations;
   }

@@ -29,7 +29,9 @@ Simulation::Simulation(const SimulationSetup& setup)
                           setup.neighbors, setup.threads, setup.track_energy})),
       scheme_(make_scheme(setup.scheme, setup.scheme_settings)),
       dt_(setup.timestep),
-      neighbors_(setup.neighbors) {
+      neighbors_(setup.neighbors),
+      track_energy_(setup.track_energy),
+      rotation_(setup.scheme_settings.rotation) {
   if (!(dt_ > 0.0)) throw std::invalid_argument("time step must be > 0");
   scheme_->bind(props_, setup.threads);
   slot_of_id_.resize(props_.size());
@@ -43,7 +45,7 @@ Simulation::Simulation(const SimulationSetup& setup)
   // too): its first tangential force is the one of that slip, not zero.
   const bool given_half_step = setup.scheme == SchemeId::leapfrog &&
                                setup.scheme_settings.leapfrog_start == LeapfrogStart::given_is_half_step;
-  field_->commit(state_, given_half_step ? dt_ : 0.0, acc_);
+  commit_start(given_half_step ? dt_ : 0.0);
   builds_at_last_sort_ = field_->list_builds();
   // A generated population arrives in generation order, which scatters neighbours over memory:
   // sort once at the start, then every `sort_every` builds (docs/performance.md, box scaling).
@@ -60,18 +62,32 @@ std::size_t Simulation::past_states_needed() const noexcept {
 
 void Simulation::set_exact_past(const std::vector<KinematicState>& past) {
   scheme_->set_past(past, *field_, dt_);
+  commit_start(0.0);  // the scheme's first step is now its own formula: book the start afresh
 }
 
 void Simulation::watch(const std::vector<ContactObservation>& contacts) {
   field_->watch(contacts);
-  field_->commit(state_, 0.0, acc_);  // same state, nothing elapsed: fills the observations
+  commit_start(0.0);  // same state, nothing elapsed: fills the observations
+}
+
+void Simulation::commit_start(double elapsed) {
+  if (track_energy_) field_->restart_work(scheme_->start_weight());
+  field_->commit(state_, elapsed, acc_);
+  if (track_energy_) field_->reset_potential(gravitational_energy());
 }
 
 void Simulation::step() {
+  if (track_energy_) {
+    velocity_before_ = state_.velocity;  // same size every step: no allocation after the first
+    angular_before_ = state_.angular_velocity;
+  }
   scheme_->step(state_, acc_, dt_, *field_);
   ++steps_;
   state_.time = time();  // exact n Δt, free of accumulated rounding
   apply_prescribed_motion();
+  if (track_energy_) {
+    field_->book_step(velocity_before_, angular_before_, state_, dt_, rotation_, gravitational_energy());
+  }
   if (sorts() && field_->list_builds() >= builds_at_last_sort_ + neighbors_.sort_every) {
     reorder();
   }
@@ -117,11 +133,25 @@ void Simulation::apply_prescribed_motion() {
 }
 
 double Simulation::kinetic_energy() const noexcept {
+  const ExternalFields& fields = field_->fields();
   double e = 0.0;
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props_.size()); ++i) {
     if (props_.fixed[static_cast<std::size_t>(i)] != 0) continue;
-    e += 0.5 * props_.mass[i] * state_.velocity.col(i).squaredNorm() +
+    const double inertia_mass = props_.mass[i] + fields.added_mass(props_.radius[i]);
+    e += 0.5 * inertia_mass * state_.velocity.col(i).squaredNorm() +
          0.5 * props_.inertia[i] * state_.angular_velocity.col(i).squaredNorm();
+  }
+  return e;
+}
+
+double Simulation::gravitational_energy() const noexcept {
+  const ExternalFields& fields = field_->fields();
+  double e = 0.0;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props_.size()); ++i) {
+    if (props_.fixed[static_cast<std::size_t>(i)] != 0) continue;
+    const FieldInput in{state_.position.col(i), state_.velocity.col(i), props_.radius[i],
+                        props_.density[i], props_.mass[i], state_.time};
+    e -= fields.gravity_force(in).dot(state_.position.col(i));
   }
   return e;
 }
@@ -129,12 +159,7 @@ double Simulation::kinetic_energy() const noexcept {
 EnergyLedger Simulation::energy() const noexcept {
   EnergyLedger e = field_->energy();
   e.kinetic = kinetic_energy();
-  e.gravitational = 0.0;
-  const Vec3& g = field_->fields().gravity;
-  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props_.size()); ++i) {
-    if (props_.fixed[static_cast<std::size_t>(i)] != 0) continue;
-    e.gravitational -= props_.mass[i] * g.dot(state_.position.col(i));
-  }
+  e.gravitational = gravitational_energy();
   return e;
 }
 

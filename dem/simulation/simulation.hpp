@@ -83,8 +83,15 @@ class Simulation {
   [[nodiscard]] const SchemeDiagnostics& diagnostics() const noexcept {
     return scheme_->diagnostics();
   }
-  /// Kinetic energy, translational plus rotational, of the mobile spheres [J].
+  /// True when the energy ledger's work is exact for the scheme (Scheme::books_work_exactly()):
+  /// its balance then holds to round-off.
+  [[nodiscard]] bool books_work_exactly() const noexcept { return scheme_->books_work_exactly(); }
+  /// Kinetic energy, translational plus rotational, of the mobile spheres [J] (with a fluid's
+  /// virtual mass, eq 3.51, in the translational inertia).
   [[nodiscard]] double kinetic_energy() const noexcept;
+  /// Potential energy of the weights, −Σ F_g·x over the mobile spheres (F_g with buoyancy when
+  /// the fluid asks for it) [J].
+  [[nodiscard]] double gravitational_energy() const noexcept;
   /// Energy ledger at the current state: kinetic and gravitational energy of this state,
   /// contact energies of the last commit, accumulated work.
   [[nodiscard]] EnergyLedger energy() const noexcept;
@@ -107,7 +114,14 @@ class Simulation {
   std::uint64_t builds_at_last_sort_ = 0;
   std::uint64_t reorders_ = 0;
 
+  bool track_energy_;
+  bool rotation_;
+  Vec3Array velocity_before_;  // the state's velocities at the start of a step (with the ledger)
+  Vec3Array angular_before_;
+
   void apply_prescribed_motion();
+  /// Commits the forces at the current state with `elapsed` and starts the work booking there.
+  void commit_start(double elapsed);
 };
 
 }  // namespace dem

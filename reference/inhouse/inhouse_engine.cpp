@@ -27,7 +27,9 @@ cases::Trace make_energy_trace() {
 void record_energy(const dem::Simulation& sim, cases::Trace& trace) {
   const dem::EnergyLedger& e = sim.energy();
   trace.append_row({sim.time(), e.kinetic, e.elastic, e.cohesive, e.gravitational,
-                    e.dissipated_damping, e.dissipated_friction, e.fluid_work, e.balance()});
+                    e.dissipated_damping, e.dissipated_friction, e.dissipated_adhesion,
+                    e.dissipated_plastic, e.fluid_work, e.boundary_work,
+                    e.integration_error, e.balance()});
 }
 
 /// The contacts the trace reports, pairs first, then particle–wall contacts.
@@ -176,6 +178,13 @@ cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions&
   }
 
   result.warnings = setup.warnings;
+  if (energy && !sim.books_work_exactly()) {
+    result.warnings.push_back(fmt::format(
+        "output.trace_energy: scheme '{}' states no weights for its force evaluations, so the energy "
+        "ledger books work with the trapezoid rule and its balance moves at the order of the scheme's "
+        "error (docs/physics.md, \"Energy ledger\")",
+        dem::scheme_info(scene.integration.scheme).keyword));
+  }
   if (const auto bad = sim.diagnostics().unconverged_steps; bad > 0) {
     result.warnings.push_back(fmt::format(
         "integration.implicit_tolerance: {} implicit steps did not converge within {} iterations",

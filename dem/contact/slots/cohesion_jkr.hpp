@@ -83,16 +83,28 @@ struct JkrCohesion {
     const double overlap = in.g.overlap;
     const double a_c = laws::jkr_critical_radius(p);  // one cube root serves the break and a(δ)
     next.attached = jkr_attached(in.committed.attached, overlap, p, a_c, in.policies.jkr_rupture);
-    if (!next.attached) return {};
+    if (!next.attached) {
+      // A neck that breaks lets go of the energy it held at the break overlap.
+      CohesionResponse broken;
+      if (in.committed.attached) {
+        const double limit = jkr_break_overlap(p, a_c, in.policies.jkr_rupture);
+        broken.released = laws::jkr_energy_at_ratio(laws::jkr_radius_ratio(limit, p, a_c), a_c, p);
+      }
+      return broken;
+    }
     const double y = laws::jkr_radius_ratio(overlap, p, a_c);  // √(a/a_c)
     const double a = a_c * y * y;
+    // A neck that snaps in at δ = 0 drops to U(0) = −1.2πγa₀² from nothing.
+    const double released =
+        in.committed.attached ? 0.0 : -laws::jkr_energy_at_ratio(laws::jkr_radius_ratio(0.0, p, a_c), a_c, p);
     return {laws::jkr_force_at_ratio(y, p) - elastic.force,
             laws::jkr_energy_at_ratio(y, a_c, p) - elastic.energy,
             true,
             true,
             laws::jkr_pulloff_force(p),
             a,
-            laws::hertz_secant_stiffness_at_radius(modulus, a)};
+            laws::hertz_secant_stiffness_at_radius(modulus, a),
+            released};
   }
   /// Reaches |δ_c| beyond touching (δ_f < δ_c in magnitude, so this covers both policies); a
   /// non-adhesive pair reaches the touching distance.

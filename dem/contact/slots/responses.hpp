@@ -43,6 +43,7 @@ struct NormalResponse {
   double stiffness = 0.0;  ///< dF/dδ at this overlap [N/m], used by damping sub-models
   double energy = 0.0;     ///< elastic energy stored in the contact [J]
   bool active = false;     ///< the law acts at this distance (δ > 0 for contact laws)
+  double dissipated = 0.0; ///< plastic work since the last commit [J], ≥ 0 (hysteretic laws)
 };
 
 /// What a cohesion sub-model returns.
@@ -58,6 +59,10 @@ struct CohesionResponse {
   /// (4/3) E* a: the Hertz secant stiffness of a contact of radius a, LAMMPS' `knfac` under JKR
   /// [N/m] (0 when contact_radius is 0).
   double radius_stiffness = 0.0;
+  /// Energy released by a jump of the potential at this evaluation [J]: a JKR neck that snaps
+  /// in (−U(0) > 0) or breaks (U at the break overlap: > 0 at δ_c, < 0 at the load-controlled
+  /// δ_f, where breaking puts |U| back).
+  double released = 0.0;
 };
 
 /// Normal-force information the tangential sub-model uses.
@@ -79,6 +84,7 @@ struct RollingResponse {
   Vec3 torque_p = Vec3::Zero();  ///< rolling-resistance torque on p [N·m]
   Vec3 torque_q = Vec3::Zero();  ///< on q
   double dissipated = 0.0;       ///< energy dissipated since the last commit [J], ≥ 0
+  double energy = 0.0;           ///< energy stored in a rolling spring [J]
 };
 
 /// The scale of a collision, for time-step control: a Hertz contact stiffens with overlap.

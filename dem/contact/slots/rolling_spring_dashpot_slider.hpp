@@ -48,7 +48,12 @@ struct SpringDashpotSliderRolling {
         stiffness, damping, rolling_friction * basis, carried, v_roll, in.elapsed);
     next.rolling_slip = s.displacement;
     const Vec3 torque = laws::rolling_torque(r, in.g.normal, s.force);
-    return {torque, -torque, s.dissipated};
+    return {torque, -torque, s.dissipated, laws::spring_energy(stiffness, s.displacement)};
+  }
+  /// Energy the rolling spring still holds when the bodies part: ½ k_r |ξ_r|² of the committed
+  /// rolling slip, lost with the history [J].
+  [[nodiscard]] double released_at_separation(const ContactInput& in) const noexcept {
+    return laws::spring_energy(stiffness, in.committed.rolling_slip);
   }
 };
 

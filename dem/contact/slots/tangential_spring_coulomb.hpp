@@ -72,6 +72,11 @@ struct SpringCoulombTangential {
                                             ContactHistory& next) const noexcept {
     return spring_coulomb_response(stiffness, friction, damping_ratio, in, t_in, next);
   }
+  /// Energy the spring still holds when the bodies part: ½ k_f |ς|² of the committed slip, lost
+  /// with the history [J].
+  [[nodiscard]] double released_at_separation(const ContactInput& in) const noexcept {
+    return laws::spring_energy(stiffness, in.committed.tangential_slip);
+  }
 };
 
 }  // namespace dem

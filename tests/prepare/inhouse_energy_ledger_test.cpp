@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// Every canonical case, prepared (agglomerate formation and launch run in the core) and run on
+// the in-house engine with its energy ledger traced: the balance
+// stays within 1e-9 of the largest ledger term over the whole run (docs/physics.md, "Energy
+// ledger"), and every row of the trace carries finite numbers.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cases/case_loader.hpp"
+#include "cases/trace.hpp"
+#include "prepare/prepare_scene.hpp"
+#include "reference/inhouse/inhouse_engine.hpp"
+
+namespace inhouse_energy_ledger_test {
+
+const std::filesystem::path kCanonical = std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical";
+
+/// The canonical case files, sorted.
+std::vector<std::string> canonical_files() {
+  std::vector<std::string> out;
+  for (const auto& entry : std::filesystem::directory_iterator(kCanonical)) {
+    if (entry.path().extension() == ".toml") out.push_back(entry.path().filename().string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+class CanonicalLedger : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CanonicalLedger, BalancesToOnePartInABillion) {
+  cases::Scene scene = prepare::prepare_scene(cases::load_case(kCanonical / GetParam()), {});
+  scene.output.trace_energy = true;
+  const cases::RunResult r = reference::run_engine(reference::InhouseEngine{}, scene, {});
+  ASSERT_EQ(r.status, cases::RunStatus::ok) << r.reason;
+  ASSERT_GT(r.energy.rows(), 2U);
+  const std::vector<double>& balance = *r.energy.column("energy.balance");
+  double scale = 0.0;
+  for (const auto name : cases::kEnergyQuantities) {
+    const std::vector<double>& v = *r.energy.column(name);
+    for (const double x : v) {
+      ASSERT_TRUE(std::isfinite(x)) << name;
+      if (name != "energy.balance") scale = std::max(scale, std::abs(x));
+    }
+  }
+  ASSERT_GT(scale, 0.0);
+  double drift = 0.0;
+  for (const double b : balance) drift = std::max(drift, std::abs(b - balance.front()));
+  EXPECT_LE(drift, 1e-9 * scale) << "drift " << drift / scale << " of the largest term";
+  // The ledger's integration error is the scheme's, not a missing path: far below the scale.
+  double error = 0.0;
+  for (const double x : *r.energy.column("energy.integration_error")) error = std::max(error, std::abs(x));
+  EXPECT_LE(error, 1e-2 * scale);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CanonicalLedger, ::testing::ValuesIn(canonical_files()),
+                         [](const ::testing::TestParamInfo<std::string>& p) {
+                           return p.param.substr(0, p.param.size() - 5);
+                         });
+
+}  // namespace inhouse_energy_ledger_test
