@@ -11,6 +11,7 @@
 #include "cases/catalogue.hpp"
 #include "cases/mixed_pairs.hpp"
 #include "dem/integrators/scheme_id.hpp"
+#include "reports/energy_plot.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/markdown.hpp"
 
@@ -151,10 +152,8 @@ std::string plots_section(const comparison::CaseOutcome& o, const std::filesyste
       if (ov != nullptr && fn != nullptr) force.series.push_back({r.engine, *ov, *fn, style, {}});
     }
     if (!r.energy.empty()) {
-      const auto* te = r.energy.column("time");
-      for (const auto q : cases::kEnergyQuantities) {
-        if (const auto* v = r.energy.column(q)) energy.series.push_back({std::string(q.substr(7)), *te, *v, "lines", {}});
-      }
+      const std::vector<Series> curves = energy_series(r, energy.series.empty());
+      energy.series.insert(energy.series.end(), curves.begin(), curves.end());
     }
   }
   std::string md;
