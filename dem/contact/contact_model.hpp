@@ -70,7 +70,6 @@ struct ContactOutcome {
   double normal_force = 0.0;         ///< total normal force [N], repulsive positive
   double elastic_energy = 0.0;       ///< normal and tangential spring energy [J]
   double cohesive_energy = 0.0;      ///< cohesive potential energy [J]
-  double dissipated_damping = 0.0;   ///< dashpot work since the last commit [J], ≥ 0 (rectangle rule)
   double damping_force = 0.0;        ///< dashpot force along the normal on p [N] (after the clamp)
   double dissipated_adhesion = 0.0;  ///< energy released by a JKR snap-in or rupture at this evaluation [J] (signed)
   double dissipated_plastic = 0.0;   ///< plastic work of a hysteretic normal law since the last commit [J]
@@ -199,7 +198,6 @@ template <class Slots>
   out.torque_on_q = g.branch_q.cross(-tangential.force) + rolling.torque_q;
   out.elastic_energy = elastic.energy + tangential.energy + rolling.energy;
   out.cohesive_energy = cohesion.energy;
-  out.dissipated_damping = std::max(0.0, -damping * g.normal_speed) * elapsed;
   out.damping_force = damping;
   out.dissipated_friction += tangential.dissipated + rolling.dissipated;
   return out;

@@ -283,11 +283,8 @@ void ContactForceField::add_weighted_forces(double now, double next) {
 
 void ContactForceField::restart_work(double start_weight) {
   const auto cols = static_cast<Eigen::Index>(packed_.size());
-  for (WorkSums* s : {&step_sums_, &next_sums_}) {
-    for (Vec3Array* a : {&s->force, &s->torque, &s->damping, &s->field}) a->setZero(3, cols);
-    s->wall_power = 0.0;
-    s->wall_damping_power = 0.0;
-  }
+  step_sums_.clear(cols);
+  next_sums_.clear(cols);
   weigh(start_weight, 0.0);  // the step "under way" is the first one
 }
 
@@ -343,9 +340,7 @@ void ContactForceField::book_step(const Vec3Array& velocity_before, const Vec3Ar
   potential_booked_ = potential;
   lost_booked_ = lost;
   std::swap(step_sums_, next_sums_);
-  for (Vec3Array* a : {&next_sums_.force, &next_sums_.torque, &next_sums_.damping, &next_sums_.field}) a->setZero();
-  next_sums_.wall_power = 0.0;
-  next_sums_.wall_damping_power = 0.0;
+  next_sums_.clear(static_cast<Eigen::Index>(packed_.size()));
 }
 
 void ContactForceField::run_pairs(const KinematicState& state, double elapsed, bool commit) {
@@ -596,7 +591,7 @@ void ContactForceField::permute(std::span<const std::uint32_t> order, const Kine
   dem::permute(committed_force_, order);
   dem::permute(committed_torque_, order);
   for (WorkSums* w : {&step_sums_, &next_sums_}) {
-    for (Vec3Array* a : {&w->force, &w->torque, &w->damping, &w->field}) {
+    for (Vec3Array* a : w->arrays()) {
       if (a->cols() == static_cast<Eigen::Index>(order.size())) dem::permute(*a, order);
     }
   }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -173,6 +174,14 @@ class ContactForceField final : public ForceEvaluator {
     Vec3Array field;    ///< drag, pressure gradient and pull
     double wall_power = 0.0;          ///< Σ F·v_wall [W]
     double wall_damping_power = 0.0;  ///< Σ F_d·v_wall [W]
+    /// The per-sphere arrays (3 × `cols`, kept in place when already that size).
+    [[nodiscard]] std::array<Vec3Array*, 4> arrays() noexcept { return {&force, &torque, &damping, &field}; }
+    /// Zero sums for `cols` spheres.
+    void clear(Eigen::Index cols) {
+      for (Vec3Array* a : arrays()) a->setZero(3, cols);
+      wall_power = 0.0;
+      wall_damping_power = 0.0;
+    }
   };
   Vec3Array damping_force_;  // dashpot forces of this evaluation (with the ledger)
   Vec3Array field_force_;    // drag, pressure-gradient and pull forces of this evaluation

@@ -18,6 +18,14 @@ struct HystereticResponse {
   return loading_stiffness / (restitution * restitution);
 }
 
+/// Plastic work of a Walton–Braun contact whose largest overlap deepens from `from` to `to` [J]:
+/// ½ k_l (1 − k_l/k_u)(to² − from²), the loading work ½ k_l δ_max² less the recoverable
+/// ½ (k_l²/k_u) δ_max² (thesis eq 3.20–3.21); zero when δ_max does not deepen.
+[[nodiscard]] constexpr double walton_braun_plastic_work(double loading_stiffness, double unloading_stiffness,
+                                                         double from, double to) noexcept {
+  return 0.5 * loading_stiffness * (1.0 - loading_stiffness / unloading_stiffness) * (to * to - from * from);
+}
+
 /// Walton–Braun linear hysteretic law (thesis eq 3.20–3.21, made continuous at δ_max by δ_0).
 /// Loading (δ ≥ δ_max, the largest overlap so far, passed in *including* the current δ):
 /// F = k_l δ. Unloading and reloading (δ < δ_max): F = k_u (δ − δ_0), δ_0 = δ_max (1 − k_l/k_u),

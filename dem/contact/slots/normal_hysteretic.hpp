@@ -46,11 +46,8 @@ struct HystereticNormal {
     if (delta <= 0.0) return {};
     const double reached = std::max(in.committed.max_overlap, delta);
     const laws::HystereticResponse r = laws::walton_braun(loading_stiffness, unloading_stiffness, delta, reached);
-    // Loading to a deeper δ_max spends ½ k_l (1 − k_l/k_u) d(δ_max²) in plastic work: the
-    // loading work ½ k_l δ_max² minus the recoverable ½ k_l² δ_max²/k_u.
-    const double plastic = 0.5 * loading_stiffness * (1.0 - loading_stiffness / unloading_stiffness) *
-                           (reached * reached - in.committed.max_overlap * in.committed.max_overlap);
-    return {r.force, r.stiffness, r.energy, true, plastic};
+    return {r.force, r.stiffness, r.energy, true,
+            laws::walton_braun_plastic_work(loading_stiffness, unloading_stiffness, in.committed.max_overlap, reached)};
   }
   /// Acts only while the bodies overlap.
   [[nodiscard]] double range(const PairExtent& e) const noexcept { return e.contact_distance; }
