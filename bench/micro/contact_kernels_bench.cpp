@@ -4,8 +4,11 @@
 // with Mindlin friction. Each iteration evaluates one touching pair with a stored slip.
 #include <benchmark/benchmark.h>
 
+#include <memory>
+
 #include "dem/contact/contact_model.hpp"
 #include "dem/contact/pair_table.hpp"
+#include "dem/forces/contact_batch.hpp"
 
 namespace {
 
@@ -76,6 +79,46 @@ void LinearMassVelocitySpringCoulombStatic(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
 }
+/// The same law through the batched kernel: one iteration evaluates a full batch of touching
+/// pairs (items are pairs, so the rate compares with the rows above per pair).
+void LinearMassVelocitySpringCoulombBatch(benchmark::State& state) {
+  auto batch = std::make_unique<dem::ContactBatch>();
+  dem::ContactBatch& b = *batch;
+  for (std::uint32_t k = 0; k < dem::kContactBatch; ++k) {
+    const double wobble = 1e-3 * k / dem::kContactBatch;  // not all lanes alike
+    b.dx[k] = -0.99 + wobble;
+    b.dy[k] = -0.01;
+    b.dz[k] = 0.0;
+    b.rp[k] = b.rq[k] = 0.5;
+    b.mp[k] = b.mq[k] = 1.0 / 0.52;
+    b.upx[k] = 0.1;
+    b.upy[k] = 0.02;
+    b.upz[k] = -0.03;
+    b.uqx[k] = -0.1;
+    b.uqy[k] = b.uqz[k] = 0.0;
+    b.wpx[k] = 1.0;
+    b.wpy[k] = 2.0;
+    b.wpz[k] = 3.0;
+    b.wqx[k] = -2.0;
+    b.wqy[k] = 0.0;
+    b.wqz[k] = 1.0;
+    dem::set_law(b, k, {2e5, 50.0, 2e5 * 2.0 / 7.0, 0.5, 0.0});
+  }
+  dem::BatchPolicies policies;
+  policies.lever_arm_radius = true;
+  policies.increment_project = true;
+  for (auto _ : state) {
+    for (std::uint32_t k = 0; k < dem::kContactBatch; ++k) {  // the committed slip, as the pair loop loads it
+      b.sx[k] = 0.0;
+      b.sy[k] = 1e-4;
+      b.sz[k] = 2e-5;
+    }
+    dem::evaluate_contact_batch(b, dem::kContactBatch, policies, 1e-4);
+    benchmark::DoNotOptimize(b.fx[0]);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * dem::kContactBatch);
+}
 void HertzTsujiMindlin(benchmark::State& state) { evaluate(state, table("hertz", "tsuji", "mindlin_8g")); }
 void PairGeometry(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(geometry());
@@ -86,5 +129,6 @@ void PairGeometry(benchmark::State& state) {
 
 BENCHMARK(LinearMassVelocitySpringCoulomb);
 BENCHMARK(LinearMassVelocitySpringCoulombStatic);
+BENCHMARK(LinearMassVelocitySpringCoulombBatch);
 BENCHMARK(HertzTsujiMindlin);
 BENCHMARK(PairGeometry);

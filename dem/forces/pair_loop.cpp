@@ -3,15 +3,57 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 #include "dem/contact/contact_model.hpp"
+#include "dem/forces/contact_batch.hpp"
 
 namespace dem {
 namespace {
 
 /// Entries gathered per chunk: 240, not 256, keeps the gather buffers of successive chunks from
 /// falling on the same 4 KiB-aliased addresses as the list (docs/performance.md).
-constexpr std::size_t kChunk = 240;
+constexpr std::size_t kChunk = kContactBatch;
+
+/// Law kinds compiled without dispatch (the many-body scenes' common laws); others dispatch.
+using ChuteLaw = StaticSlots<LinearNormal, LammpsMassVelocityDamping, SpringCoulombTangential, NoCohesion, NoRolling>;
+using HertzBoxLaw = StaticSlots<HertzNormal, LammpsMassVelocityDamping, SpringCoulombTangential, NoCohesion, NoRolling>;
+using LinearRestitutionLaw = StaticSlots<LinearNormal, RestitutionDamping, SpringCoulombTangential, NoCohesion, NoRolling>;
+using HertzMindlinLaw = StaticSlots<HertzNormal, TsujiDamping, Mindlin8GTangential, NoCohesion, NoRolling>;
+using LinearCohesiveLaw = StaticSlots<LinearNormal, RestitutionDamping, SpringCoulombTangential, LinearCohesion, NoRolling>;
+using JkrLaw = StaticSlots<HertzNormal, TsujiDamping, SpringCoulombTangential, JkrCohesion, NoRolling>;
+
+/// The law kinds the batched kernel evaluates (contact_batch.hpp), with their normal spring.
+template <class Slots> inline constexpr bool kBatched = false;
+template <> inline constexpr bool kBatched<ChuteLaw> = true;
+template <> inline constexpr bool kBatched<HertzBoxLaw> = true;
+
+/// A batched law's parameters (the caller knows it holds the batch family's sub-models).
+template <class Normal>
+[[nodiscard]] BatchLaw batch_law(const PairLaw& law) noexcept {
+  const auto& normal = *std::get_if<Normal>(&law.normal);
+  const auto& damping = *std::get_if<LammpsMassVelocityDamping>(&law.damping);
+  const auto& tangential = *std::get_if<SpringCoulombTangential>(&law.tangential);
+  double spring = 0.0;
+  if constexpr (std::is_same_v<Normal, LinearNormal>) {
+    spring = normal.stiffness;
+  } else {
+    spring = normal.effective_modulus;
+  }
+  return {spring, damping.rate, tangential.stiffness, tangential.friction, tangential.damping_ratio};
+}
+
+/// The batch kernel's view of the model's policies.
+[[nodiscard]] BatchPolicies batch_policies(BatchNormal normal, const ContactPolicies& p, PairLeverArm arm) noexcept {
+  BatchPolicies b;
+  b.normal = normal;
+  b.lever_arm_radius = arm == PairLeverArm::radius;
+  b.increment_project = p.tangential_history == TangentialHistory::increment_project;
+  b.limit_elastic = p.friction_limit == FrictionLimit::elastic;
+  b.clamp_tensile = p.clamp_tensile;
+  b.contact_at_zero_overlap = p.contact_at_zero_overlap;
+  return b;
+}
 
 /// The per-sphere inputs of the geometry, with a prescribed motion's velocity when it has one.
 inline SphereState sphere_at(const PairLoopInput& in, std::uint32_t i, double x, double y, double z) noexcept {
@@ -115,6 +157,102 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
   }
 }
 
+/// Evaluates gathered pairs [0, count) through the batched kernel: loads each pair's inputs into
+/// the batch's lanes, evaluates them all, then applies forces and commits history in list order
+/// exactly as evaluate_pair does (the kernel's arithmetic is evaluate_contact's, bit for bit).
+template <class Normal>
+void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::uint32_t* owners,
+                    const std::uint32_t* entries, std::uint32_t count, double* __restrict force,
+                    double* __restrict torque, std::uint32_t& next, ContactBatch& b, const BatchPolicies& policies,
+                    bool uniform) noexcept {
+  for (std::uint32_t g = 0; g < count; ++g) {
+    const std::uint32_t i = owners[g];
+    const std::uint32_t k = entries[g];
+    const PartnerCode partner = list.partners[k];
+    const std::uint32_t j = partner & kPartnerMask;
+    const PackedSphere& pi = in.packed[i];
+    const PartnerImage q = (partner >> kPartnerBits) != kNoShift
+                               ? partner_image<true>(in.packed[j], list.shifts, partner)
+                               : partner_image<false>(in.packed[j], list.shifts, partner);
+    b.dx[g] = pi.x - q.x;
+    b.dy[g] = pi.y - q.y;
+    b.dz[g] = pi.z - q.z;
+    const ContactSphere& si = in.spheres[i];
+    const ContactSphere& sj = in.spheres[j];
+    b.rp[g] = si.radius;
+    b.rq[g] = sj.radius;
+    b.mp[g] = si.inverse_mass;
+    b.mq[g] = sj.inverse_mass;
+    const double* ui = in.velocity + 3 * static_cast<std::size_t>(i);
+    const double* uj = in.velocity + 3 * static_cast<std::size_t>(j);
+    const double* wi = in.angular_velocity + 3 * static_cast<std::size_t>(i);
+    const double* wj = in.angular_velocity + 3 * static_cast<std::size_t>(j);
+    b.upx[g] = ui[0];
+    b.upy[g] = ui[1];
+    b.upz[g] = ui[2];
+    b.uqx[g] = uj[0];
+    b.uqy[g] = uj[1];
+    b.uqz[g] = uj[2];
+    if (in.motion_of != nullptr) {  // prescribed motions replace the velocity, as sphere_at
+      if (in.motion_of[i] >= 0) {
+        const Vec3& v = in.motion_velocity[in.motion_of[i]];
+        b.upx[g] = v[0];
+        b.upy[g] = v[1];
+        b.upz[g] = v[2];
+      }
+      if (in.motion_of[j] >= 0) {
+        const Vec3& v = in.motion_velocity[in.motion_of[j]];
+        b.uqx[g] = v[0];
+        b.uqy[g] = v[1];
+        b.uqz[g] = v[2];
+      }
+    }
+    b.wpx[g] = wi[0];
+    b.wpy[g] = wi[1];
+    b.wpz[g] = wi[2];
+    b.wqx[g] = wj[0];
+    b.wqy[g] = wj[1];
+    b.wqz[g] = wj[2];
+    const std::uint32_t slot = list.contact[k];
+    const Vec3 slip = slot == kNoContact ? Vec3::Zero() : list.slips[slot];
+    b.sx[g] = slip[0];
+    b.sy[g] = slip[1];
+    b.sz[g] = slip[2];
+    if (!uniform) set_law(b, g, batch_law<Normal>(in.table->law(in.material[i], in.material[j])));
+  }
+  evaluate_contact_batch(b, count, policies, in.elapsed);
+  for (std::uint32_t g = 0; g < count; ++g) {
+    const std::uint32_t k = entries[g];
+    if (!batch_contact(b, g, policies)) {
+      if (in.commit) list.contact[k] = kNoContact;
+      continue;
+    }
+    const std::uint32_t i = owners[g];
+    const std::uint32_t j = list.partners[k] & kPartnerMask;
+    double* __restrict fi = force + 3 * static_cast<std::size_t>(i);
+    double* __restrict fj = force + 3 * static_cast<std::size_t>(j);
+    double* __restrict ti = torque + 3 * static_cast<std::size_t>(i);
+    double* __restrict tj = torque + 3 * static_cast<std::size_t>(j);
+    fi[0] += b.fx[g];
+    fi[1] += b.fy[g];
+    fi[2] += b.fz[g];
+    fj[0] -= b.fx[g];
+    fj[1] -= b.fy[g];
+    fj[2] -= b.fz[g];
+    ti[0] += b.tpx[g];
+    ti[1] += b.tpy[g];
+    ti[2] += b.tpz[g];
+    tj[0] += b.tqx[g];
+    tj[1] += b.tqy[g];
+    tj[2] += b.tqz[g];
+    if (in.commit) {
+      list.contact[k] = next;
+      list.next_slips[next] = Vec3(b.sx[g], b.sy[g], b.sz[g]);
+      ++next;
+    }
+  }
+}
+
 /// The branch-free distance test of owner i's entries [k, stop): appends every entry in reach,
 /// or active at the last commit, to the gather buffers and returns the new count. `Shifted`: the
 /// owner has entries through a periodic face, so each partner is moved by its entry's shift.
@@ -165,7 +303,33 @@ template <class Slots, bool Energies, bool Periodic>
   std::array<std::uint32_t, kChunk> gathered_owner;
   std::array<std::uint32_t, kChunk> gathered_entry;
   std::uint32_t count = 0;
+  // Runs without an energy ledger evaluate through the batched kernel when it covers the law
+  // (it gives the same bits as evaluate_contact; its lanes are filled here, outside the kernel).
+  constexpr bool kBatchable = kBatched<Slots> && !Energies;
+  using BatchNormalModel = std::conditional_t<std::is_same_v<Slots, HertzBoxLaw>, HertzNormal, LinearNormal>;
+  [[maybe_unused]] BatchPolicies policies;
+  [[maybe_unused]] bool uniform = true;
+  std::conditional_t<kBatchable, ContactBatch, char> batch;
+  [[maybe_unused]] const bool batched = kBatchable && in.lever_arm != PairLeverArm::radius_velocity;
+  if constexpr (kBatchable) {
+    const PairLaw& first = in.table->law(0, 0);
+    policies = batch_policies(std::is_same_v<BatchNormalModel, HertzNormal> ? BatchNormal::hertz : BatchNormal::linear,
+                              first.policies, in.lever_arm);
+    uniform = in.table->material_count() == 1;
+    if (batched && uniform) {
+      const BatchLaw law = batch_law<BatchNormalModel>(first);
+      for (std::uint32_t g = 0; g < kContactBatch; ++g) set_law(batch, g, law);
+    }
+  }
   const auto flush = [&] {
+    if constexpr (kBatchable) {
+      if (batched) {
+        evaluate_batch<BatchNormalModel>(in, view, gathered_owner.data(), gathered_entry.data(), count, force,
+                                         torque, next, batch, policies, uniform);
+        count = 0;
+        return;
+      }
+    }
     for (std::uint32_t g = 0; g < count; ++g) {
       evaluate_pair<Slots, Energies>(in, view, gathered_owner[g], gathered_entry[g], force, torque, t, next);
     }
@@ -193,13 +357,6 @@ template <class Slots, bool Energies, bool Periodic>
   return t;
 }
 
-/// Law kinds compiled without dispatch (the many-body scenes' common laws); others dispatch.
-using ChuteLaw = StaticSlots<LinearNormal, LammpsMassVelocityDamping, SpringCoulombTangential, NoCohesion, NoRolling>;
-using HertzBoxLaw = StaticSlots<HertzNormal, LammpsMassVelocityDamping, SpringCoulombTangential, NoCohesion, NoRolling>;
-using LinearRestitutionLaw = StaticSlots<LinearNormal, RestitutionDamping, SpringCoulombTangential, NoCohesion, NoRolling>;
-using HertzMindlinLaw = StaticSlots<HertzNormal, TsujiDamping, Mindlin8GTangential, NoCohesion, NoRolling>;
-using LinearCohesiveLaw = StaticSlots<LinearNormal, RestitutionDamping, SpringCoulombTangential, LinearCohesion, NoRolling>;
-using JkrLaw = StaticSlots<HertzNormal, TsujiDamping, SpringCoulombTangential, JkrCohesion, NoRolling>;
 
 /// The loop for the law kind `Slots`, with or without energy sums and periodic shifts.
 template <class Slots>

@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: MIT
+// The batched contact kernel against evaluate_contact, bit for bit, on seeded random pairs under
+// every policy it accepts: the pair loop swaps one for the other depending on whether a run keeps
+// an energy ledger, so any difference would make a ledger change a trajectory.
+#include "dem/forces/contact_batch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <memory>
+#include <vector>
+#include <cstdint>
+#include <random>
+#include <string>
+
+#include "dem/contact/contact_geometry.hpp"
+#include "dem/contact/contact_model.hpp"
+#include "dem/contact/laws/hertz.hpp"
+
+namespace {
+
+/// One combination of the policies the kernel reads.
+struct Case {
+  dem::BatchNormal normal;
+  dem::PairLeverArm arm;
+  dem::TangentialHistory history;
+  dem::FrictionLimit limit;
+  bool clamp;
+  bool zero_overlap;
+};
+
+/// Bits of a double, so that −0 and +0 (and the payload of a NaN) count as different.
+std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+/// A random pair and its committed slip, covering the kernel's branches: touching, apart,
+/// exactly touching, fixed partners, a new contact (zero slip), slips that slide and that stick,
+/// and slips with a part along the normal.
+struct RandomPair {
+  dem::SphereState p, q;
+  dem::Vec3 slip;
+};
+
+RandomPair random_pair(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_real_distribution<double> size(0.5e-3, 2.0e-3);
+  std::uniform_int_distribution<int> pick(0, 9);
+  const auto vec = [&](double scale) { return dem::Vec3(dem::Vec3(unit(rng), unit(rng), unit(rng)) * scale); };
+  RandomPair r;
+  r.p.radius = size(rng);
+  r.q.radius = size(rng);
+  r.p.effect_radius = r.p.radius;
+  r.q.effect_radius = r.q.radius;
+  r.p.inverse_mass = pick(rng) == 0 ? 0.0 : 1.0 / (1e-6 * size(rng) / 1e-3);
+  r.q.inverse_mass = pick(rng) <= 1 ? 0.0 : 1.0 / (1e-6 * size(rng) / 1e-3);
+  dem::Vec3 direction = vec(1.0);
+  direction.normalize();
+  const int kind = pick(rng);
+  const double contact = r.p.radius + r.q.radius;
+  double distance = contact * (1.0 - 0.05 * std::abs(unit(rng)));  // touching
+  if (kind == 0) distance = contact * (1.0 + 0.05 * std::abs(unit(rng)));  // apart
+  r.q.position = vec(1e-2);
+  r.p.position = r.q.position + distance * direction;
+  if (kind == 1) {  // exactly touching along an axis
+    r.q.position = dem::Vec3(0.0, 0.0, 0.0);
+    r.p.position = dem::Vec3(0.0, 0.0, contact);
+  }
+  r.p.velocity = vec(2.0);
+  r.q.velocity = vec(2.0);
+  r.p.angular_velocity = vec(500.0);
+  r.q.angular_velocity = vec(500.0);
+  const int slip_kind = pick(rng);
+  r.slip = slip_kind == 0 ? dem::Vec3(dem::Vec3::Zero()) : dem::Vec3(vec(slip_kind <= 4 ? 1e-7 : 1e-4));
+  return r;
+}
+
+dem::PairLaw law_for(const Case& c, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  dem::PairLaw law;
+  if (c.normal == dem::BatchNormal::linear) {
+    law.normal = dem::LinearNormal{1e4 + 1e5 * unit(rng)};
+  } else {
+    law.normal = dem::HertzNormal{1e8 + 1e9 * unit(rng)};
+  }
+  law.damping = dem::LammpsMassVelocityDamping{100.0 * unit(rng)};
+  const double ratio = unit(rng) < 0.3 ? 0.0 : unit(rng);
+  const double kt = unit(rng) < 0.1 ? 0.0 : 1e4 * unit(rng);
+  law.tangential = dem::SpringCoulombTangential{kt, unit(rng) < 0.1 ? 0.0 : unit(rng), ratio};
+  law.cohesion = dem::NoCohesion{};
+  law.rolling = dem::NoRolling{};
+  law.policies.tangential_history = c.history;
+  law.policies.friction_limit = c.limit;
+  law.policies.clamp_tensile = c.clamp;
+  law.policies.contact_at_zero_overlap = c.zero_overlap;
+  return law;
+}
+
+dem::BatchLaw batch_law_of(const dem::PairLaw& law) {
+  const auto* linear = std::get_if<dem::LinearNormal>(&law.normal);
+  const auto* hertz = std::get_if<dem::HertzNormal>(&law.normal);
+  const auto& damping = std::get<dem::LammpsMassVelocityDamping>(law.damping);
+  const auto& tangential = std::get<dem::SpringCoulombTangential>(law.tangential);
+  return {linear != nullptr ? linear->stiffness : hertz->effective_modulus, damping.rate, tangential.stiffness,
+          tangential.friction, tangential.damping_ratio};
+}
+
+/// Evaluates `lanes` random pairs of one case both ways and compares every output bit.
+void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, int& sliding, int& sticking, int& apart) {
+  std::mt19937_64 rng(seed);
+  auto batch = std::make_unique<dem::ContactBatch>();
+  std::vector<RandomPair> pairs;
+  std::vector<dem::PairLaw> laws;
+  dem::BatchPolicies policies;
+  policies.normal = c.normal;
+  policies.lever_arm_radius = c.arm == dem::PairLeverArm::radius;
+  policies.increment_project = c.history == dem::TangentialHistory::increment_project;
+  policies.limit_elastic = c.limit == dem::FrictionLimit::elastic;
+  policies.clamp_tensile = c.clamp;
+  policies.contact_at_zero_overlap = c.zero_overlap;
+  for (std::uint32_t g = 0; g < lanes; ++g) {
+    pairs.push_back(random_pair(rng));
+    laws.push_back(law_for(c, rng));
+    const RandomPair& r = pairs.back();
+    dem::ContactBatch& b = *batch;
+    const dem::Vec3 d = r.p.position - r.q.position;
+    b.dx[g] = d[0];
+    b.dy[g] = d[1];
+    b.dz[g] = d[2];
+    b.rp[g] = r.p.radius;
+    b.rq[g] = r.q.radius;
+    b.mp[g] = r.p.inverse_mass;
+    b.mq[g] = r.q.inverse_mass;
+    b.upx[g] = r.p.velocity[0];
+    b.upy[g] = r.p.velocity[1];
+    b.upz[g] = r.p.velocity[2];
+    b.uqx[g] = r.q.velocity[0];
+    b.uqy[g] = r.q.velocity[1];
+    b.uqz[g] = r.q.velocity[2];
+    b.wpx[g] = r.p.angular_velocity[0];
+    b.wpy[g] = r.p.angular_velocity[1];
+    b.wpz[g] = r.p.angular_velocity[2];
+    b.wqx[g] = r.q.angular_velocity[0];
+    b.wqy[g] = r.q.angular_velocity[1];
+    b.wqz[g] = r.q.angular_velocity[2];
+    b.sx[g] = r.slip[0];
+    b.sy[g] = r.slip[1];
+    b.sz[g] = r.slip[2];
+    dem::set_law(b, g, batch_law_of(laws.back()));
+  }
+  const double elapsed = 1e-6;
+  dem::evaluate_contact_batch(*batch, lanes, policies, elapsed);
+  for (std::uint32_t g = 0; g < lanes; ++g) {
+    const RandomPair& r = pairs[g];
+    dem::ContactHistory committed;
+    committed.tangential_slip = r.slip;
+    const dem::ContactGeometry geometry = dem::pair_geometry(r.p, r.q, c.arm);
+    const dem::ContactOutcome o = dem::evaluate_contact(laws[g], geometry, committed, elapsed);
+    const dem::ContactBatch& b = *batch;
+    SCOPED_TRACE("seed " + std::to_string(seed) + " lane " + std::to_string(g));
+    ASSERT_EQ(dem::batch_contact(b, g, policies), o.contact);
+    ASSERT_EQ(o.contact, o.interacting);
+    EXPECT_EQ(bits(b.overlap[g]), bits(geometry.overlap));
+    if (!o.contact) {
+      ++apart;
+      continue;
+    }
+    // Sliding when the tangential force sits at the Coulomb cap μ·basis.
+    const double elastic = c.normal == dem::BatchNormal::linear
+                               ? std::get<dem::LinearNormal>(laws[g].normal).stiffness * geometry.overlap
+                               : dem::laws::hertz_force(std::get<dem::HertzNormal>(laws[g].normal).effective_modulus,
+                                                        geometry.reduced_radius, geometry.overlap);
+    const double basis = c.limit == dem::FrictionLimit::elastic ? std::abs(elastic) : std::abs(elastic + o.damping_force);
+    const double cap = std::get<dem::SpringCoulombTangential>(laws[g].tangential).friction * basis;
+    const double tangential = (o.force_on_p - o.normal_force * geometry.normal).norm();
+    const bool slid = cap > 0.0 && tangential >= cap * (1.0 - 1e-9);
+    (slid ? sliding : sticking) += 1;
+    EXPECT_EQ(bits(b.fx[g]), bits(o.force_on_p[0]));
+    EXPECT_EQ(bits(b.fy[g]), bits(o.force_on_p[1]));
+    EXPECT_EQ(bits(b.fz[g]), bits(o.force_on_p[2]));
+    EXPECT_EQ(bits(b.tpx[g]), bits(o.torque_on_p[0]));
+    EXPECT_EQ(bits(b.tpy[g]), bits(o.torque_on_p[1]));
+    EXPECT_EQ(bits(b.tpz[g]), bits(o.torque_on_p[2]));
+    EXPECT_EQ(bits(b.tqx[g]), bits(o.torque_on_q[0]));
+    EXPECT_EQ(bits(b.tqy[g]), bits(o.torque_on_q[1]));
+    EXPECT_EQ(bits(b.tqz[g]), bits(o.torque_on_q[2]));
+    EXPECT_EQ(bits(b.sx[g]), bits(o.history.tangential_slip[0]));
+    EXPECT_EQ(bits(b.sy[g]), bits(o.history.tangential_slip[1]));
+    EXPECT_EQ(bits(b.sz[g]), bits(o.history.tangential_slip[2]));
+  }
+}
+
+TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
+  int sliding = 0;
+  int sticking = 0;
+  int apart = 0;
+  std::uint64_t seed = 20261204;
+  for (const auto normal : {dem::BatchNormal::linear, dem::BatchNormal::hertz}) {
+    for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius}) {
+      for (const auto history : {dem::TangentialHistory::project_rescale, dem::TangentialHistory::increment_project}) {
+        for (const auto limit : {dem::FrictionLimit::total, dem::FrictionLimit::elastic,
+                                 dem::FrictionLimit::elastic_damping, dem::FrictionLimit::jkr_shifted}) {
+          for (const bool clamp : {false, true}) {
+            for (const bool zero_overlap : {false, true}) {
+              // Batches of every length up to a full one, so the vector loops' tails run too.
+              const auto lanes = static_cast<std::uint32_t>(1 + seed % dem::kContactBatch);
+              check_case({normal, arm, history, limit, clamp, zero_overlap}, seed++, lanes, sliding, sticking, apart);
+              check_case({normal, arm, history, limit, clamp, zero_overlap}, seed++, dem::kContactBatch, sliding,
+                         sticking, apart);
+            }
+          }
+        }
+      }
+    }
+  }
+  // The random pairs reached every branch the comparison is about.
+  EXPECT_GT(sliding, 1000);
+  EXPECT_GT(sticking, 1000);
+  EXPECT_GT(apart, 1000);
+}
+
+}  // namespace
