@@ -216,7 +216,7 @@ void ContactForceField::rebuild(const KinematicState& state, std::span<const std
 }
 
 void ContactForceField::evaluate(const KinematicState& state, double elapsed, Accelerations& out,
-                                 bool commit) {
+                                 bool commit, const FoldedKick& kick) {
   double worst = 0.0;
   {
     const ScopedSeconds timer(timing_.other);
@@ -244,7 +244,7 @@ void ContactForceField::evaluate(const KinematicState& state, double elapsed, Ac
   }
   {
     const ScopedSeconds timer(timing_.sphere_loop);
-    run_walls_and_fields(state, elapsed, out, commit);
+    run_walls_and_fields(state, elapsed, out, commit, kick);
   }
   if (setup_.track_energy) {
     // Unstated weights: the trapezoid rule over commits (a scheme that books no exact work).
@@ -385,7 +385,7 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
 }
 
 void ContactForceField::run_walls_and_fields(const KinematicState& state, double elapsed,
-                                             Accelerations& out, bool commit) {
+                                             Accelerations& out, bool commit, const FoldedKick& kick) {
   const auto n = static_cast<std::uint32_t>(packed_.size());
   const auto cols = static_cast<Eigen::Index>(n);
   out.linear.resize(3, cols);
@@ -401,6 +401,16 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   const int threads = std::max(setup_.threads, 1);
   const bool gravity_only = setup_.fields.gravity_only();
 
+  // The scheme's closing kick of sphere c, once its accelerations are known (as the scheme's
+  // own kick pass would do it, fixed spheres included).
+  const auto kick_sphere = [&](Eigen::Index c) {
+    if (kick.velocity == nullptr) return;
+    double* u = kick.velocity + 3 * c;
+    for (Eigen::Index k = 0; k < 3; ++k) u[k] += kick.kick * out.linear(k, c);
+    if (!kick.rotation) return;
+    double* w = kick.angular_velocity + 3 * c;
+    for (Eigen::Index k = 0; k < 3; ++k) w[k] += kick.kick * out.angular(k, c);
+  };
   parallel_for(threads, chunks, [&](std::uint32_t chunk) {
     EnergyTotals& sums = chunk_totals_[chunk];
     const std::uint32_t end = std::min(n, (chunk + 1) * kSphereChunk);
@@ -409,6 +419,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
       if (props_.fixed[i] != 0) {
         out.linear.col(c).setZero();
         out.angular.col(c).setZero();
+        kick_sphere(c);
         continue;
       }
       // Sphere–wall contacts: the wall is an infinite-mass partner (m* = m, R* = r).
@@ -461,6 +472,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
       }
       out.linear.col(c) = force_.col(c) / inertia_mass;
       out.angular.col(c) = props_.inverse_inertia[c] * torque_.col(c);
+      kick_sphere(c);
     }
   });
   totals_ = EnergyTotals{};
@@ -468,11 +480,17 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
 }
 
 void ContactForceField::trial(const KinematicState& state, double elapsed, Accelerations& out) {
-  evaluate(state, elapsed, out, false);
+  evaluate(state, elapsed, out, false, FoldedKick{});
 }
 
 void ContactForceField::commit(const KinematicState& state, double elapsed, Accelerations& out) {
-  evaluate(state, elapsed, out, true);
+  evaluate(state, elapsed, out, true, FoldedKick{});
+}
+
+void ContactForceField::commit_and_kick(KinematicState& state, double elapsed, Accelerations& out, double kick,
+                                        bool rotation) {
+  evaluate(state, elapsed, out, true,
+           FoldedKick{state.velocity.data(), state.angular_velocity.data(), kick, rotation});
 }
 
 void ContactForceField::watch(const std::vector<ContactObservation>& contacts) {

@@ -15,6 +15,19 @@ class ForceEvaluator {
   virtual void trial(const KinematicState& state, double elapsed, Accelerations& out) = 0;
   /// Accelerations at `state`; the contact history advanced by `elapsed` becomes the committed one.
   virtual void commit(const KinematicState& state, double elapsed, Accelerations& out) = 0;
+  /// commit, then a scheme's closing kick: u += kick·a, and ω += kick·α when `rotation`, for
+  /// every sphere. An evaluator may fold the kick into its own last pass over the spheres, as
+  /// long as each sphere's arithmetic is the same.
+  virtual void commit_and_kick(KinematicState& state, double elapsed, Accelerations& out, double kick,
+                               bool rotation) {
+    commit(state, elapsed, out);
+    const auto n = state.velocity.cols();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      for (Eigen::Index k = 0; k < 3; ++k) state.velocity(k, i) += kick * out.linear(k, i);
+      if (!rotation) continue;
+      for (Eigen::Index k = 0; k < 3; ++k) state.angular_velocity(k, i) += kick * out.angular(k, i);
+    }
+  }
   /// Says how the forces of the next evaluation (trial or commit) enter the velocity change:
   /// with weight `now` in the step under way and `next` in the following one (so that
   /// u_{n+1} − u_n = Δt Σ weight·F/m). An energy ledger books work with these weights; a scheme
