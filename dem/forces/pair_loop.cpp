@@ -166,6 +166,12 @@ void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::ui
                     double* __restrict torque, std::uint32_t& next, ContactBatch& b, const BatchPolicies& policies,
                     bool uniform) noexcept {
   for (std::uint32_t g = 0; g < count; ++g) {
+    if (g + 8 < count) {  // the partner eight pairs ahead: its velocity, spin and radius records
+      const std::size_t ahead = list.partners[entries[g + 8]] & kPartnerMask;
+      __builtin_prefetch(in.velocity + 3 * ahead);
+      __builtin_prefetch(in.angular_velocity + 3 * ahead);
+      __builtin_prefetch(in.spheres + ahead);
+    }
     const std::uint32_t i = owners[g];
     const std::uint32_t k = entries[g];
     const PartnerCode partner = list.partners[k];
@@ -177,6 +183,10 @@ void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::ui
     b.dx[g] = pi.x - q.x;
     b.dy[g] = pi.y - q.y;
     b.dz[g] = pi.z - q.z;
+    // The partner's force and torque sums are written after the kernel: ask for their lines now,
+    // while this pass waits on the partner's other records anyway.
+    __builtin_prefetch(force + 3 * static_cast<std::size_t>(j), 1);
+    __builtin_prefetch(torque + 3 * static_cast<std::size_t>(j), 1);
     const ContactSphere& si = in.spheres[i];
     const ContactSphere& sj = in.spheres[j];
     b.rp[g] = si.radius;
