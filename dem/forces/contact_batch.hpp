@@ -96,6 +96,13 @@ struct ContactBatch {
   return b.overlap[g] > 0.0 || (p.contact_at_zero_overlap && b.overlap[g] == 0.0);
 }
 
+/// Sets lane g of the three arrays of one vector quantity to (v[0], v[1], v[2]).
+inline void set_lane(double* x, double* y, double* z, std::uint32_t g, const double* v) noexcept {
+  x[g] = v[0];
+  y[g] = v[1];
+  z[g] = v[2];
+}
+
 /// Sets lane g's law parameters.
 inline void set_law(ContactBatch& b, std::uint32_t g, const BatchLaw& law) noexcept {
   b.normal[g] = law.normal;

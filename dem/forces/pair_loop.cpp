@@ -195,39 +195,17 @@ void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::ui
     b.mq[g] = sj.inverse_mass;
     const double* ui = in.velocity + 3 * static_cast<std::size_t>(i);
     const double* uj = in.velocity + 3 * static_cast<std::size_t>(j);
-    const double* wi = in.angular_velocity + 3 * static_cast<std::size_t>(i);
-    const double* wj = in.angular_velocity + 3 * static_cast<std::size_t>(j);
-    b.upx[g] = ui[0];
-    b.upy[g] = ui[1];
-    b.upz[g] = ui[2];
-    b.uqx[g] = uj[0];
-    b.uqy[g] = uj[1];
-    b.uqz[g] = uj[2];
     if (in.motion_of != nullptr) {  // prescribed motions replace the velocity, as sphere_at
-      if (in.motion_of[i] >= 0) {
-        const Vec3& v = in.motion_velocity[in.motion_of[i]];
-        b.upx[g] = v[0];
-        b.upy[g] = v[1];
-        b.upz[g] = v[2];
-      }
-      if (in.motion_of[j] >= 0) {
-        const Vec3& v = in.motion_velocity[in.motion_of[j]];
-        b.uqx[g] = v[0];
-        b.uqy[g] = v[1];
-        b.uqz[g] = v[2];
-      }
+      if (in.motion_of[i] >= 0) ui = in.motion_velocity[in.motion_of[i]].data();
+      if (in.motion_of[j] >= 0) uj = in.motion_velocity[in.motion_of[j]].data();
     }
-    b.wpx[g] = wi[0];
-    b.wpy[g] = wi[1];
-    b.wpz[g] = wi[2];
-    b.wqx[g] = wj[0];
-    b.wqy[g] = wj[1];
-    b.wqz[g] = wj[2];
+    set_lane(b.upx, b.upy, b.upz, g, ui);
+    set_lane(b.uqx, b.uqy, b.uqz, g, uj);
+    set_lane(b.wpx, b.wpy, b.wpz, g, in.angular_velocity + 3 * static_cast<std::size_t>(i));
+    set_lane(b.wqx, b.wqy, b.wqz, g, in.angular_velocity + 3 * static_cast<std::size_t>(j));
     const std::uint32_t slot = list.contact[k];
     const Vec3 slip = slot == kNoContact ? Vec3::Zero() : list.slips[slot];
-    b.sx[g] = slip[0];
-    b.sy[g] = slip[1];
-    b.sz[g] = slip[2];
+    set_lane(b.sx, b.sy, b.sz, g, slip.data());
     if (!uniform) set_law(b, g, batch_law<Normal>(in.table->law(in.material[i], in.material[j])));
   }
   evaluate_contact_batch(b, count, policies, in.elapsed);

@@ -2,11 +2,14 @@
 // The pair loop's batched kernel inside whole runs: a run without an energy ledger (batched
 // kernel) and the same run with one (evaluate_contact per pair) must stay bit-identical, step
 // after step, through contacts that open and close, list rebuilds, reorders, two materials,
-// both lever arms, both tangential-history rules and any thread count. And the closing kick that
-// the force field folds into its last pass must equal the scheme's own kick.
+// both lever arms, both tangential-history rules, a sphere under prescribed motion and any
+// thread count. And the closing kick that the force field folds into its last pass must equal
+// the scheme's own kick.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <vector>
 #include <string>
 
 #include "dem/simulation/simulation.hpp"
@@ -83,6 +86,24 @@ TEST(BatchedPairLoop, ALedgerNeverChangesTheTrajectory) {
       }
     }
   }
+}
+
+TEST(BatchedPairLoop, ADrivenSpherePushesThroughTheBatchAsThroughEvaluateContact) {
+  // A fixed sphere under prescribed motion ploughs through the box: the batch must take its
+  // motion's velocity, as evaluate_contact does.
+  dem::SimulationSetup setup = batched_box(11, "hertz", dem::PairLeverArm::contact_point,
+                                           dem::TangentialHistory::project_rescale);
+  const std::uint32_t driven = static_cast<std::uint32_t>(setup.particles.size() / 2);
+  setup.particles[driven].fixed = true;
+  // The velocity changes every 3.05 steps: at those evaluations the motion's velocity differs
+  // from the one the state held since the last step.
+  std::vector<dem::MotionSegment> segments;
+  for (int k = 0; k < 40; ++k) {
+    segments.push_back({3.05 * setup.timestep, dem::Vec3(0.5 * std::cos(k), -0.3, 0.2 * std::sin(k))});
+  }
+  setup.motions = {{driven, setup.particles[driven].position, segments}};
+  const int steps = test_support::full_or_sanitized(300, 100);
+  expect_same(run(setup, false, 1, steps), run(setup, true, 1, steps), "driven sphere");
 }
 
 TEST(BatchedPairLoop, TheFoldedKickIsTheSchemesKick) {
