@@ -37,6 +37,8 @@ int command_refresh(const std::vector<std::string>& args, const Invocation& inv)
 int command_engines(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb bench`: the core against LAMMPS on one scene, speed and memory.
 int command_bench(const std::vector<std::string>& args, const Invocation& inv);
+/// `demwb fuzz-matched`: random scenes on a reference code and its matched core.
+int command_fuzz_matched(const std::vector<std::string>& args, const Invocation& inv);
 /// `demwb convert`: thesis appendix E parameter conversion.
 int command_convert(const std::vector<std::string>& args, const Invocation& inv);
 

@@ -25,6 +25,7 @@ commands:
   refresh --sweep SWEEP.toml [-j N]           re-run a committed sweep and store its results
   bench chute|box [--threads N] [--ranks N]    the core against LAMMPS: particle-steps/s, memory
   engines [--lammps PATH] [--yade PATH]       installed engines, their versions and where they are
+  fuzz-matched --code lammps|yade [--count N] [--seed S]  random scenes: the code against its matched core
   convert linear-to-jkr|jkr-to-linear ...     appendix E: linear cohesion <-> JKR
 
 options:
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   try {
     if (args[0] == "run") return app::command_run(rest, inv);
+    if (args[0] == "fuzz-matched") return app::command_fuzz_matched(rest, inv);
     if (args[0] == "compare") return app::command_compare(rest, inv);
     if (args[0] == "suite") return app::command_suite(rest, inv);
     if (args[0] == "sweep") return app::command_sweep(rest, inv);

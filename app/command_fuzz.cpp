@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: MIT
+// `demwb fuzz-matched`: random small scenes run on a reference code and on the core with that
+// code's numerics (studies/matched_fuzz.hpp). Every scene either agrees within the matched
+// tolerance or is n/a by the code's mapping, with the reason; the rest are listed and their case
+// files kept under DIR/failing/ so that each can be replayed with `demwb compare`.
+#include <algorithm>
+#include <atomic>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/case_runner.hpp"
+#include "app/cli.hpp"
+#include "app/options.hpp"
+#include "studies/matched_fuzz.hpp"
+#include "support/text_file.hpp"
+
+namespace app {
+namespace {
+
+/// What became of one scene.
+struct FuzzResult {
+  studies::FuzzScene scene;
+  std::uint64_t seed = 0;
+  std::string status;  ///< agree, disagree, n/a, error, invalid (the generator wrote a case the loader refused)
+  std::optional<double> deviation;
+  std::string reason;
+};
+
+/// Runs one generated scene and reads its matched row.
+FuzzResult run_scene(const studies::FuzzScene& generated, std::uint64_t seed, const std::string& code,
+                     const std::filesystem::path& out, const RunContext& context, const cases::LoadOptions& load) {
+  FuzzResult r{generated, seed, "error", std::nullopt, ""};
+  const std::filesystem::path file = out / "cases" / (generated.name + ".toml");
+  support::write_file(file, generated.toml);
+  cases::Scene scene;
+  try {
+    scene = cases::load_case_text(generated.toml, file.string(), load);
+  } catch (const std::exception& e) {
+    r.status = "invalid";
+    r.reason = e.what();
+    return r;
+  }
+  const comparison::CaseOutcome outcome = run_case(scene, engines_to_run(scene, {}), context);
+  const std::string matched = "inhouse@" + code;
+  const auto row = std::find_if(outcome.comparisons.begin(), outcome.comparisons.end(), [&](const auto& c) {
+    return c.metric == "trace_deviation" && c.engine == matched;
+  });
+  if (row == outcome.comparisons.end()) {
+    r.reason = "no trace_deviation row for " + matched;
+    for (const cases::RunResult& run : outcome.runs) {
+      if (!run.reason.empty()) r.reason += fmt::format("; {}: {}", run.engine, run.reason);
+    }
+    return r;
+  }
+  r.deviation = row->value;
+  r.reason = row->note;
+  switch (row->status) {
+    case comparison::Status::pass: r.status = "agree"; break;
+    case comparison::Status::fail: r.status = "disagree"; break;
+    case comparison::Status::not_applicable: r.status = "n/a"; break;
+    case comparison::Status::missing: r.status = "missing"; break;
+    case comparison::Status::error: r.status = "error"; break;
+  }
+  return r;
+}
+
+nlohmann::json to_json(const FuzzResult& r) {
+  nlohmann::json j{{"seed", r.seed},       {"name", r.scene.name},     {"model", r.scene.model},
+                   {"spheres", r.scene.spheres}, {"walls", r.scene.walls}, {"gravity", r.scene.gravity},
+                   {"status", r.status},   {"reason", r.reason}};
+  j["trace_deviation"] = r.deviation ? nlohmann::json(*r.deviation) : nlohmann::json();
+  return j;
+}
+
+/// The summary: counts by status, n/a reasons counted, and every scene that is neither.
+std::string summary(const std::vector<FuzzResult>& results, const std::string& code, std::uint64_t seed) {
+  std::map<std::string, int> by_status;
+  std::map<std::string, int> na_reasons;
+  for (const FuzzResult& r : results) {
+    ++by_status[r.status];
+    if (r.status == "n/a") ++na_reasons[r.reason];
+  }
+  std::string s = fmt::format("# Matched fuzz against {}: {} scenes from seed {}\n\n| status | scenes |\n|---|---|\n", code,
+                              results.size(), seed);
+  for (const auto& [status, count] : by_status) s += fmt::format("| {} | {} |\n", status, count);
+  if (!na_reasons.empty()) {
+    s += "\n| n/a reason | scenes |\n|---|---|\n";
+    for (const auto& [reason, count] : na_reasons) s += fmt::format("| {} | {} |\n", reason, count);
+  }
+  bool header = false;
+  for (const FuzzResult& r : results) {
+    if (r.status == "agree" || r.status == "n/a") continue;
+    if (!header) {
+      s += "\n| seed | model (normal/damping/tangential/cohesion/rolling) | spheres | walls | gravity | status | trace deviation | note |\n|---|---|---|---|---|---|---|---|\n";
+      header = true;
+    }
+    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r.seed, r.scene.model, r.scene.spheres, r.scene.walls,
+                     r.scene.gravity ? "on" : "off", r.status,
+                     r.deviation ? fmt::format("{:.3g}", *r.deviation) : std::string("—"), r.reason);
+  }
+  return s;
+}
+
+}  // namespace
+
+int command_fuzz_matched(const std::vector<std::string>& args, const Invocation& inv) {
+  namespace po = boost::program_options;
+  po::options_description opts("options");
+  opts.add_options()("code", po::value<std::string>()->required(), "reference code: lammps or yade")(
+      "count", po::value<unsigned>()->default_value(20), "number of scenes")(
+      "seed", po::value<std::uint64_t>()->default_value(1), "seed of the first scene (scene k has seed + k)")(
+      "jobs,j", po::value<unsigned>()->default_value(1), "scenes run at once")(
+      "output,o", po::value<std::string>(), "output directory (default out/fuzz-matched-<code>)");
+  add_run_options(opts);
+  const auto vm = parse_command(
+      args, "usage: demwb fuzz-matched --code lammps|yade [--count N] [--seed S] [-j N] [-o DIR]", opts, {});
+  if (!vm) return kExitOk;
+  const std::string code = (*vm)["code"].as<std::string>();
+  if (code != "lammps" && code != "yade") {
+    throw std::invalid_argument(fmt::format("--code: unknown reference code '{}' (known: lammps, yade)", code));
+  }
+  const unsigned count = (*vm)["count"].as<unsigned>();
+  const std::uint64_t seed = (*vm)["seed"].as<std::uint64_t>();
+  const unsigned jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
+  const std::filesystem::path out = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())
+                                                             : std::filesystem::path("out/fuzz-matched-" + code);
+  RunContext context = run_context(*vm, out / "work");
+  context.cache.reset();             // random scenes: nothing to reuse, nothing worth keeping
+  context.refine_time_step = false;  // the matched row is the point, not the code's own Δt error
+  const cases::LoadOptions load = load_options(*vm);
+
+  std::vector<FuzzResult> results(count);
+  std::atomic<unsigned> next{0};
+  std::mutex print;
+  const auto worker = [&] {
+    for (unsigned k = next++; k < count; k = next++) {
+      const std::uint64_t s = seed + k;
+      results[k] = run_scene(studies::random_matched_scene(code, s), s, code, out, context, load);
+      const std::lock_guard lock(print);
+      std::cout << fmt::format("scene {:>5} ({}): {}{}\n", s, results[k].scene.model, results[k].status,
+                               results[k].deviation ? fmt::format(" {:.3g}", *results[k].deviation) : "");
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (unsigned t = 0; t < jobs; ++t) pool.emplace_back(worker);
+  }
+
+  nlohmann::json all = nlohmann::json::array();
+  bool clean = true;
+  for (const FuzzResult& r : results) {
+    all.push_back(to_json(r));
+    if (r.status == "agree" || r.status == "n/a") continue;
+    clean = false;
+    support::write_file(out / "failing" / (r.scene.name + ".toml"), r.scene.toml);
+  }
+  const std::string report = summary(results, code, seed);
+  support::write_file(out / "fuzz.json",
+                      nlohmann::json{{"code", code}, {"seed", seed}, {"count", count}, {"scenes", all}}.dump(2) + "\n");
+  support::write_file(out / "report.md", report + fmt::format("\nReproduce: `{}`\n", fmt::join(std::vector<std::string>(inv.argv, inv.argv + inv.argc), " ")));
+  std::cout << "\n" << report << "\nwrote " << (out / "report.md").string() << " and " << (out / "fuzz.json").string()
+            << (clean ? "" : "; failing scenes in " + (out / "failing").string()) << "\n";
+  return clean ? kExitOk : kExitFailed;
+}
+
+}  // namespace app

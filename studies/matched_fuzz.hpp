@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Randomised cross-code scenes for the matched engines (docs/engines.md, "Matched numerics on
+// random scenes"): a seed gives one small case file — 2 to 6 spheres of mixed radii and one or
+// two materials, random positions, velocities and spins, gravity on or off, 0 to 2 plane walls,
+// and a contact model drawn from every sub-model of every slot — that runs on a reference code
+// and on the core with that code's numerics. The matched row (trace deviation, at 1e-8) says
+// whether the two agree; the code's mapping says n/a, with its reason, where it cannot express
+// the scene.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace studies {
+
+/// One generated scene: its case-file text and what was drawn, for the summary.
+struct FuzzScene {
+  std::string name;     ///< fuzz_<code>_<seed>
+  std::string toml;     ///< the case file
+  std::string model;    ///< normal/damping/tangential/cohesion/rolling keywords, '/'-joined
+  int spheres = 0;
+  int walls = 0;
+  bool gravity = false;
+};
+
+/// The scene of `seed` for reference code `code` ("lammps" or "yade"); the same seed always
+/// gives the same text. Throws std::invalid_argument for another code.
+[[nodiscard]] FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed);
+
+}  // namespace studies
