@@ -30,7 +30,8 @@ constexpr std::array kMixingRules{dem::MixingRule::harmonic, dem::MixingRule::ar
 
 /// Keys of [model] that name policies rather than sub-models.
 constexpr auto kPolicyKeys = std::to_array<std::string_view>(
-    {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm", "pair_lever_arm", "tangential_history"});
+    {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm", "pair_lever_arm", "tangential_history",
+     "mindlin_radius"});
 
 /// The enumerator a policy keyword names; `names` lists the keywords in enumerator order.
 template <class Enum, class Parse>
@@ -66,6 +67,11 @@ void read_policies(const Table& model, dem::ModelChoice& choice) {
     constexpr auto names = std::to_array<std::string_view>({"project_rescale", "increment_project"});
     choice.tangential_history = read_policy<dem::TangentialHistory>(
         *v, names, [](std::string_view k) { return dem::parse_tangential_history(k); }, "tangential-history rule");
+  }
+  if (const auto v = model.find("mindlin_radius")) {
+    constexpr auto names = std::to_array<std::string_view>({"overlap", "contact_radius"});
+    choice.mindlin_radius = read_policy<dem::MindlinRadius>(
+        *v, names, [](std::string_view k) { return dem::parse_mindlin_radius(k); }, "Mindlin-radius policy");
   }
 }
 

@@ -115,8 +115,12 @@ FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) {
   t += fmt::format("# Random matched scene: code {}, seed {} (demwb fuzz-matched; docs/engines.md).\n\n", code, seed);
   t += fmt::format("[case]\nname = \"{}\"\ndescription = \"random scene {} of the matched fuzz against {}\"\n\n",
                    scene.name, seed, code);
-  t += fmt::format("[model]\nnormal = \"{}\"\ndamping = \"{}\"\ntangential = \"{}\"\ncohesion = \"{}\"\nrolling = \"{}\"\n\n",
-                   model[0], model[1], model[2], model[3], model[4]);
+  // The policy a code's mapping may ask for: half the scenes take the Mindlin stiffness on the
+  // cohesion law's contact radius (LAMMPS' convention under JKR).
+  const bool contact_radius = unit(rng) < 0.5;
+  t += fmt::format("[model]\nnormal = \"{}\"\ndamping = \"{}\"\ntangential = \"{}\"\ncohesion = \"{}\"\nrolling = \"{}\"\n"
+                   "mindlin_radius = \"{}\"\n\n",
+                   model[0], model[1], model[2], model[3], model[4], contact_radius ? "contact_radius" : "overlap");
 
   const int materials = unit(rng) < 0.5 ? 1 : 2;
   for (int m = 0; m < materials; ++m) {

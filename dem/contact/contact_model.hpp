@@ -181,7 +181,7 @@ template <class Slots>
   if (out.contact) {
     const double basis = friction_limit_basis(policies.friction_limit, elastic.force, damping,
                                               cohesion.force, cohesion.pulloff_force);
-    const TangentialInput t_in{elastic, eta, basis};
+    const TangentialInput t_in{elastic, eta, basis, cohesion.contact_radius};
     tangential = slots.tangential([&](const auto& m) { return m.evaluate(in, t_in, next); });
     rolling = slots.rolling([&](const auto& m) { return m.evaluate(in, basis, next); });
     next.max_overlap = std::max(committed.max_overlap, g.overlap);

@@ -48,6 +48,10 @@ constexpr std::array<std::pair<TangentialHistory, std::string_view>, 2> kHistory
     {TangentialHistory::project_rescale, "project_rescale"},
     {TangentialHistory::increment_project, "increment_project"},
 }};
+constexpr std::array<std::pair<MindlinRadius, std::string_view>, 2> kMindlinRadius{{
+    {MindlinRadius::overlap, "overlap"},
+    {MindlinRadius::contact_radius, "contact_radius"},
+}};
 
 }  // namespace
 
@@ -63,5 +67,7 @@ std::string_view to_string(TangentialHistory p) noexcept { return name_of(kHisto
 std::optional<TangentialHistory> parse_tangential_history(std::string_view k) noexcept {
   return value_of(kHistory, k);
 }
+std::string_view to_string(MindlinRadius p) noexcept { return name_of(kMindlinRadius, p); }
+std::optional<MindlinRadius> parse_mindlin_radius(std::string_view k) noexcept { return value_of(kMindlinRadius, k); }
 
 }  // namespace dem

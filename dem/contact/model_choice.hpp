@@ -44,6 +44,12 @@ enum class TangentialHistory {
   increment_project,
 };
 
+/// The contact radius a in Mindlin's tangential stiffness k_t ∝ G* a (docs/physics-tangential.md).
+enum class MindlinRadius {
+  overlap,         ///< a = √(R* δ), the Hertz radius of the body overlap (default; thesis eq 3.25)
+  contact_radius,  ///< the cohesion law's contact radius where it sets one (an attached JKR neck), else √(R* δ): LAMMPS pair granular
+};
+
 /// Keywords of the sub-model chosen for each slot and the named policies, as a case file gives
 /// them ([model] table).
 struct ModelChoice {
@@ -58,6 +64,7 @@ struct ModelChoice {
   WallLeverArm wall_lever_arm = WallLeverArm::contact_point;
   PairLeverArm pair_lever_arm = PairLeverArm::contact_point;
   TangentialHistory tangential_history = TangentialHistory::project_rescale;
+  MindlinRadius mindlin_radius = MindlinRadius::overlap;
   /// Bodies exactly touching (δ = 0) are in contact, so the dashpot and friction act there
   /// (YADE's Ig2/Law2 keep δ ≥ 0); default false: contact needs δ > 0. Set by matched runs only.
   bool contact_at_zero_overlap = false;
@@ -83,5 +90,9 @@ std::optional<PairLeverArm> parse_pair_lever_arm(std::string_view keyword) noexc
 std::string_view to_string(TangentialHistory p) noexcept;
 /// Tangential-history rule named `keyword`, or empty.
 std::optional<TangentialHistory> parse_tangential_history(std::string_view keyword) noexcept;
+/// Case-file keyword of a Mindlin-radius policy.
+std::string_view to_string(MindlinRadius p) noexcept;
+/// Mindlin-radius policy named `keyword`, or empty.
+std::optional<MindlinRadius> parse_mindlin_radius(std::string_view keyword) noexcept;
 
 }  // namespace dem

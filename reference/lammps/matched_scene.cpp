@@ -18,6 +18,8 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   matched.model.wall_lever_arm = dem::WallLeverArm::radius;
   // pair granular: contact-point velocity with r, torque with r − δ/2.
   matched.model.pair_lever_arm = dem::PairLeverArm::radius_velocity;
+  // pair granular mindlin: k_t scales with the normal model's contact radius, the JKR one under jkr.
+  matched.model.mindlin_radius = dem::MindlinRadius::contact_radius;
   // pair granular jkr: the neck breaks at the load-controlled pull-off overlap δ_f.
   matched.model.jkr_rupture = dem::JkrRupture::load;
   return matched;

@@ -232,6 +232,15 @@ SlotProblem map_damping(const dem::PairLaw& law, const PairContext& c, GranularC
 /// docs/engines.md).
 SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
   const bool adhesive = adhesive_normal(law.cohesion);
+  if (std::holds_alternative<dem::DmtCohesion>(law.cohesion) && !std::holds_alternative<dem::NoTangential>(law.tangential)) {
+    // pair granular (and fix wall/gran) of 29 Sep 2021 take the DMT Coulomb limit as
+    // |F_ne + 2·4πγR| with γ read from a variable that only the JKR branches assign: for a DMT
+    // pair it is uninitialised, so LAMMPS' friction limit is undefined (docs/engines.md, B11).
+    return std::string(
+        "LAMMPS driver: a tangential law with cohesion 'dmt' is not mapped (pair granular 29 Sep 2021 "
+        "computes the DMT friction limit |F_ne + 2 F_pulloff| from a surface-energy variable it sets "
+        "only for jkr pairs, so LAMMPS' Coulomb limit is undefined for dmt)");
+  }
   return std::visit(
       Overloaded{
           [&](const dem::NoTangential&) -> SlotProblem {

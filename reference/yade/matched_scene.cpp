@@ -5,17 +5,22 @@
 #include "reference/yade/matched_calibration.hpp"
 #include "reference/yade/model_mapping.hpp"
 #include "reference/yade/restitution_calibration.hpp"
+#include "reference/yade/run_plan.hpp"
 #include "cases/time_step.hpp"
 
 namespace reference::yade {
 
 /// YADE 2023.02a: NewtonIntegrator is leapfrog with half-step velocities, and the velocity a
-/// script gives is taken as v(−Δt/2). The YADE driver leaves the velocities of such a scene
-/// unchanged, so both engines start from the same v(−Δt/2). The sub-models and policies are
-/// replaced by the variants the mapped YADE law computes (model_mapping.hpp).
+/// script gives is taken as v(−Δt/2). The matched core starts from exactly the velocities the
+/// native YADE run is given (start_velocities: v(0) − Δt/2·g for a sphere that starts free of
+/// contacts under gravity, v(0) otherwise), as leapfrog with given half-step velocities. The
+/// sub-models and policies are replaced by the variants the mapped YADE law computes
+/// (model_mapping.hpp).
 cases::Scene matched_scene(const cases::Scene& scene) {
   cases::Scene matched = scene;
   matched.integration.timestep = core_setup(scene).simulation.timestep;
+  const StartVelocities start = start_velocities(scene, *matched.integration.timestep);
+  for (std::size_t i = 0; i < matched.particles.size(); ++i) matched.particles[i].velocity = start.velocity[i];
   matched.integration.scheme = dem::SchemeId::leapfrog;
   matched.integration.leapfrog_start = dem::LeapfrogStart::given_is_half_step;
   // FrictViscoPhys: the dashpot sees α·u_n, α = (r_p + r_q)/(r_p + r_q − δ) (2r/(2r − δ), wall).

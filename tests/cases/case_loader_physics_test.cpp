@@ -21,6 +21,7 @@ clamp_tensile = true
 friction_limit = "elastic_damping"
 jkr_rupture = "load"
 wall_lever_arm = "radius"
+mindlin_radius = "contact_radius"
 
 [materials.lactose]
 density = 1550.0
@@ -95,6 +96,21 @@ TEST(CaseLoaderPhysics, ReadsPoliciesIntoTheModelChoice) {
   EXPECT_EQ(s.model.friction_limit, dem::FrictionLimit::elastic_damping);
   EXPECT_EQ(s.model.jkr_rupture, dem::JkrRupture::load);
   EXPECT_EQ(s.model.wall_lever_arm, dem::WallLeverArm::radius);
+  EXPECT_EQ(s.model.mindlin_radius, dem::MindlinRadius::contact_radius);
+}
+
+TEST(CaseLoaderPhysics, AnUnknownMindlinRadiusIsAnErrorNamingTheKey) {
+  std::string text(kCase);
+  const std::string from = "mindlin_radius = \"contact_radius\"";
+  text.replace(text.find(from), from.size(), "mindlin_radius = \"jkr\"");
+  try {
+    (void)cases::load_case_text(text, "p.toml");
+    FAIL() << "accepted mindlin_radius = 'jkr'";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("mindlin_radius"), std::string::npos) << what;
+    EXPECT_NE(what.find("contact_radius"), std::string::npos) << what;  // the admissible values
+  }
 }
 
 TEST(CaseLoaderPhysics, BoxBecomesInnerPlanesWithoutItsOpenFaces) {

@@ -475,3 +475,43 @@ TEST(JkrSimulation, MechanicalEnergyNeverRisesInADampedAdhesiveCollision) {
 }
 
 }  // namespace
+
+namespace cohesion_jkr_mindlin_radius {
+
+using namespace cohesion_jkr_test;
+
+/// Tangential force of an attached JKR contact at overlap δ with a stored slip along y, for a
+/// Mindlin law (friction high enough never to cap) under the given Mindlin-radius policy.
+double mindlin_force(double delta, dem::MindlinRadius policy, bool thesis) {
+  const JkrParameters p = benchmark();
+  dem::PairLaw law{dem::HertzNormal{p.effective_modulus}, dem::NoDamping{}, dem::NoTangential{},
+                   dem::JkrCohesion{p.effective_modulus, p.surface_energy}, dem::NoRolling{}, {}};
+  const dem::MindlinParameters m{1e8, 1e6, 0.0};
+  if (thesis) {
+    law.tangential = dem::MindlinTangential{m};
+  } else {
+    law.tangential = dem::Mindlin8GTangential{m};
+  }
+  law.policies.mindlin_radius = policy;
+  dem::ContactHistory attached;
+  attached.attached = true;
+  attached.tangential_slip = dem::Vec3(0.0, 1e-7, 0.0);
+  return dem::evaluate_contact(law, pair_at(delta), attached, 0.0).force_on_p[1];
+}
+
+TEST(JkrMindlinRadius, ContactRadiusPolicyPutsTheJkrRadiusIntoTheStiffness) {
+  const JkrParameters p = benchmark();
+  for (const double delta : {-5e-7, 1e-6, 2e-5, 2e-4}) {
+    const double a = jkr_contact_radius(delta, p);
+    // k = 8 G* a (mindlin_8g) or 16/3 G* a (mindlin) with a the JKR radius; F = −k ς.
+    EXPECT_NEAR(mindlin_force(delta, dem::MindlinRadius::contact_radius, false), -8.0 * 1e8 * a * 1e-7,
+                1e-9 * 8.0 * 1e8 * a * 1e-7) << delta;
+    EXPECT_NEAR(mindlin_force(delta, dem::MindlinRadius::contact_radius, true), -16.0 / 3.0 * 1e8 * a * 1e-7,
+                1e-9 * 8.0 * 1e8 * a * 1e-7) << delta;
+    // The default takes the Hertz radius of the body overlap: none at δ ≤ 0.
+    const double hertz = delta > 0.0 ? std::sqrt(2.5e-3 * delta) : 0.0;
+    EXPECT_DOUBLE_EQ(mindlin_force(delta, dem::MindlinRadius::overlap, false), -8.0 * 1e8 * hertz * 1e-7) << delta;
+  }
+}
+
+}  // namespace cohesion_jkr_mindlin_radius

@@ -20,6 +20,18 @@ namespace dem::laws {
   return 16.0 / 3.0 * effective_shear_modulus * mindlin_contact_radius(reduced_radius, overlap);
 }
 
+/// The thesis' Mindlin stiffness 16/3 G* a at a given contact radius a [m] (eq 3.25 with a
+/// instead of √(R* δ): the JKR radius when the contact's cohesion law sets it) [N/m].
+[[nodiscard]] inline double mindlin_thesis_stiffness_at_radius(double effective_shear_modulus, double a) noexcept {
+  return 16.0 / 3.0 * effective_shear_modulus * a;
+}
+
+/// Mindlin's initial stiffness 8 G* a at a given contact radius a [m] (LAMMPS `tangential
+/// mindlin` scales k_t by its normal model's a: √(R* δ), or the JKR radius under jkr) [N/m].
+[[nodiscard]] inline double mindlin_stiffness_at_radius(double effective_shear_modulus, double a) noexcept {
+  return 8.0 * effective_shear_modulus * a;
+}
+
 /// Mindlin's initial tangential stiffness k_t = 8 G* a, a = √(R* δ) [N/m] (Mindlin 1949; the
 /// form of LAMMPS `tangential mindlin` and YADE Ip2_FrictMat_FrictMat_MindlinPhys). 0 out of contact.
 [[nodiscard]] inline double mindlin_stiffness(double effective_shear_modulus, double reduced_radius,

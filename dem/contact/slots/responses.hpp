@@ -27,6 +27,7 @@ struct ContactPolicies {
   JkrRupture jkr_rupture = JkrRupture::displacement;
   bool contact_at_zero_overlap = false;  ///< δ = 0 counts as contact (ModelChoice)
   TangentialHistory tangential_history = TangentialHistory::project_rescale;
+  MindlinRadius mindlin_radius = MindlinRadius::overlap;
 };
 
 /// Everything a sub-model may read about one contact at one evaluation.
@@ -70,6 +71,7 @@ struct TangentialInput {
   const NormalResponse& elastic;
   double damping_coefficient;  ///< normal dashpot η_n [kg/s] of this contact
   double limit_basis;          ///< the normal force the Coulomb limit is based on [N], ≥ 0
+  double contact_radius = 0.0; ///< the cohesion law's contact radius a [m], 0 when it sets none
 };
 
 /// What a tangential sub-model returns.

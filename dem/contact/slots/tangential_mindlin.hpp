@@ -9,6 +9,16 @@
 
 namespace dem {
 
+/// The contact radius a of Mindlin's stiffness under the model's MindlinRadius policy: the
+/// cohesion law's radius (an attached JKR neck) under `contact_radius` when it sets one, else
+/// √(R* δ) [m].
+[[nodiscard]] inline double mindlin_radius(const ContactInput& in, const TangentialInput& t_in) noexcept {
+  if (in.policies.mindlin_radius == MindlinRadius::contact_radius && t_in.contact_radius > 0.0) {
+    return t_in.contact_radius;
+  }
+  return laws::mindlin_contact_radius(in.g.reduced_radius, in.g.overlap);
+}
+
 /// Mixed parameters of a Mindlin tangential sub-model.
 struct MindlinParameters {
   double shear_modulus;  ///< G* [Pa] (eq 3.25)
@@ -50,7 +60,7 @@ struct MindlinTangential {
   /// Tangential force on p; updates next.tangential_slip.
   [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
                                             ContactHistory& next) const noexcept {
-    const double k = laws::mindlin_thesis_stiffness(p.shear_modulus, in.g.reduced_radius, in.g.overlap);
+    const double k = laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, mindlin_radius(in, t_in));
     return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
   }
 };
@@ -79,7 +89,7 @@ struct Mindlin8GTangential {
   /// Tangential force on p; updates next.tangential_slip.
   [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
                                             ContactHistory& next) const noexcept {
-    const double k = laws::mindlin_stiffness(p.shear_modulus, in.g.reduced_radius, in.g.overlap);
+    const double k = laws::mindlin_stiffness_at_radius(p.shear_modulus, mindlin_radius(in, t_in));
     return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
   }
 };
