@@ -41,6 +41,14 @@ TEST(MatchedRegression, JkrWithMindlinOnTheContactRadiusAgreesWithLammps) {
             1e-8);
 }
 
+TEST(MatchedRegression, FrictionalSpinningPairsAgreeWithLammps) {
+  if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "LAMMPS not installed";
+  EXPECT_LE(matched_deviation(regression("lammps_spinning_spring_coulomb_pair"), reference::LammpsEngine{}, "lammps"),
+            1e-8);
+  EXPECT_LE(matched_deviation(regression("lammps_hertz_mindlin_falling_onto_floor"), reference::LammpsEngine{}, "lammps"),
+            1e-8);
+}
+
 TEST(MatchedRegression, JkrWithMindlinOnTheOverlapIsNotApplicableForLammps) {
   // The same scene with the core's default radius: LAMMPS cannot express it.
   if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "LAMMPS not installed";
