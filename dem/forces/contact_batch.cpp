@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "dem/contact/laws/hertz.hpp"
+#include "dem/contact/laws/linear_spring.hpp"
+
 namespace dem {
 namespace {
 
@@ -73,10 +76,9 @@ template <BatchNormal Normal, bool IncrementProject>
     // Normal spring (zero force where the lane is not in contact; such lanes are discarded).
     double elastic = 0.0;
     if constexpr (Normal == BatchNormal::linear) {
-      elastic = k_normal * overlap;
+      elastic = laws::linear_spring_force(k_normal, overlap);
     } else {
-      const double reduced_radius = rp * rq / (rp + rq);
-      elastic = overlap > 0.0 ? 4.0 / 3.0 * k_normal * std::sqrt(reduced_radius) * overlap * std::sqrt(overlap) : 0.0;
+      elastic = laws::hertz_force(k_normal, rp * rq / (rp + rq), overlap);
     }
     // Mass-scaled dashpot; none between two fixed spheres (m* = ∞).
     const double eta = std::isfinite(reduced_mass) ? rate * reduced_mass : 0.0;

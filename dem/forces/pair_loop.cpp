@@ -23,10 +23,21 @@ using HertzMindlinLaw = StaticSlots<HertzNormal, TsujiDamping, Mindlin8GTangenti
 using LinearCohesiveLaw = StaticSlots<LinearNormal, RestitutionDamping, SpringCoulombTangential, LinearCohesion, NoRolling>;
 using JkrLaw = StaticSlots<HertzNormal, TsujiDamping, SpringCoulombTangential, JkrCohesion, NoRolling>;
 
-/// The law kinds the batched kernel evaluates (contact_batch.hpp), with their normal spring.
-template <class Slots> inline constexpr bool kBatched = false;
-template <> inline constexpr bool kBatched<ChuteLaw> = true;
-template <> inline constexpr bool kBatched<HertzBoxLaw> = true;
+/// The law kinds the batched kernel evaluates (contact_batch.hpp) and their normal spring: the
+/// slot type and the kernel's name for it. Other kinds are not batched.
+template <class Slots> struct BatchFamily {
+  static constexpr bool kBatched = false;
+};
+template <> struct BatchFamily<ChuteLaw> {
+  static constexpr bool kBatched = true;
+  using Normal = LinearNormal;
+  static constexpr BatchNormal kNormal = BatchNormal::linear;
+};
+template <> struct BatchFamily<HertzBoxLaw> {
+  static constexpr bool kBatched = true;
+  using Normal = HertzNormal;
+  static constexpr BatchNormal kNormal = BatchNormal::hertz;
+};
 
 /// A batched law's parameters (the caller knows it holds the batch family's sub-models).
 template <class Normal>
@@ -91,6 +102,21 @@ template <bool Shifted>
   return {pj.x, pj.y, pj.z};
 }
 
+/// Adds a pair's force on i (−force on j) and its torques on i and j to the sums.
+inline void apply_pair(double* __restrict force, double* __restrict torque, std::uint32_t i, std::uint32_t j,
+                       const Vec3& f, const Vec3& torque_i, const Vec3& torque_j) noexcept {
+  double* __restrict fi = force + 3 * static_cast<std::size_t>(i);
+  double* __restrict fj = force + 3 * static_cast<std::size_t>(j);
+  double* __restrict ti = torque + 3 * static_cast<std::size_t>(i);
+  double* __restrict tj = torque + 3 * static_cast<std::size_t>(j);
+  for (int a = 0; a < 3; ++a) {
+    fi[a] += f[a];
+    fj[a] -= f[a];
+    ti[a] += torque_i[a];
+    tj[a] += torque_j[a];
+  }
+}
+
 /// Evaluates the pair of entry k (owner i) and applies its forces, energies (when `Energies`)
 /// and, on commit, its history, which goes to the slab's next free slot `next`.
 template <class Slots, bool Energies>
@@ -119,22 +145,7 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
     }
     return;
   }
-  double* __restrict fi = force + 3 * static_cast<std::size_t>(i);
-  double* __restrict fj = force + 3 * static_cast<std::size_t>(j);
-  double* __restrict ti = torque + 3 * static_cast<std::size_t>(i);
-  double* __restrict tj = torque + 3 * static_cast<std::size_t>(j);
-  fi[0] += c.force_on_p[0];
-  fi[1] += c.force_on_p[1];
-  fi[2] += c.force_on_p[2];
-  fj[0] -= c.force_on_p[0];
-  fj[1] -= c.force_on_p[1];
-  fj[2] -= c.force_on_p[2];
-  ti[0] += c.torque_on_p[0];
-  ti[1] += c.torque_on_p[1];
-  ti[2] += c.torque_on_p[2];
-  tj[0] += c.torque_on_q[0];
-  tj[1] += c.torque_on_q[1];
-  tj[2] += c.torque_on_q[2];
+  apply_pair(force, torque, i, j, c.force_on_p, c.torque_on_p, c.torque_on_q);
   if constexpr (Energies) {
     t.elastic += c.elastic_energy;
     t.cohesive += c.cohesive_energy;
@@ -215,24 +226,8 @@ void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::ui
       if (in.commit) list.contact[k] = kNoContact;
       continue;
     }
-    const std::uint32_t i = owners[g];
-    const std::uint32_t j = list.partners[k] & kPartnerMask;
-    double* __restrict fi = force + 3 * static_cast<std::size_t>(i);
-    double* __restrict fj = force + 3 * static_cast<std::size_t>(j);
-    double* __restrict ti = torque + 3 * static_cast<std::size_t>(i);
-    double* __restrict tj = torque + 3 * static_cast<std::size_t>(j);
-    fi[0] += b.fx[g];
-    fi[1] += b.fy[g];
-    fi[2] += b.fz[g];
-    fj[0] -= b.fx[g];
-    fj[1] -= b.fy[g];
-    fj[2] -= b.fz[g];
-    ti[0] += b.tpx[g];
-    ti[1] += b.tpy[g];
-    ti[2] += b.tpz[g];
-    tj[0] += b.tqx[g];
-    tj[1] += b.tqy[g];
-    tj[2] += b.tqz[g];
+    apply_pair(force, torque, owners[g], list.partners[k] & kPartnerMask, Vec3(b.fx[g], b.fy[g], b.fz[g]),
+               Vec3(b.tpx[g], b.tpy[g], b.tpz[g]), Vec3(b.tqx[g], b.tqy[g], b.tqz[g]));
     if (in.commit) {
       list.contact[k] = next;
       list.next_slips[next] = Vec3(b.sx[g], b.sy[g], b.sz[g]);
@@ -293,27 +288,26 @@ template <class Slots, bool Energies, bool Periodic>
   std::uint32_t count = 0;
   // Runs without an energy ledger evaluate through the batched kernel when it covers the law
   // (it gives the same bits as evaluate_contact; its lanes are filled here, outside the kernel).
-  constexpr bool kBatchable = kBatched<Slots> && !Energies;
-  using BatchNormalModel = std::conditional_t<std::is_same_v<Slots, HertzBoxLaw>, HertzNormal, LinearNormal>;
+  using Family = BatchFamily<Slots>;
+  constexpr bool kBatchable = Family::kBatched && !Energies;
   [[maybe_unused]] BatchPolicies policies;
   [[maybe_unused]] bool uniform = true;
   std::conditional_t<kBatchable, ContactBatch, char> batch;
   [[maybe_unused]] const bool batched = kBatchable && in.lever_arm != PairLeverArm::radius_velocity;
   if constexpr (kBatchable) {
     const PairLaw& first = in.table->law(0, 0);
-    policies = batch_policies(std::is_same_v<BatchNormalModel, HertzNormal> ? BatchNormal::hertz : BatchNormal::linear,
-                              first.policies, in.lever_arm);
+    policies = batch_policies(Family::kNormal, first.policies, in.lever_arm);
     uniform = in.table->material_count() == 1;
     if (batched && uniform) {
-      const BatchLaw law = batch_law<BatchNormalModel>(first);
+      const BatchLaw law = batch_law<typename Family::Normal>(first);
       for (std::uint32_t g = 0; g < kContactBatch; ++g) set_law(batch, g, law);
     }
   }
   const auto flush = [&] {
     if constexpr (kBatchable) {
       if (batched) {
-        evaluate_batch<BatchNormalModel>(in, view, gathered_owner.data(), gathered_entry.data(), count, force,
-                                         torque, next, batch, policies, uniform);
+        evaluate_batch<typename Family::Normal>(in, view, gathered_owner.data(), gathered_entry.data(), count,
+                                                force, torque, next, batch, policies, uniform);
         count = 0;
         return;
       }

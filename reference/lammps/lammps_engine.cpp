@@ -78,13 +78,6 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
         "LAMMPS driver: pair_lever_arm = 'radius' is gran/hooke/history's convention; the driver writes "
         "pair granular, whose torque lever arm is r − δ/2 (its contact-point velocity uses r)");
   }
-  const bool mindlin = scene.model.tangential == "mindlin" || scene.model.tangential == "mindlin_8g";
-  if (mindlin && scene.model.cohesion == "jkr" && scene.model.mindlin_radius == dem::MindlinRadius::overlap) {
-    s.reasons.emplace_back(
-        "LAMMPS driver: tangential 'mindlin' with cohesion 'jkr' is not mapped with mindlin_radius = 'overlap': "
-        "pair granular scales k_t with the JKR contact radius a, not sqrt(R* delta) (set model.mindlin_radius = "
-        "'contact_radius' to compare)");
-  }
   if (scene.model.tangential_history == dem::TangentialHistory::increment_project) {
     s.reasons.emplace_back(
         "LAMMPS driver: tangential_history = 'increment_project' is gran/hooke/history's rule; the "

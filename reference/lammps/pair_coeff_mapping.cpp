@@ -241,6 +241,19 @@ SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
         "computes the DMT friction limit |F_ne + 2 F_pulloff| from a surface-energy variable it sets "
         "only for jkr pairs, so LAMMPS' Coulomb limit is undefined for dmt)");
   }
+  // pair granular's mindlin multiplies k_t by its normal model's contact radius: the JKR one
+  // under jkr, which the core uses only under mindlin_radius = 'contact_radius'.
+  const auto jkr_radius = [&](std::string_view keyword) -> SlotProblem {
+    if (!std::holds_alternative<dem::JkrCohesion>(law.cohesion) ||
+        law.policies.mindlin_radius != dem::MindlinRadius::overlap) {
+      return std::nullopt;
+    }
+    return fmt::format(
+        "LAMMPS driver: tangential '{}' with cohesion 'jkr' is not mapped with mindlin_radius = 'overlap': "
+        "pair granular scales k_t with the JKR contact radius a, not sqrt(R* delta) (set model.mindlin_radius = "
+        "'contact_radius' to compare)",
+        keyword);
+  };
   return std::visit(
       Overloaded{
           [&](const dem::NoTangential&) -> SlotProblem {
@@ -258,12 +271,12 @@ SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
             out.tangential = fmt::format("mindlin {:.17g} {:.17g} {:.17g}",
                                          16.0 / 3.0 * m.p.shear_modulus, m.p.damping_ratio,
                                          m.p.friction);
-            return std::nullopt;
+            return jkr_radius(m.kKeyword);
           },
           [&](const dem::Mindlin8GTangential& m) -> SlotProblem {
             out.tangential = fmt::format("mindlin {:.17g} {:.17g} {:.17g}",
                                          8.0 * m.p.shear_modulus, m.p.damping_ratio, m.p.friction);
-            return std::nullopt;
+            return jkr_radius(m.kKeyword);
           }},
       law.tangential);
 }
