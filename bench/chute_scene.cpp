@@ -27,6 +27,7 @@ dem::SimulationSetup chute_setup(const LammpsData& data, int threads) {
   s.model.friction_limit = dem::FrictionLimit::elastic_damping;
   s.model.pair_lever_arm = dem::PairLeverArm::radius;
   s.model.tangential_history = dem::TangentialHistory::increment_project;
+  s.model.unloaded_slider = dem::UnloadedSlider::zero;  // gran/hooke/history's `shrmag != 0` rule
   for (const DataAtom& a : data.atoms) {
     const double r = 0.5 * a.diameter;
     s.particles.push_back({r, r, a.density, 0, a.position, a.velocity, a.angular_velocity, a.type == 2});

@@ -31,7 +31,7 @@ constexpr std::array kMixingRules{dem::MixingRule::harmonic, dem::MixingRule::ar
 /// Keys of [model] that name policies rather than sub-models.
 constexpr auto kPolicyKeys = std::to_array<std::string_view>(
     {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm", "pair_lever_arm", "tangential_history",
-     "mindlin_radius"});
+     "mindlin_radius", "unloaded_slider", "adhesive_dashpot", "mindlin_form"});
 
 /// The enumerator a policy keyword names; `names` lists the keywords in enumerator order.
 template <class Enum, class Parse>
@@ -44,7 +44,8 @@ Enum read_policy(const Value& value, std::span<const std::string_view> names, Pa
 void read_policies(const Table& model, dem::ModelChoice& choice) {
   if (const auto v = model.find("clamp_tensile")) choice.clamp_tensile = v->boolean();
   if (const auto v = model.find("friction_limit")) {
-    constexpr auto names = std::to_array<std::string_view>({"total", "elastic", "elastic_damping", "jkr_shifted"});
+    constexpr auto names = std::to_array<std::string_view>(
+        {"total", "elastic", "elastic_damping", "jkr_shifted", "total_plus_pulloff"});
     choice.friction_limit = read_policy<dem::FrictionLimit>(
         *v, names, [](std::string_view k) { return dem::parse_friction_limit(k); }, "friction-limit policy");
   }
@@ -54,17 +55,17 @@ void read_policies(const Table& model, dem::ModelChoice& choice) {
         *v, names, [](std::string_view k) { return dem::parse_jkr_rupture(k); }, "JKR rupture policy");
   }
   if (const auto v = model.find("wall_lever_arm")) {
-    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius"});
+    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius", "yade_incident"});
     choice.wall_lever_arm = read_policy<dem::WallLeverArm>(
         *v, names, [](std::string_view k) { return dem::parse_wall_lever_arm(k); }, "wall lever-arm policy");
   }
   if (const auto v = model.find("pair_lever_arm")) {
-    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius", "radius_velocity"});
+    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius", "radius_velocity", "yade_incident"});
     choice.pair_lever_arm = read_policy<dem::PairLeverArm>(
         *v, names, [](std::string_view k) { return dem::parse_pair_lever_arm(k); }, "pair lever-arm policy");
   }
   if (const auto v = model.find("tangential_history")) {
-    constexpr auto names = std::to_array<std::string_view>({"project_rescale", "increment_project"});
+    constexpr auto names = std::to_array<std::string_view>({"project_rescale", "increment_project", "yade_rotate"});
     choice.tangential_history = read_policy<dem::TangentialHistory>(
         *v, names, [](std::string_view k) { return dem::parse_tangential_history(k); }, "tangential-history rule");
   }
@@ -72,6 +73,21 @@ void read_policies(const Table& model, dem::ModelChoice& choice) {
     constexpr auto names = std::to_array<std::string_view>({"overlap", "contact_radius"});
     choice.mindlin_radius = read_policy<dem::MindlinRadius>(
         *v, names, [](std::string_view k) { return dem::parse_mindlin_radius(k); }, "Mindlin-radius policy");
+  }
+  if (const auto v = model.find("unloaded_slider")) {
+    constexpr auto names = std::to_array<std::string_view>({"cap", "zero"});
+    choice.unloaded_slider = read_policy<dem::UnloadedSlider>(
+        *v, names, [](std::string_view k) { return dem::parse_unloaded_slider(k); }, "unloaded-slider policy");
+  }
+  if (const auto v = model.find("mindlin_form")) {
+    constexpr auto names = std::to_array<std::string_view>({"total", "incremental"});
+    choice.mindlin_form = read_policy<dem::MindlinForm>(
+        *v, names, [](std::string_view k) { return dem::parse_mindlin_form(k); }, "Mindlin-form policy");
+  }
+  if (const auto v = model.find("adhesive_dashpot")) {
+    constexpr auto names = std::to_array<std::string_view>({"clamp", "pulloff_cap"});
+    choice.adhesive_dashpot = read_policy<dem::AdhesiveDashpot>(
+        *v, names, [](std::string_view k) { return dem::parse_adhesive_dashpot(k); }, "adhesive-dashpot policy");
   }
 }
 

@@ -83,6 +83,10 @@ struct RunResult {
   /// Set on a reference code's native run once its time step was checked by halving.
   std::optional<TimeStepRefinement> refinement;
   std::vector<std::string> warnings;
+  /// Matched runs: the trace of the same run started one ulp away (every nonzero initial
+  /// velocity component moved to the next double away from zero). How fast it drifts from
+  /// `trace` is the scene's own round-off sensitivity (docs/metrics.md, "Round-off horizon").
+  std::optional<Trace> roundoff_twin;
 };
 
 }  // namespace cases

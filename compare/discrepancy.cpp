@@ -192,14 +192,28 @@ void append_matched_rows(const cases::Scene& scene, const std::vector<cases::Run
     Comparison& row = add("trace_deviation", {0.0, 1e-8});
     if (failed(row)) continue;
     std::string problem;
-    row.value = trace_deviation(scene, run, *target, problem);
-    if (!row.value) {
+    const std::optional<TraceDeviation> d = trace_deviation(scene, run, *target, problem);
+    if (!d) {
       row.note = problem;
       continue;
     }
+    if (d->horizon < d->rows && 10 * d->horizon < d->rows) {
+      // Less than a tenth of the run lies before the horizon: too little to judge anything by.
+      row.status = Status::not_applicable;
+      row.note = fmt::format("{} t = {:.4g} s, row {} of {}: under a tenth of the run can be compared at round-off "
+                             "(whole-trace deviation {:.3g})",
+                             kRoundoffHorizonNote, d->horizon_time, d->horizon, d->rows, d->whole);
+      continue;
+    }
+    row.value = d->value;
     row.reference_value = 0.0;
-    row.abs_diff = *row.value;
-    row.status = judge(*row.value, 0.0, row.tolerance);
+    row.abs_diff = d->value;
+    row.status = judge(d->value, 0.0, row.tolerance);
+    if (d->horizon < d->rows) {
+      row.note = fmt::format("{} t = {:.4g} s, row {} of {}: a one-ulp nudge of the start drifts past {:.0e} "
+                             "there, so later rows are not compared (whole-trace deviation {:.3g})",
+                             kRoundoffHorizonNote, d->horizon_time, d->horizon, d->rows, kRoundoffDrift, d->whole);
+    }
   }
 }
 

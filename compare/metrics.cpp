@@ -292,8 +292,31 @@ double from_trace(const std::string& name, const cases::Scene& scene, const case
 
 }  // namespace
 
-std::optional<double> trace_deviation(const cases::Scene& scene, const cases::RunResult& run,
-                                      const cases::RunResult& reference, std::string& problem) {
+namespace {
+
+/// Row by row, the largest |x_a − x_b| over every traced particle and coordinate; empty when the
+/// traces have no traced position in common. The traces must have the same number of rows.
+std::optional<std::vector<double>> position_gaps(const cases::Scene& scene, const cases::Trace& a,
+                                                 const cases::Trace& b) {
+  std::vector<double> gaps(a.rows(), 0.0);
+  bool any = false;
+  for (const std::size_t i : scene.output.trace_particles) {
+    for (const char* q : {"x", "y", "z"}) {
+      const auto* ca = a.column(cases::particle_column(i, q));
+      const auto* cb = b.column(cases::particle_column(i, q));
+      if (ca == nullptr || cb == nullptr) continue;
+      any = true;
+      for (std::size_t k = 0; k < gaps.size(); ++k) gaps[k] = std::max(gaps[k], std::abs((*ca)[k] - (*cb)[k]));
+    }
+  }
+  if (!any) return std::nullopt;
+  return gaps;
+}
+
+}  // namespace
+
+std::optional<TraceDeviation> trace_deviation(const cases::Scene& scene, const cases::RunResult& run,
+                                              const cases::RunResult& reference, std::string& problem) {
   const auto* t = run.trace.column("time");
   const auto* tr = reference.trace.column("time");
   if (t == nullptr || tr == nullptr || t->size() != tr->size() || t->empty()) {
@@ -306,18 +329,8 @@ std::optional<double> trace_deviation(const cases::Scene& scene, const cases::Ru
       return std::nullopt;
     }
   }
-  double worst = 0.0;
-  bool any = false;
-  for (const std::size_t i : scene.output.trace_particles) {
-    for (const char* q : {"x", "y", "z"}) {
-      const auto* a = run.trace.column(cases::particle_column(i, q));
-      const auto* b = reference.trace.column(cases::particle_column(i, q));
-      if (a == nullptr || b == nullptr) continue;
-      any = true;
-      for (std::size_t k = 0; k < a->size(); ++k) worst = std::max(worst, std::abs((*a)[k] - (*b)[k]));
-    }
-  }
-  if (!any) {
+  const auto gaps = position_gaps(scene, run.trace, reference.trace);
+  if (!gaps) {
     problem = "no traced particle positions in both traces";
     return std::nullopt;
   }
@@ -333,7 +346,37 @@ std::optional<double> trace_deviation(const cases::Scene& scene, const cases::Ru
     problem = "the reference trace never overlaps: no scale for the deviation";
     return std::nullopt;
   }
-  return worst / scale;
+  TraceDeviation d;
+  d.rows = gaps->size();
+  d.horizon = d.rows;
+  // The run's own sensitivity to round-off: the first row at which its twin, started one ulp
+  // away, has drifted past kRoundoffDrift. Rows from there on are not compared.
+  if (run.roundoff_twin) {
+    const cases::Trace& twin = *run.roundoff_twin;
+    const auto* tt = twin.column("time");
+    if (tt == nullptr || tt->size() != t->size()) {
+      problem = "the round-off twin's trace does not have the run's samples";
+      return std::nullopt;
+    }
+    const auto drift = position_gaps(scene, run.trace, twin);
+    if (!drift) {
+      problem = "the round-off twin's trace has no traced positions";
+      return std::nullopt;
+    }
+    for (std::size_t k = 0; k < drift->size(); ++k) {
+      if ((*drift)[k] / scale > kRoundoffDrift) {
+        d.horizon = k;
+        d.horizon_time = (*t)[k];
+        break;
+      }
+    }
+  }
+  for (std::size_t k = 0; k < d.rows; ++k) {
+    const double relative = (*gaps)[k] / scale;
+    d.whole = std::max(d.whole, relative);
+    if (k < d.horizon) d.value = std::max(d.value, relative);
+  }
+  return d;
 }
 
 std::optional<std::vector<double>> axis_displacement(const cases::Scene& scene,

@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cases/run_result.hpp"
@@ -35,11 +36,30 @@ MetricSet compute_metrics(const cases::Scene& scene, const cases::RunResult& run
 std::optional<std::vector<double>> axis_displacement(const cases::Scene& scene,
                                                      const cases::Trace& trace);
 
+/// How far a chaotic scene can be compared at round-off: the relative drift of a run's
+/// round-off twin (the same run started one ulp away) past which later trace rows are no longer
+/// compared (docs/metrics.md, "Round-off horizon"). A hundredth of the matched tolerance 1e-8.
+inline constexpr double kRoundoffDrift = 1e-10;
+
+/// How a matched trace_deviation row's note begins when the round-off horizon cut it short.
+inline constexpr std::string_view kRoundoffHorizonNote = "round-off horizon at";
+
+/// A matched trace deviation and the rows it covers.
+struct TraceDeviation {
+  double value = 0.0;    ///< the deviation over the rows before the round-off horizon
+  double whole = 0.0;    ///< the deviation over every row
+  std::size_t rows = 0;  ///< rows in the traces
+  std::size_t horizon = 0;  ///< first row not compared (= rows when the twin never drifted past kRoundoffDrift)
+  double horizon_time = 0.0;  ///< time of that row [s] (when horizon < rows)
+};
+
 /// Largest difference between two engines' traced positions, over every traced particle and
 /// row, divided by the compared contact's largest overlap in `reference` (docs/metrics.md,
-/// "Matched-numerics metric": the position trace relative to the max overlap). Empty with `problem`
-/// set when the traces are not sampled at the same times or have nothing to compare.
-std::optional<double> trace_deviation(const cases::Scene& scene, const cases::RunResult& run,
-                                      const cases::RunResult& reference, std::string& problem);
+/// "Matched-numerics metric": the position trace relative to the max overlap). When `run` carries
+/// a round-off twin, only the rows before the twin drifts past kRoundoffDrift count (the
+/// round-off horizon). Empty with `problem` set when the traces are not sampled at the same times
+/// or have nothing to compare.
+std::optional<TraceDeviation> trace_deviation(const cases::Scene& scene, const cases::RunResult& run,
+                                              const cases::RunResult& reference, std::string& problem);
 
 }  // namespace comparison

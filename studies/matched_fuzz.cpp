@@ -81,11 +81,40 @@ std::string vec(double x, double y, double z) { return fmt::format("[{:.17g}, {:
 
 }  // namespace
 
-FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) {
+namespace {
+
+/// The k-th draft of `seed`: draft 0 is the seed's own scene; later ones come from the seed
+/// mixed with k (splitmix64), named and labelled after the seed.
+FuzzScene draft(std::string_view code, std::uint64_t seed, int k);
+
+}  // namespace
+
+FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed, const ExpressibleFilter& expressible) {
+  // The seed's own stream decides whether its scene must be expressible.
+  std::mt19937_64 coin(seed ^ 0x9E3779B97F4A7C15ULL);
+  const bool must = std::uniform_real_distribution<double>(0.0, 1.0)(coin) < kExpressibleShare;
+  FuzzScene scene = draft(code, seed, 0);
+  for (int k = 1; must && k < kMaxDrafts && !expressible(scene); ++k) scene = draft(code, seed, k);
+  return scene;
+}
+
+FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) { return draft(code, seed, 0); }
+
+namespace {
+
+FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
   if (code != "lammps" && code != "yade") {
     throw std::invalid_argument(fmt::format("unknown reference code '{}' (known: lammps, yade)", code));
   }
-  std::mt19937_64 rng(seed);
+  std::uint64_t mixed = seed;
+  if (k > 0) {
+    // splitmix64 of seed + k: independent streams per draft.
+    mixed = seed + 0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(k);
+    mixed = (mixed ^ (mixed >> 30U)) * 0xBF58476D1CE4E5B9ULL;
+    mixed = (mixed ^ (mixed >> 27U)) * 0x94D049BB133111EBULL;
+    mixed ^= mixed >> 31U;
+  }
+  std::mt19937_64 rng(mixed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
   const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(unit(rng) * static_cast<double>(n)) % n; };
@@ -112,15 +141,23 @@ FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) {
   const std::set<std::string_view> keys = material_keys(model);
 
   std::string t;
-  t += fmt::format("# Random matched scene: code {}, seed {} (demwb fuzz-matched; docs/engines.md).\n\n", code, seed);
+  t += fmt::format("# Random matched scene: code {}, seed {}{} (demwb fuzz-matched; docs/engines.md).\n\n", code, seed,
+                   k > 0 ? fmt::format(", draft {}", k + 1) : std::string());
   t += fmt::format("[case]\nname = \"{}\"\ndescription = \"random scene {} of the matched fuzz against {}\"\n\n",
                    scene.name, seed, code);
-  // The policy a code's mapping may ask for: half the scenes take the Mindlin stiffness on the
-  // cohesion law's contact radius (LAMMPS' convention under JKR).
-  const bool contact_radius = unit(rng) < 0.5;
+  // The policies the code's native mapping asks a case to state before it compares: half the
+  // scenes take the code's convention (LAMMPS: the Mindlin stiffness on the JKR contact radius;
+  // YADE: under DMT, the dashpot capped at the pull-off force and the friction limit raised by
+  // it), half the defaults, so that both
+  // the comparisons and the n/a answers are exercised.
+  const bool code_policies = unit(rng) < 0.5;
+  const bool lammps = code == "lammps";
   t += fmt::format("[model]\nnormal = \"{}\"\ndamping = \"{}\"\ntangential = \"{}\"\ncohesion = \"{}\"\nrolling = \"{}\"\n"
-                   "mindlin_radius = \"{}\"\n\n",
-                   model[0], model[1], model[2], model[3], model[4], contact_radius ? "contact_radius" : "overlap");
+                   "mindlin_radius = \"{}\"\nadhesive_dashpot = \"{}\"\n{}\n",
+                   model[0], model[1], model[2], model[3], model[4],
+                   code_policies && lammps ? "contact_radius" : "overlap",
+                   code_policies && !lammps ? "pulloff_cap" : "clamp",
+                   code_policies && !lammps ? "friction_limit = \"total_plus_pulloff\"\n" : "");
 
   const int materials = unit(rng) < 0.5 ? 1 : 2;
   for (int m = 0; m < materials; ++m) {
@@ -189,9 +226,9 @@ FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) {
   const double ly = spheres[1].y - spheres[0].y;
   const double lz = spheres[1].z - spheres[0].z;
   const double l = std::sqrt(lx * lx + ly * ly + lz * lz);
-  for (std::size_t k = 0; k < spheres.size(); ++k) {
-    const Sphere& s = spheres[k];
-    const double approach = k == 0 ? 0.3 / l : (k == 1 ? -0.3 / l : 0.0);
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const Sphere& s = spheres[i];
+    const double approach = i == 0 ? 0.3 / l : (i == 1 ? -0.3 / l : 0.0);
     t += fmt::format("[[particles]]\nradius = {:.17g}\nmaterial = \"m{}\"\nposition = {}\nvelocity = {}\nangular_velocity = {}\n\n",
                      s.r, s.material, vec(s.x, s.y, s.z),
                      vec(uniform(-0.2, 0.2) + approach * lx, uniform(-0.2, 0.2) + approach * ly,
@@ -205,7 +242,10 @@ FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) {
   t += "[output]\ntrace_every = 5\n\n";
   t += fmt::format("[compare]\nengines = [\"{0}\"]\nmatched = [\"{0}\"]\nmetrics = []\npair = [0, 1]\n", code);
   scene.toml = std::move(t);
+  scene.draws = k + 1;
   return scene;
 }
+
+}  // namespace
 
 }  // namespace studies

@@ -9,6 +9,7 @@
 // the scene.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -22,10 +23,26 @@ struct FuzzScene {
   int spheres = 0;
   int walls = 0;
   bool gravity = false;
+  int draws = 1;  ///< drafts drawn before this one was kept (random_matched_scene with a filter)
 };
 
 /// The scene of `seed` for reference code `code` ("lammps" or "yade"); the same seed always
 /// gives the same text. Throws std::invalid_argument for another code.
 [[nodiscard]] FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed);
+
+/// Whether the code's mapping expresses a drafted scene (the driver's supports()).
+using ExpressibleFilter = std::function<bool(const FuzzScene&)>;
+
+/// The scene of `seed`, drawn so that most scenes (kExpressibleShare) are ones the code
+/// expresses: such a seed redraws its draft (the k-th draft from the seed mixed with k) until
+/// `expressible` accepts it, at most kMaxDrafts times; the other seeds keep their first draft,
+/// so the mappings' n/a answers are still exercised. Deterministic for a seed and filter.
+[[nodiscard]] FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed,
+                                             const ExpressibleFilter& expressible);
+
+/// Share of seeds whose scene must be expressible by the code.
+inline constexpr double kExpressibleShare = 0.8;
+/// Most drafts one seed draws.
+inline constexpr int kMaxDrafts = 200;
 
 }  // namespace studies

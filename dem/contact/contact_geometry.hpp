@@ -21,6 +21,7 @@ struct ContactGeometry {
   double normal_speed;      ///< u_c · n [m/s], negative while approaching
   Vec3 tangential_velocity; ///< u_t = u_c − (u_c·n) n [m/s]
   Vec3 relative_angular_velocity;  ///< ω_p − ω_q [rad/s]
+  Vec3 angular_velocity_sum;       ///< ω_p + ω_q [rad/s] (ω_p against a wall)
   double reduced_mass;      ///< m* [kg]; the mobile mass when the partner is fixed
   double reduced_radius;    ///< R* = r_p r_q / (r_p + r_q) [m]; r against a plane wall
   double contact_distance;  ///< r_p + r_q [m] (r for a wall): centre distance at first touch
@@ -47,12 +48,29 @@ struct SphereState {
   double charge = 0.0;  ///< [C]
 };
 
+/// YADE's ratcheting factor α = D/(D − δ) for the reference length D (r_p + r_q, or 2r against
+/// a wall) and overlap δ: ScGeom::getIncidentVel with avoidGranularRatcheting scales the
+/// centres' relative velocity by it.
+[[nodiscard]] inline double yade_ratcheting_factor(double length, double overlap) noexcept {
+  return length / (length - overlap);
+}
+
+/// The tangential velocity YADE integrates into the shear (docs/physics-tangential.md): the
+/// tangential part of α u_centres − (r_p ω_p + r_q ω_q) × n, given the unscaled one `unscaled`
+/// (spins with the radii) and the centres' relative velocity `centres`.
+[[nodiscard]] inline Vec3 yade_tangential_velocity(const Vec3& unscaled, const Vec3& centres, const Vec3& normal,
+                                                   double alpha) noexcept {
+  const Vec3 centres_t = centres - centres.dot(normal) * normal;
+  return unscaled + (alpha - 1.0) * centres_t;
+}
+
 /// Contact kinematics of p and q by the common-normal method (thesis §3.3.3). Coincident
 /// centres (|x_pq| = 0) get the normal +x so the result stays finite. The lever arms (the
 /// branches, which the torque uses) are r − δ/2, or the radii r for PairLeverArm::radius (LAMMPS
 /// gran/hooke/history); the contact-point velocity uses the same arms, except under
-/// PairLeverArm::radius_velocity, where it uses r (LAMMPS pair granular). q is passed at its
-/// periodic image nearest p.
+/// PairLeverArm::radius_velocity and yade_incident, where it uses r (LAMMPS pair granular, YADE),
+/// and yade_incident scales the centres' part of the tangential velocity by α. q is passed at
+/// its periodic image nearest p.
 [[nodiscard]] inline ContactGeometry pair_geometry(const SphereState& p, const SphereState& q,
                                                    PairLeverArm arm = PairLeverArm::contact_point) noexcept {
   const bool lever_arm_is_radius = arm == PairLeverArm::radius;
@@ -64,7 +82,7 @@ struct SphereState {
   g.effect_overlap = p.effect_radius + q.effect_radius - g.distance;
   g.branch_p = -(lever_arm_is_radius ? p.radius : p.radius - 0.5 * g.overlap) * g.normal;
   g.branch_q = (lever_arm_is_radius ? q.radius : q.radius - 0.5 * g.overlap) * g.normal;
-  if (arm == PairLeverArm::radius_velocity) {
+  if (arm == PairLeverArm::radius_velocity || arm == PairLeverArm::yade_incident) {
     g.contact_velocity = (p.velocity - p.radius * p.angular_velocity.cross(g.normal)) -
                          (q.velocity + q.radius * q.angular_velocity.cross(g.normal));
   } else {
@@ -73,7 +91,13 @@ struct SphereState {
   }
   g.normal_speed = g.contact_velocity.dot(g.normal);
   g.tangential_velocity = g.contact_velocity - g.normal_speed * g.normal;
+  if (arm == PairLeverArm::yade_incident) {
+    g.tangential_velocity =
+        yade_tangential_velocity(g.tangential_velocity, p.velocity - q.velocity, g.normal,
+                                 yade_ratcheting_factor(p.radius + q.radius, g.overlap));
+  }
   g.relative_angular_velocity = p.angular_velocity - q.angular_velocity;
+  g.angular_velocity_sum = p.angular_velocity + q.angular_velocity;
   g.reduced_mass = 1.0 / (p.inverse_mass + q.inverse_mass);
   g.reduced_radius = p.radius * q.radius / (p.radius + q.radius);
   g.contact_distance = p.radius + q.radius;
@@ -92,10 +116,12 @@ struct PlaneWall {
 };
 
 /// Kinematics of sphere p against a plane wall at time t (the wall acts as an infinite-mass
-/// partner: m* = m, R* = r). The normal is the wall's; the lever arm is r − δ/2 (common normal)
-/// or r when `lever_arm_is_radius` (LAMMPS fix wall/gran).
+/// partner: m* = m, R* = r). The normal is the wall's; the lever arm is r − δ/2 (common normal,
+/// and WallLeverArm::yade_incident) or r (WallLeverArm::radius, LAMMPS fix wall/gran); the
+/// contact-point velocity uses the same arm, except under yade_incident (see WallLeverArm).
 [[nodiscard]] inline ContactGeometry wall_geometry(const SphereState& p, const PlaneWall& w,
-                                                   double t, bool lever_arm_is_radius) noexcept {
+                                                   double t, WallLeverArm arm) noexcept {
+  const bool lever_arm_is_radius = arm == WallLeverArm::radius;
   ContactGeometry g;
   const double distance = (p.position - (w.point + t * w.velocity)).dot(w.normal);
   g.normal = w.normal;
@@ -104,10 +130,19 @@ struct PlaneWall {
   g.effect_overlap = p.effect_radius - distance;
   g.branch_p = -(lever_arm_is_radius ? p.radius : p.radius - 0.5 * g.overlap) * g.normal;
   g.branch_q = Vec3::Zero();
-  g.contact_velocity = p.velocity + p.angular_velocity.cross(g.branch_p) - w.velocity;
+  if (arm == WallLeverArm::yade_incident) {
+    g.contact_velocity = p.velocity - p.radius * p.angular_velocity.cross(g.normal) - w.velocity;
+  } else {
+    g.contact_velocity = p.velocity + p.angular_velocity.cross(g.branch_p) - w.velocity;
+  }
   g.normal_speed = g.contact_velocity.dot(g.normal);
   g.tangential_velocity = g.contact_velocity - g.normal_speed * g.normal;
+  if (arm == WallLeverArm::yade_incident) {
+    g.tangential_velocity = yade_tangential_velocity(g.tangential_velocity, p.velocity - w.velocity, g.normal,
+                                                     yade_ratcheting_factor(2.0 * p.radius, g.overlap));
+  }
   g.relative_angular_velocity = p.angular_velocity;
+  g.angular_velocity_sum = p.angular_velocity;
   g.reduced_mass = 1.0 / p.inverse_mass;
   g.reduced_radius = p.radius;
   g.contact_distance = p.radius;

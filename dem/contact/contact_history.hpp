@@ -15,6 +15,9 @@ struct ContactHistory {
   Vec3 rolling_slip = Vec3::Zero();     ///< integrated rolling displacement [m]
   double max_overlap = 0.0;             ///< largest overlap of this contact so far [m] (eq 3.20)
   bool attached = false;                ///< a JKR neck has formed and not yet broken
+  /// Contact normal at the last evaluation (TangentialHistory::yade_rotate turns ς by its
+  /// change); zero for a new contact.
+  Vec3 normal = Vec3::Zero();
 };
 
 /// Key of an unordered particle pair: the lower index in the high 32 bits.

@@ -91,6 +91,9 @@ struct ContactOutcome {
       // LAMMPS' rule: an adhesive contact's limit is shifted by twice the pull-off force and
       // leaves the dashpot out; a contact without adhesion keeps elastic + damping.
       return pulloff > 0.0 ? std::abs(elastic + cohesion + 2.0 * pulloff) : std::abs(elastic + damping);
+    case FrictionLimit::total_plus_pulloff:
+      // YADE's Mindlin with adhesion: the whole normal force's magnitude plus the pull-off force.
+      return std::abs(elastic + damping + cohesion) + pulloff;
     case FrictionLimit::total: break;
   }
   return std::abs(elastic + damping + cohesion);
@@ -173,7 +176,15 @@ template <class Slots>
                            })
                          : 0.0;
   double damping = -eta * g.normal_speed;
-  if (policies.clamp_tensile && elastic.force + damping < 0.0) damping = -elastic.force;
+  if (policies.adhesive_dashpot == AdhesiveDashpot::pulloff_cap && cohesion.pulloff_force > 0.0) {
+    // YADE's Mindlin with adhesion: a dashpot that leaves the whole normal force tensile acts
+    // with at most the pull-off force.
+    if (elastic.force + cohesion.force + damping < 0.0 && std::abs(damping) > cohesion.pulloff_force) {
+      damping = std::copysign(cohesion.pulloff_force, damping);
+    }
+  } else if (policies.clamp_tensile && elastic.force + damping < 0.0) {
+    damping = -elastic.force;
+  }
   out.normal_force = elastic.force + damping + cohesion.force;
 
   TangentialResponse tangential;
@@ -185,12 +196,14 @@ template <class Slots>
     tangential = slots.tangential([&](const auto& m) { return m.evaluate(in, t_in, next); });
     rolling = slots.rolling([&](const auto& m) { return m.evaluate(in, basis, next); });
     next.max_overlap = std::max(committed.max_overlap, g.overlap);
+    next.normal = g.normal;
   } else {
     // Apart (a long-range law may keep the pair interacting): the next touch is a new contact,
     // so its springs start unloaded and its largest overlap afresh (eq 3.20).
     next.tangential_slip.setZero();
     next.rolling_slip.setZero();
     next.max_overlap = 0.0;
+    next.normal.setZero();
   }
 
   out.force_on_p = out.normal_force * g.normal + tangential.force;

@@ -24,33 +24,49 @@ std::optional<E> value_of(const std::array<std::pair<E, std::string_view>, N>& t
   return std::nullopt;
 }
 
-constexpr std::array<std::pair<FrictionLimit, std::string_view>, 4> kFriction{{
+constexpr std::array<std::pair<FrictionLimit, std::string_view>, 5> kFriction{{
     {FrictionLimit::total, "total"},
     {FrictionLimit::elastic, "elastic"},
     {FrictionLimit::elastic_damping, "elastic_damping"},
     {FrictionLimit::jkr_shifted, "jkr_shifted"},
+    {FrictionLimit::total_plus_pulloff, "total_plus_pulloff"},
 }};
 constexpr std::array<std::pair<JkrRupture, std::string_view>, 2> kRupture{{
     {JkrRupture::displacement, "displacement"},
     {JkrRupture::load, "load"},
 }};
-constexpr std::array<std::pair<WallLeverArm, std::string_view>, 2> kLever{{
+constexpr std::array<std::pair<WallLeverArm, std::string_view>, 3> kLever{{
     {WallLeverArm::contact_point, "contact_point"},
     {WallLeverArm::radius, "radius"},
+    {WallLeverArm::yade_incident, "yade_incident"},
 }};
 
-constexpr std::array<std::pair<PairLeverArm, std::string_view>, 3> kPairLever{{
+constexpr std::array<std::pair<PairLeverArm, std::string_view>, 4> kPairLever{{
     {PairLeverArm::contact_point, "contact_point"},
     {PairLeverArm::radius, "radius"},
     {PairLeverArm::radius_velocity, "radius_velocity"},
+    {PairLeverArm::yade_incident, "yade_incident"},
 }};
-constexpr std::array<std::pair<TangentialHistory, std::string_view>, 2> kHistory{{
+constexpr std::array<std::pair<TangentialHistory, std::string_view>, 3> kHistory{{
     {TangentialHistory::project_rescale, "project_rescale"},
     {TangentialHistory::increment_project, "increment_project"},
+    {TangentialHistory::yade_rotate, "yade_rotate"},
 }};
 constexpr std::array<std::pair<MindlinRadius, std::string_view>, 2> kMindlinRadius{{
     {MindlinRadius::overlap, "overlap"},
     {MindlinRadius::contact_radius, "contact_radius"},
+}};
+constexpr std::array<std::pair<UnloadedSlider, std::string_view>, 2> kUnloaded{{
+    {UnloadedSlider::cap, "cap"},
+    {UnloadedSlider::zero, "zero"},
+}};
+constexpr std::array<std::pair<MindlinForm, std::string_view>, 2> kMindlinForm{{
+    {MindlinForm::total, "total"},
+    {MindlinForm::incremental, "incremental"},
+}};
+constexpr std::array<std::pair<AdhesiveDashpot, std::string_view>, 2> kAdhesiveDashpot{{
+    {AdhesiveDashpot::clamp, "clamp"},
+    {AdhesiveDashpot::pulloff_cap, "pulloff_cap"},
 }};
 
 }  // namespace
@@ -69,5 +85,13 @@ std::optional<TangentialHistory> parse_tangential_history(std::string_view k) no
 }
 std::string_view to_string(MindlinRadius p) noexcept { return name_of(kMindlinRadius, p); }
 std::optional<MindlinRadius> parse_mindlin_radius(std::string_view k) noexcept { return value_of(kMindlinRadius, k); }
+std::string_view to_string(UnloadedSlider p) noexcept { return name_of(kUnloaded, p); }
+std::optional<UnloadedSlider> parse_unloaded_slider(std::string_view k) noexcept { return value_of(kUnloaded, k); }
+std::string_view to_string(MindlinForm p) noexcept { return name_of(kMindlinForm, p); }
+std::optional<MindlinForm> parse_mindlin_form(std::string_view k) noexcept { return value_of(kMindlinForm, k); }
+std::string_view to_string(AdhesiveDashpot p) noexcept { return name_of(kAdhesiveDashpot, p); }
+std::optional<AdhesiveDashpot> parse_adhesive_dashpot(std::string_view k) noexcept {
+  return value_of(kAdhesiveDashpot, k);
+}
 
 }  // namespace dem

@@ -13,6 +13,7 @@ enum class FrictionLimit {
   elastic,          ///< |F_elastic| (YADE)
   elastic_damping,  ///< |F_elastic + F_damping| (LAMMPS, LIGGGHTS)
   jkr_shifted,      ///< |F_n + 2 F_pulloff| (Thornton; LAMMPS JKR/DMT)
+  total_plus_pulloff,  ///< |F_n| + F_pulloff (YADE Hertz–Mindlin with adhesion, after Thornton 1991)
 };
 
 /// Where a JKR contact breaks on separation (docs/physics-cohesion.md).
@@ -25,6 +26,10 @@ enum class JkrRupture {
 enum class WallLeverArm {
   contact_point,  ///< r − δ/2, as for sphere pairs (default; common-normal method)
   radius,         ///< r, as LAMMPS fix wall/gran
+  /// r − δ/2 for the torque; the slip velocity YADE's way (ScGeom::getIncidentVel with
+  /// avoidGranularRatcheting): spin with the radius r, the sphere's own velocity scaled by
+  /// α = 2r/(2r − δ) in the tangential part (YADE Ig2_Wall_Sphere_ScGeom + CundallStrack).
+  yade_incident,
 };
 
 /// Lever arm of the contact point about each sphere's centre in a sphere–sphere contact: it sets
@@ -33,6 +38,10 @@ enum class PairLeverArm {
   contact_point,    ///< r − δ/2 for both (common-normal method, thesis §3.3.3; default)
   radius,           ///< the body radius r for both, as LAMMPS gran/hooke/history
   radius_velocity,  ///< r for the contact-point velocity, r − δ/2 for the torque: LAMMPS pair granular
+  /// r − δ/2 for the torque; the slip velocity YADE's way: spins with the radii r, the centres'
+  /// relative velocity scaled by α = (r_p + r_q)/(r_p + r_q − δ) in the tangential part (YADE
+  /// ScGeom::getIncidentVel with avoidGranularRatcheting). The normal speed is not scaled.
+  yade_incident,
 };
 
 /// How the stored tangential slip ς follows the contact plane as the normal turns (eq 3.9).
@@ -42,12 +51,40 @@ enum class TangentialHistory {
   project_rescale,
   /// Add u_t·Δt, then drop the part along n without rescaling (LAMMPS gran/hooke/history).
   increment_project,
+  /// Turn ς by the normal's rotation, ς − ς × (n_old × n), then by the mean spin about n over the
+  /// step about the old normal, ς − ς × (½ Δt n_old·(ω_p + ω_q)) n_old, without re-projecting; then add
+  /// u_t·Δt (YADE ScGeom::rotate and precompute). Needs the normal of the last evaluation, which
+  /// the history keeps under this rule.
+  yade_rotate,
 };
 
 /// The contact radius a in Mindlin's tangential stiffness k_t ∝ G* a (docs/physics-tangential.md).
 enum class MindlinRadius {
   overlap,         ///< a = √(R* δ), the Hertz radius of the body overlap (default; thesis eq 3.25)
   contact_radius,  ///< the cohesion law's contact radius where it sets one (an attached JKR neck), else √(R* δ): LAMMPS pair granular
+};
+
+/// What a spring–dashpot–slider (tangential or rolling) does when its stored displacement is
+/// exactly zero — a contact's first evaluation before any slip is integrated, such as one that
+/// already touches at t = 0 — and its dashpot alone exceeds the Coulomb limit
+/// (docs/physics-tangential.md, "Unloaded slider").
+enum class UnloadedSlider {
+  cap,   ///< the force is scaled back to the limit, as at any other evaluation (default)
+  zero,  ///< the force is set to zero and the displacement stays zero: LAMMPS pair granular, fix wall/gran, gran/hooke/history
+};
+
+/// How a Mindlin tangential spring (`mindlin`, `mindlin_8g`) turns slip into force when its
+/// stiffness k_t = c a changes with the contact radius a (docs/physics-tangential.md).
+enum class MindlinForm {
+  total,        ///< F = −k_t(a) ς on the whole stored slip, at the current stiffness (default; LAMMPS `mindlin`)
+  incremental,  ///< F = F_old − k_t(a) Δς: each increment at the stiffness of its step (YADE Law2_ScGeom_MindlinPhys_Mindlin)
+};
+
+/// How the normal dashpot is limited while a cohesion law with a pull-off force F_po > 0 (DMT)
+/// acts (docs/physics-cohesion.md, "Dashpot under adhesion").
+enum class AdhesiveDashpot {
+  clamp,        ///< as without adhesion: clamp_tensile (if set) keeps elastic + dashpot ≥ 0 (default)
+  pulloff_cap,  ///< when the whole normal force is tensile, the dashpot's magnitude is capped at F_po and clamp_tensile is not applied: YADE Law2_ScGeom_MindlinPhys_Mindlin with includeAdhesion
 };
 
 /// Keywords of the sub-model chosen for each slot and the named policies, as a case file gives
@@ -65,6 +102,9 @@ struct ModelChoice {
   PairLeverArm pair_lever_arm = PairLeverArm::contact_point;
   TangentialHistory tangential_history = TangentialHistory::project_rescale;
   MindlinRadius mindlin_radius = MindlinRadius::overlap;
+  UnloadedSlider unloaded_slider = UnloadedSlider::cap;
+  AdhesiveDashpot adhesive_dashpot = AdhesiveDashpot::clamp;
+  MindlinForm mindlin_form = MindlinForm::total;
   /// Bodies exactly touching (δ = 0) are in contact, so the dashpot and friction act there
   /// (YADE's Ig2/Law2 keep δ ≥ 0); default false: contact needs δ > 0. Set by matched runs only.
   bool contact_at_zero_overlap = false;
@@ -94,5 +134,17 @@ std::optional<TangentialHistory> parse_tangential_history(std::string_view keywo
 std::string_view to_string(MindlinRadius p) noexcept;
 /// Mindlin-radius policy named `keyword`, or empty.
 std::optional<MindlinRadius> parse_mindlin_radius(std::string_view keyword) noexcept;
+/// Case-file keyword of an unloaded-slider policy.
+std::string_view to_string(UnloadedSlider p) noexcept;
+/// Unloaded-slider policy named `keyword`, or empty.
+std::optional<UnloadedSlider> parse_unloaded_slider(std::string_view keyword) noexcept;
+/// Case-file keyword of a Mindlin-form policy.
+std::string_view to_string(MindlinForm p) noexcept;
+/// Mindlin-form policy named `keyword`, or empty.
+std::optional<MindlinForm> parse_mindlin_form(std::string_view keyword) noexcept;
+/// Case-file keyword of an adhesive-dashpot policy.
+std::string_view to_string(AdhesiveDashpot p) noexcept;
+/// Adhesive-dashpot policy named `keyword`, or empty.
+std::optional<AdhesiveDashpot> parse_adhesive_dashpot(std::string_view keyword) noexcept;
 
 }  // namespace dem

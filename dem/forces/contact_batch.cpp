@@ -40,13 +40,15 @@ struct V3 {
 /// enter as numbers, so that no select depends on a condition that is the same for every lane
 /// (which the vectoriser cannot mask): the lever arm r − f δ with f = ½ or 0 (exactly r − δ/2,
 /// or r), the Coulomb basis |F_e + d F_d| with d = 1 or 0, the tensile clamp as F_e + F_d below
-/// 0 or below −∞ (never).
+/// 0 or below −∞ (never), the unloaded-slider drop as |ς| ≤ 0 or ≤ −1 (never).
 template <BatchNormal Normal, bool IncrementProject>
 [[gnu::always_inline]] inline void evaluate_lanes(ContactBatch& b, std::uint32_t n, const BatchPolicies& p,
                                                   double elapsed) noexcept {
   const double arm_factor = p.lever_arm_radius ? 0.0 : 0.5;
   const double basis_damping = p.limit_elastic ? 0.0 : 1.0;
   const double clamp_below = p.clamp_tensile ? 0.0 : -std::numeric_limits<double>::infinity();
+  // |ς| at or below this drops a capped force: 0 under UnloadedSlider::zero, never (−1) else.
+  const double unloaded_below = p.zero_when_unloaded ? 0.0 : -1.0;
   for (std::uint32_t g = 0; g < n; ++g) {
     const double k_normal = b.normal[g];
     const double rate = b.rate[g];
@@ -99,15 +101,18 @@ template <BatchNormal Normal, bool IncrementProject>
     const double eta_t = ratio * eta;
     const double limit = mu * basis;
     const bool spring = kt > 0.0;
-    const V3 stored = select(spring, carried + tangential_velocity * elapsed, V3{0.0, 0.0, 0.0});
+    const V3 integrated = carried + tangential_velocity * elapsed;
+    const V3 stored = select(spring, integrated, V3{0.0, 0.0, 0.0});
     const V3 trial = -kt * stored - eta_t * tangential_velocity;
     const double magnitude = std::sqrt(dot(trial, trial));
     const double cap = limit < 0.0 ? 0.0 : limit;
     const bool sliding = magnitude > cap;
+    // UnloadedSlider::zero: a capped slider with nothing stored gives no force and keeps ς = 0.
+    const bool dropped = sliding && std::sqrt(dot(integrated, integrated)) <= unloaded_below;
     const V3 capped = trial * (cap / magnitude);
-    const V3 friction = select(sliding, capped, trial);
+    const V3 friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
     const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
-    const V3 next_slip = select(sliding && spring, truncated, stored);
+    const V3 next_slip = select(sliding && spring && !dropped, truncated, stored);
 
     // Assembly (NoRolling adds zero torques, kept for the sign of zero).
     const V3 force = normal_force * normal + friction;

@@ -25,7 +25,8 @@ enum class BatchNormal : std::uint8_t {
 
 /// The contact model's policies as the batch kernel reads them (values of ContactPolicies and
 /// PairLeverArm, docs/physics.md). The kernel handles every combination except the lever arm
-/// PairLeverArm::radius_velocity, which the pair loop leaves to evaluate_contact.
+/// PairLeverArm::radius_velocity and yade_incident and the history rule yade_rotate, which the
+/// pair loop leaves to evaluate_contact.
 struct BatchPolicies {
   BatchNormal normal = BatchNormal::linear;
   bool lever_arm_radius = false;          ///< PairLeverArm::radius (else contact_point, r − δ/2)
@@ -33,6 +34,7 @@ struct BatchPolicies {
   bool limit_elastic = false;             ///< FrictionLimit::elastic (else |F_e + F_d|: the others without cohesion)
   bool clamp_tensile = false;             ///< ContactPolicies::clamp_tensile
   bool contact_at_zero_overlap = false;   ///< ContactPolicies::contact_at_zero_overlap
+  bool zero_when_unloaded = false;        ///< UnloadedSlider::zero (else cap)
 };
 
 /// One material pair's parameters in the batch family.

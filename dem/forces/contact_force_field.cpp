@@ -21,9 +21,11 @@ namespace {
 constexpr std::uint32_t kSphereChunk = 4096;
 
 /// True when some sub-model of the choice reads history beyond the tangential slip: rolling
-/// slip (rolling resistance), the largest overlap (hysteretic loading) or the JKR neck.
+/// slip (rolling resistance), the largest overlap (hysteretic loading), the JKR neck or the last
+/// normal (TangentialHistory::yade_rotate).
 bool needs_extended_history(const ModelChoice& c) {
-  return c.rolling != "none" || c.normal == "hysteretic" || c.cohesion == "jkr";
+  return c.rolling != "none" || c.normal == "hysteretic" || c.cohesion == "jkr" ||
+         c.tangential_history == TangentialHistory::yade_rotate;
 }
 
 /// Default Verlet skin: a tenth of the smallest body diameter.
@@ -395,7 +397,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   chunk_totals_[0] = totals_;  // the running sums continue from the pair loop's
   const std::span<WallEntry> wall_entries = wall_list_.entries();
   const std::span<ExtendedHistory> wall_ext = wall_list_.extended();
-  const bool lever = setup_.wall_lever_arm_is_radius;
+  const WallLeverArm lever = setup_.wall_lever_arm;
   const bool track = setup_.track_energy;
   const double t_now = state.time;
   const int threads = std::max(setup_.threads, 1);
@@ -503,7 +505,7 @@ void ContactForceField::observe(const KinematicState& state, double elapsed) {
     o.interacting = false;
     if (o.wall) {
       const PlaneWall& wall = setup_.walls[o.q];
-      const ContactGeometry g = wall_geometry(sphere(state, o.p), wall, state.time, setup_.wall_lever_arm_is_radius);
+      const ContactGeometry g = wall_geometry(sphere(state, o.p), wall, state.time, setup_.wall_lever_arm);
       o.overlap = g.overlap;
       if (props_.fixed[o.p] != 0 || g.distance > wall_reach_of(o.p, o.q)) continue;
       const std::int64_t k = wall_list_.find(o.p, o.q);

@@ -39,7 +39,7 @@ struct ForceFieldSetup {
   std::vector<PlaneWall> walls;
   ExternalFields fields;
   std::vector<PrescribedMotion> motions;  ///< for fixed spheres that move
-  bool wall_lever_arm_is_radius = false;  ///< WallLeverArm::radius
+  WallLeverArm wall_lever_arm = WallLeverArm::contact_point;
   PairLeverArm pair_lever_arm = PairLeverArm::contact_point;
   PeriodicBox box;                        ///< periodic axes (none by default)
   NeighborSettings neighbors;             ///< skin > 0 (Simulation picks one when 0)

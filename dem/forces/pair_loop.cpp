@@ -63,6 +63,7 @@ template <class Normal>
   b.limit_elastic = p.friction_limit == FrictionLimit::elastic;
   b.clamp_tensile = p.clamp_tensile;
   b.contact_at_zero_overlap = p.contact_at_zero_overlap;
+  b.zero_when_unloaded = p.unloaded_slider == UnloadedSlider::zero;
   return b;
 }
 
@@ -293,7 +294,10 @@ template <class Slots, bool Energies, bool Periodic>
   [[maybe_unused]] BatchPolicies policies;
   [[maybe_unused]] bool uniform = true;
   std::conditional_t<kBatchable, ContactBatch, char> batch;
-  [[maybe_unused]] const bool batched = kBatchable && in.lever_arm != PairLeverArm::radius_velocity;
+  // The kernel knows the r − δ/2 and r lever arms and the two LAMMPS history rules only.
+  [[maybe_unused]] const bool batched =
+      kBatchable && in.lever_arm != PairLeverArm::radius_velocity && in.lever_arm != PairLeverArm::yade_incident &&
+      in.table->law(0, 0).policies.tangential_history != TangentialHistory::yade_rotate;
   if constexpr (kBatchable) {
     const PairLaw& first = in.table->law(0, 0);
     policies = batch_policies(Family::kNormal, first.policies, in.lever_arm);

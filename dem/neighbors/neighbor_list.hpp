@@ -39,16 +39,17 @@ struct ExtendedHistory {
   Vec3 rolling_slip = Vec3::Zero();
   double max_overlap = 0.0;
   std::uint8_t attached = 0;
+  Vec3 normal = Vec3::Zero();  ///< ContactHistory::normal
 };
 
 /// The extended part of a history, as the lists store it.
 [[nodiscard]] inline ExtendedHistory extended_of(const ContactHistory& h) noexcept {
-  return {h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0)};
+  return {h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0), h.normal};
 }
 /// A committed history from a stored slip and its extended record (null when none is kept).
 [[nodiscard]] inline ContactHistory history_of(const Vec3& slip, const ExtendedHistory* x) noexcept {
-  if (x == nullptr) return {slip, Vec3::Zero(), 0.0, false};
-  return {slip, x->rolling_slip, x->max_overlap, x->attached != 0};
+  if (x == nullptr) return {slip, Vec3::Zero(), 0.0, false, Vec3::Zero()};
+  return {slip, x->rolling_slip, x->max_overlap, x->attached != 0, x->normal};
 }
 
 /// What a build reads.

@@ -24,7 +24,7 @@ Simulation::Simulation(const SimulationSetup& setup)
       field_(std::make_unique<ContactForceField>(
           props_, table_,
           ForceFieldSetup{setup.walls, setup.fields, setup.motions,
-                          setup.model.wall_lever_arm == WallLeverArm::radius,
+                          setup.model.wall_lever_arm,
                           setup.model.pair_lever_arm, setup.box,
                           setup.neighbors, setup.threads, setup.track_energy})),
       scheme_(make_scheme(setup.scheme, setup.scheme_settings)),

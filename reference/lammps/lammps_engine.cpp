@@ -83,6 +83,25 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
         "LAMMPS driver: tangential_history = 'increment_project' is gran/hooke/history's rule; the "
         "driver writes pair granular, which rotates and rescales the slip (project_rescale)");
   }
+  if (scene.model.pair_lever_arm == dem::PairLeverArm::yade_incident ||
+      scene.model.wall_lever_arm == dem::WallLeverArm::yade_incident ||
+      scene.model.tangential_history == dem::TangentialHistory::yade_rotate) {
+    s.reasons.emplace_back(
+        "LAMMPS driver: the lever arm 'yade_incident' and the tangential_history 'yade_rotate' are "
+        "YADE's conventions (α-scaled shear increment, first-order shear rotation), not LAMMPS'");
+  }
+  if (scene.model.mindlin_form == dem::MindlinForm::incremental &&
+      (scene.model.tangential == "mindlin" || scene.model.tangential == "mindlin_8g")) {
+    s.reasons.emplace_back(
+        "LAMMPS driver: mindlin_form = 'incremental' is not mapped (the driver writes `tangential "
+        "mindlin`, which loads the whole slip at today's k_t; `mindlin/force` is not written yet)");
+  }
+  if (scene.model.adhesive_dashpot == dem::AdhesiveDashpot::pulloff_cap &&
+      (scene.model.cohesion == "jkr" || scene.model.cohesion == "dmt") && scene.model.damping != "none") {
+    s.reasons.emplace_back(
+        "LAMMPS driver: adhesive_dashpot = 'pulloff_cap' is YADE's rule; pair granular never caps the "
+        "dashpot at the pull-off force (set adhesive_dashpot = 'clamp' to compare)");
+  }
   if (scene.domain.any_periodic()) {
     s.reasons.emplace_back(
         "LAMMPS driver: periodic boundaries are not mapped yet: the trace formulas read wrapped "

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <system_error>
 
@@ -62,6 +63,18 @@ std::filesystem::path make_run_directory(const std::filesystem::path& parent) {
   return pattern;
 }
 
+namespace {
+
+/// The environment of one LAMMPS process: one OpenMP thread, and Open MPI's session directory
+/// inside the run's own directory. Debian's lmp is an MPI program: started as a singleton it
+/// creates /tmp/ompi.<host>.<uid>, and two runs starting at the same instant (fuzz-matched -j 2)
+/// race on that mkdir and one exits with status 1 ("File exists") before LAMMPS starts.
+std::map<std::string, std::string> lammps_environment(const std::filesystem::path& dir) {
+  return {{"OMP_NUM_THREADS", "1"}, {"OMPI_MCA_orte_tmpdir_base", dir.string()}};
+}
+
+}  // namespace
+
 LammpsProbe probe_lammps(const std::string& program, double timeout_s) {
   LammpsProbe probe;
   if (!support::find_program(program)) return probe;
@@ -75,7 +88,7 @@ LammpsProbe probe_lammps(const std::string& program, double timeout_s) {
   const support::OwnedPathGuard partial(dir);
   support::ProcessSpec spec;
   spec.argv = {program, "-in", "/dev/null", "-log", (dir / kLogFile).string(), "-screen", "none"};
-  spec.environment = {{"OMP_NUM_THREADS", "1"}};
+  spec.environment = lammps_environment(dir);
   spec.timeout_s = timeout_s;
   const support::ProcessResult r = support::run_process(spec);
   probe.seconds = r.wall_time_s;
@@ -108,7 +121,7 @@ LammpsRunOutcome run_lammps(const std::string& program, const std::filesystem::p
   spec.working_directory = dir;
   spec.stdout_file = dir / kStdoutFile;
   spec.stderr_file = dir / kStderrFile;
-  spec.environment = {{"OMP_NUM_THREADS", "1"}};
+  spec.environment = lammps_environment(dir);
   spec.timeout_s = timeout_s;
   const support::ProcessResult r = support::run_process(spec);
 

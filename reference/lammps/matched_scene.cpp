@@ -22,6 +22,14 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   matched.model.mindlin_radius = dem::MindlinRadius::contact_radius;
   // pair granular jkr: the neck breaks at the load-controlled pull-off overlap δ_f.
   matched.model.jkr_rupture = dem::JkrRupture::load;
+  // pair granular, fix wall/gran: a capped slider (tangential or rolling) with no stored
+  // displacement — a contact at t = 0, where the setup force integrates no slip — gives no force.
+  matched.model.unloaded_slider = dem::UnloadedSlider::zero;
+  // pair granular has no cap of the dashpot at the pull-off force (YADE's rule): limit_damping
+  // (the case's clamp_tensile) is its only limit.
+  matched.model.adhesive_dashpot = dem::AdhesiveDashpot::clamp;
+  // pair granular `mindlin` keeps the slip and multiplies it by today's k_t.
+  matched.model.mindlin_form = dem::MindlinForm::total;
   return matched;
 }
 

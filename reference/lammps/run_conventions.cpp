@@ -97,6 +97,13 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, do
       "|xi.n| k_t > 1e-10 F_crit, then xi += v_t dt; when capped xi = -(F_crit t + eta_t v_t)/k_t; "
       "pair contact velocity uses the full radii, the torque lever r - delta/2 (the core's "
       "pair_lever_arm 'radius_velocity')";
+  if (scene.model.tangential != "none" || scene.model.rolling != "none") {
+    c["unloaded slider"] = fmt::format(
+        "a tangential or rolling slider with no stored displacement (a contact touching at t = 0: "
+        "the setup force integrates none) whose dashpot alone exceeds the Coulomb limit gets no "
+        "force at all (`shrmag != 0` branch): the core's unloaded_slider 'zero'; this case uses '{}'",
+        dem::to_string(scene.model.unloaded_slider));
+  }
   if (!scene.walls.empty()) {
     c["walls"] =
         "fix wall/gran granular per (wall, mobile atom type), axis-aligned planes only; E_in = "

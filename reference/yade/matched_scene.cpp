@@ -29,18 +29,35 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   }
   // Coulomb cap: CundallStrack on k_n δ; CundallStrackVisco on the elastic force plus its
   // dashpot, which leaves out the linear cohesion the script adds as a separate force; Mindlin on
-  // the whole normal force after the dashpot (and its clip, and DMT adhesion).
+  // the magnitude of the whole normal force after the dashpot (and its clip), plus the DMT
+  // adhesion force 4πR*γ when adhesive (HertzMindlin.cpp: maxFs = tanφ (F_ad + |F_n|)).
   const YadeLaw law = map_contact_model(scene).law;
   matched.model.friction_limit = law == YadeLaw::frict         ? dem::FrictionLimit::elastic
                                  : law == YadeLaw::frict_visco ? dem::FrictionLimit::elastic_damping
-                                                               : dem::FrictionLimit::total;
-  // Mindlin clips the total normal force at ≥ 0 (without adhesion).
-  if (law == YadeLaw::mindlin && matched.model.cohesion == "none") matched.model.clamp_tensile = true;
+                                                               : dem::FrictionLimit::total_plus_pulloff;
+  // Mindlin clips the total normal force at ≥ 0 without adhesion (adhesionForce = 0); with DMT
+  // adhesion it never clips, but a dashpot that leaves the normal force tensile acts with at
+  // most the adhesion force 4πR*γ.
+  if (law == YadeLaw::mindlin) {
+    matched.model.clamp_tensile = true;
+    matched.model.adhesive_dashpot = dem::AdhesiveDashpot::pulloff_cap;
+  } else {
+    matched.model.adhesive_dashpot = dem::AdhesiveDashpot::clamp;
+  }
+  // YADE's sliders cap as always (no LAMMPS-style drop; its mapped laws have no tangential dashpot).
+  matched.model.unloaded_slider = dem::UnloadedSlider::cap;
   // Ig2 creates a contact at (r_p + r_q)² − d² ≥ 0 and the Law2 keeps it while δ ≥ 0: a pair
   // that lands exactly on δ = 0 gets the dashpot (and friction) in that step.
   matched.model.contact_at_zero_overlap = true;
-  // Torque lever arm of a sphere–wall contact: radius − δ/2 (CundallStrack, sphericalBodies).
-  matched.model.wall_lever_arm = dem::WallLeverArm::contact_point;
+  // Torque lever arm r − δ/2 (CundallStrack, sphericalBodies); the shear increment from
+  // ScGeom::getIncidentVel with avoidGranularRatcheting: spins with the radii, the centres'
+  // tangential velocity scaled by α = D/(D − δ) (D = r_p + r_q, or 2r against a wall).
+  matched.model.wall_lever_arm = dem::WallLeverArm::yade_incident;
+  matched.model.pair_lever_arm = dem::PairLeverArm::yade_incident;
+  // The stored shear turned by n_old × n and the mean spin about n, not re-projected.
+  matched.model.tangential_history = dem::TangentialHistory::yade_rotate;
+  // Law2_ScGeom_MindlinPhys_Mindlin: F_s −= k_s(δ) Δu_s, each increment at its own stiffness.
+  matched.model.mindlin_form = dem::MindlinForm::incremental;
   // The native YADE run calibrates FrictViscoMat.betan (restitution_calibration.hpp); the core
   // repeats that calibration on its own replica and takes the ε' whose β(ε')/2 is that betan.
   const YadeModelMapping mapping = map_contact_model(scene);

@@ -483,9 +483,31 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
         "YADE driver: damping 'restitution' with clamp_tensile = true is not mapped yet "
         "(ViscElMat clamps, but takes the dashpot per material, not per particle pair's m*)");
   }
-  if (out.law == YadeLaw::mindlin && out.pairs.size() > 0 && !scene.model.clamp_tensile) {
-    bool damped = false;
-    for (const auto& p : out.pairs) damped = damped || p.damping_ratio != 0.0;
+  bool damped = false;
+  for (const auto& p : out.pairs) damped = damped || p.damping_ratio != 0.0;
+  const bool adhesive = out.law == YadeLaw::mindlin && out.surface_energy > 0.0;
+  if (adhesive && scene.model.tangential != "none" &&
+      scene.model.friction_limit != dem::FrictionLimit::total_plus_pulloff) {
+    out.reasons.push_back(
+        "YADE driver: cohesion 'dmt' with friction is not mapped with this friction_limit: "
+        "Law2_ScGeom_MindlinPhys_Mindlin(includeAdhesion) caps the shear force at tanφ (4πR*γ + |F_n|) "
+        "(set model.friction_limit = 'total_plus_pulloff' to compare)");
+  }
+  if (adhesive && damped && scene.model.adhesive_dashpot != dem::AdhesiveDashpot::pulloff_cap) {
+    out.reasons.push_back(
+        "YADE driver: cohesion 'dmt' with a dashpot is not mapped with adhesive_dashpot = 'clamp': "
+        "Law2_ScGeom_MindlinPhys_Mindlin(includeAdhesion) never clips the normal force but caps the "
+        "dashpot at the adhesion force 4πR*γ whenever the whole normal force is tensile (set "
+        "model.adhesive_dashpot = 'pulloff_cap' to compare)");
+  }
+  if (out.law == YadeLaw::mindlin && scene.model.tangential == "mindlin_8g" &&
+      scene.model.mindlin_form != dem::MindlinForm::incremental) {
+    out.warnings.push_back(
+        "tangential 'mindlin_8g': YADE's Mindlin loads each shear increment at the stiffness of its "
+        "step (F_s −= k_s(δ) Δu_s), the case's mindlin_form 'total' the whole slip at today's k_s: "
+        "they differ while δ changes at constant slip (mindlin_form = 'incremental' is YADE's form)");
+  }
+  if (out.law == YadeLaw::mindlin && out.pairs.size() > 0 && !scene.model.clamp_tensile && !adhesive) {
     if (damped) {
       out.warnings.push_back("damping 'yade_mindlin': YADE's Mindlin clips F_n ≥ 0 (the case "
                              "does not set clamp_tensile)");
@@ -514,7 +536,7 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
     // adds as a separate force is in none of them.
     const char* yade_basis = out.law == YadeLaw::frict         ? "elastic"
                              : out.law == YadeLaw::frict_visco ? "elastic + damping"
-                                                               : "total";
+                                                               : "total (plus 4πR*γ with DMT adhesion)";
     out.conventions["friction limit"] = fmt::format(
         "YADE caps |F_s| at tan(frictAngle)·|F_n| with the {} normal force ({}); the case asks "
         "'{}'",
@@ -525,7 +547,9 @@ YadeModelMapping map_contact_model(const cases::Scene& scene) {
         dem::to_string(scene.model.friction_limit));
     bool same = false;
     switch (scene.model.friction_limit) {
-      case dem::FrictionLimit::total: same = !out.python_cohesion; break;
+      case dem::FrictionLimit::total: same = !out.python_cohesion && !adhesive; break;
+      // Mindlin adds the adhesion force to |F_n|; the linear laws have none, so this is 'total' there.
+      case dem::FrictionLimit::total_plus_pulloff: same = !out.python_cohesion; break;
       case dem::FrictionLimit::elastic: same = out.law == YadeLaw::frict; break;
       case dem::FrictionLimit::elastic_damping: same = out.law != YadeLaw::mindlin || out.surface_energy == 0.0; break;
       // No pull-off force under the linear laws: the shifted rule is elastic + damping there.

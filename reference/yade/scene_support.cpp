@@ -10,11 +10,13 @@ std::vector<std::string> unsupported_scene_features(const cases::Scene& scene) {
   if (scene.fluid) {
     reasons.emplace_back("YADE driver: fluid forces (drag, buoyancy, pressure gradient) are not mapped");
   }
-  if (scene.model.pair_lever_arm != dem::PairLeverArm::contact_point ||
-      scene.model.tangential_history != dem::TangentialHistory::project_rescale) {
+  if (scene.model.pair_lever_arm == dem::PairLeverArm::radius ||
+      scene.model.pair_lever_arm == dem::PairLeverArm::radius_velocity ||
+      scene.model.wall_lever_arm == dem::WallLeverArm::radius ||
+      scene.model.tangential_history == dem::TangentialHistory::increment_project) {
     reasons.emplace_back(
-        "YADE driver: pair_lever_arm and tangential_history other than the defaults are LAMMPS "
-        "gran/hooke/history conventions, not mapped onto YADE's laws");
+        "YADE driver: the lever arms 'radius' and 'radius_velocity' and the tangential_history "
+        "'increment_project' are LAMMPS conventions, not mapped onto YADE's laws");
   }
   if (!scene.output.trace_aggregates.empty()) {
     reasons.emplace_back(

@@ -19,8 +19,8 @@ using demwb_e2e::scratch;
 namespace fs = std::filesystem;
 
 /// Runs `count` scenes against `code` and checks that every one is accounted for; returns true
-/// when each agrees or is n/a.
-bool fuzz_is_clean(const std::string& code, int count) {
+/// when each agrees or is n/a. `agreed` counts the scenes that agree.
+bool fuzz_is_clean(const std::string& code, int count, int& agreed) {
   const fs::path out = scratch("fuzz_matched_" + code);
   const auto r = demwb({"fuzz-matched", "--code", code, "--count", std::to_string(count), "--seed", "1", "-j", "2",
                         "-o", out.string()},
@@ -42,6 +42,7 @@ bool fuzz_is_clean(const std::string& code, int count) {
     }
     if (status == "agree") {
       EXPECT_LE(scene["trace_deviation"].get<double>(), 1e-8);
+      ++agreed;
     }
     if (!judged) ADD_FAILURE() << code << " scene " << scene["seed"] << " (" << scene["model"] << "): " << status
                                << " " << scene["trace_deviation"] << " " << scene["reason"];
@@ -54,8 +55,17 @@ bool fuzz_is_clean(const std::string& code, int count) {
 
 // The first twenty scenes of each code (the CI share of the 500-scene runs of docs/engines.md):
 // every one agrees at 1e-8 or is n/a with its mapping's reason.
-TEST(DemwbFuzzMatched, TwentyLammpsScenesAgreeOrAreNotApplicable) { EXPECT_TRUE(fuzz_is_clean("lammps", 20)); }
-TEST(DemwbFuzzMatched, TwentyYadeScenesAgreeOrAreNotApplicable) { EXPECT_TRUE(fuzz_is_clean("yade", 20)); }
+// Most seeds redraw until the code expresses their scene, so most of them are real comparisons.
+TEST(DemwbFuzzMatched, TwentyLammpsScenesAgreeOrAreNotApplicable) {
+  int agreed = 0;
+  EXPECT_TRUE(fuzz_is_clean("lammps", 20, agreed));
+  EXPECT_GE(agreed, 10);
+}
+TEST(DemwbFuzzMatched, TwentyYadeScenesAgreeOrAreNotApplicable) {
+  int agreed = 0;
+  EXPECT_TRUE(fuzz_is_clean("yade", 20, agreed));
+  EXPECT_GE(agreed, 10);
+}
 
 TEST(DemwbFuzzMatched, AnUnknownCodeIsAUsageError) {
   const auto r = demwb({"fuzz-matched", "--code", "gromacs"});

@@ -3,6 +3,7 @@
 // model policies, effect radius from the interaction ratio, wall traces and energy traces.
 #include <algorithm>
 #include <string>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -110,6 +111,38 @@ TEST(CaseLoaderPhysics, AnUnknownMindlinRadiusIsAnErrorNamingTheKey) {
     const std::string what = e.what();
     EXPECT_NE(what.find("mindlin_radius"), std::string::npos) << what;
     EXPECT_NE(what.find("contact_radius"), std::string::npos) << what;  // the admissible values
+  }
+}
+
+TEST(CaseLoaderPhysics, TheCodeReplicationPoliciesAreReadAndBadValuesNameTheKey) {
+  const std::string from = "mindlin_radius = \"contact_radius\"";
+  std::string text(kCase);
+  text.replace(text.find(from), from.size(),
+               "unloaded_slider = \"zero\"\nadhesive_dashpot = \"pulloff_cap\"\nmindlin_form = \"incremental\"\n"
+               "pair_lever_arm = \"yade_incident\"\ntangential_history = \"yade_rotate\"");
+  text.replace(text.find("wall_lever_arm = \"radius\""), std::string("wall_lever_arm = \"radius\"").size(),
+               "wall_lever_arm = \"yade_incident\"");
+  const auto s = cases::load_case_text(text, "p.toml");
+  EXPECT_EQ(s.model.unloaded_slider, dem::UnloadedSlider::zero);
+  EXPECT_EQ(s.model.adhesive_dashpot, dem::AdhesiveDashpot::pulloff_cap);
+  EXPECT_EQ(s.model.mindlin_form, dem::MindlinForm::incremental);
+  EXPECT_EQ(s.model.pair_lever_arm, dem::PairLeverArm::yade_incident);
+  EXPECT_EQ(s.model.wall_lever_arm, dem::WallLeverArm::yade_incident);
+  EXPECT_EQ(s.model.tangential_history, dem::TangentialHistory::yade_rotate);
+  for (const auto& [key, bad, admissible] :
+       {std::tuple<std::string, std::string, std::string>{"unloaded_slider", "drop", "zero"},
+        {"adhesive_dashpot", "cap", "pulloff_cap"},
+        {"mindlin_form", "force", "incremental"}}) {
+    std::string broken(kCase);
+    broken.replace(broken.find(from), from.size(), key + " = \"" + bad + "\"");
+    try {
+      (void)cases::load_case_text(broken, "p.toml");
+      ADD_FAILURE() << "accepted " << key << " = '" << bad << "'";
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find(key), std::string::npos) << what;
+      EXPECT_NE(what.find(admissible), std::string::npos) << what;
+    }
   }
 }
 

@@ -2,6 +2,8 @@
 // Statuses of comparisons: pass/fail by tolerance; error, missing and n/a never pass.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cases/catalogue.hpp"
 #include "compare/case_outcome.hpp"
 #include "compare/discrepancy.hpp"
@@ -207,6 +209,64 @@ TEST(MatchedRows, ARestitutionOffByOnePartInAMillionFailsTheTraceDeviation) {
   ASSERT_TRUE(matched[1].value) << matched[1].note;
   EXPECT_GT(*matched[1].value, 1e-8);
   EXPECT_LT(*matched[1].value, 1e-4);
+}
+
+/// `trace` with `dx` [m] added to p0.x from row `from` on (a trace that parts there).
+cases::Trace drifted(const cases::Trace& trace, std::size_t from, double dx) {
+  cases::Trace out;
+  for (const std::string& name : trace.columns()) out.add_column(name);
+  const std::size_t x = static_cast<std::size_t>(
+      std::find(trace.columns().begin(), trace.columns().end(), cases::particle_column(0, "x")) - trace.columns().begin());
+  for (std::size_t k = 0; k < trace.rows(); ++k) {
+    std::vector<double> row;
+    for (std::size_t c = 0; c < trace.columns().size(); ++c) row.push_back(trace.values(c)[k]);
+    if (k >= from) row[x] += dx;
+    out.append_row(row);
+  }
+  return out;
+}
+
+/// The matched rows of a collision in which the matched run departs from the code by `gap`
+/// [m] from row `parts` on, and its round-off twin departs from the run by `twin_gap` from row
+/// `twin_parts` on.
+std::vector<comparison::Comparison> matched_with_twin(std::size_t parts, double gap, std::size_t twin_parts,
+                                                      double twin_gap) {
+  auto scene = test_support::collision_scene({"max_overlap"});
+  scene.compare.matched = {"lammps"};
+  scene.output.trace_particles = {0};
+  const auto trace = test_support::collision_trace(5e-6);
+  auto ours = test_support::ok_run("inhouse@lammps", drifted(trace, parts, gap));
+  ours.roundoff_twin = drifted(ours.trace, twin_parts, twin_gap);
+  const auto o = comparison::evaluate_runs(
+      scene, {test_support::ok_run("analytic", trace), test_support::ok_run("lammps", trace), ours});
+  return rows_of(o, "inhouse@lammps", "lammps");
+}
+
+TEST(MatchedRows, RowsPastTheRoundoffHorizonAreNotCompared) {
+  const auto reference_rows = test_support::collision_trace(5e-6).rows();
+  // The twin drifts past 1e-10 (relative to the max overlap u/ω ≈ 8.2e-4 m) at row 60; the run parts
+  // from the code there too, by far more than the tolerance: only rows before 60 count.
+  const auto horizon = matched_with_twin(60, 1e-6, 60, 1e-12);
+  ASSERT_EQ(horizon.back().metric, "trace_deviation");
+  EXPECT_EQ(horizon.back().status, comparison::Status::pass) << horizon.back().note;
+  ASSERT_TRUE(horizon.back().value);
+  EXPECT_EQ(*horizon.back().value, 0.0);
+  EXPECT_NE(horizon.back().note.find(comparison::kRoundoffHorizonNote), std::string::npos) << horizon.back().note;
+  EXPECT_NE(horizon.back().note.find("row 60 of " + std::to_string(reference_rows)), std::string::npos)
+      << horizon.back().note;
+  // A twin that stays within 1e-10 leaves every row compared: the same departure fails.
+  const auto steady = matched_with_twin(60, 1e-6, 60, 1e-16);
+  EXPECT_EQ(steady.back().status, comparison::Status::fail) << steady.back().note;
+  EXPECT_EQ(steady.back().note.find(comparison::kRoundoffHorizonNote), std::string::npos) << steady.back().note;
+  // A model difference shows before the horizon and fails however chaotic the scene is later.
+  const auto early = matched_with_twin(40, 1e-9, 60, 1e-12);
+  EXPECT_EQ(early.back().status, comparison::Status::fail) << early.back().note;
+  ASSERT_TRUE(early.back().value);
+  EXPECT_GT(*early.back().value, 1e-8);
+  // A horizon within the first tenth of the run leaves too little to judge: n/a, with the reason.
+  const auto vacuous = matched_with_twin(5, 1e-6, 5, 1e-12);
+  EXPECT_EQ(vacuous.back().status, comparison::Status::not_applicable) << vacuous.back().note;
+  EXPECT_NE(vacuous.back().note.find("under a tenth"), std::string::npos) << vacuous.back().note;
 }
 
 TEST(MatchedRows, AMetricItsCodeCannotExpressForTheCaseIsStillComparedInTheMatchedRun) {

@@ -27,6 +27,7 @@ struct Case {
   dem::FrictionLimit limit;
   bool clamp;
   bool zero_overlap;
+  dem::UnloadedSlider unloaded;
 };
 
 /// Bits of a double, so that −0 and +0 (and the payload of a NaN) count as different.
@@ -91,6 +92,7 @@ dem::PairLaw law_for(const Case& c, std::mt19937_64& rng) {
   law.policies.friction_limit = c.limit;
   law.policies.clamp_tensile = c.clamp;
   law.policies.contact_at_zero_overlap = c.zero_overlap;
+  law.policies.unloaded_slider = c.unloaded;
   return law;
 }
 
@@ -103,8 +105,17 @@ dem::BatchLaw batch_law_of(const dem::PairLaw& law) {
           tangential.friction, tangential.damping_ratio};
 }
 
-/// Evaluates `lanes` random pairs of one case both ways and compares every output bit.
-void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, int& sliding, int& sticking, int& apart) {
+/// Tallies of the branches the random pairs reached.
+struct Reached {
+  int sliding = 0;
+  int sticking = 0;
+  int apart = 0;
+  int dropped = 0;  ///< an unloaded slider over the cap whose force UnloadedSlider::zero removed
+};
+
+/// Evaluates `lanes` random pairs of one case both ways and compares every output bit. With
+/// `elapsed` 0 a pair with no committed slip is a first evaluation (what UnloadedSlider is about).
+void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double elapsed, Reached& reached) {
   std::mt19937_64 rng(seed);
   auto batch = std::make_unique<dem::ContactBatch>();
   std::vector<RandomPair> pairs;
@@ -116,6 +127,7 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, int& sli
   policies.limit_elastic = c.limit == dem::FrictionLimit::elastic;
   policies.clamp_tensile = c.clamp;
   policies.contact_at_zero_overlap = c.zero_overlap;
+  policies.zero_when_unloaded = c.unloaded == dem::UnloadedSlider::zero;
   for (std::uint32_t g = 0; g < lanes; ++g) {
     pairs.push_back(random_pair(rng));
     laws.push_back(law_for(c, rng));
@@ -134,7 +146,6 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, int& sli
     dem::set_lane(b.sx, b.sy, b.sz, g, r.slip.data());
     dem::set_law(b, g, batch_law_of(laws.back()));
   }
-  const double elapsed = 1e-6;
   dem::evaluate_contact_batch(*batch, lanes, policies, elapsed);
   for (std::uint32_t g = 0; g < lanes; ++g) {
     const RandomPair& r = pairs[g];
@@ -148,7 +159,7 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, int& sli
     ASSERT_EQ(o.contact, o.interacting);
     EXPECT_EQ(bits(b.overlap[g]), bits(geometry.overlap));
     if (!o.contact) {
-      ++apart;
+      ++reached.apart;
       continue;
     }
     // Sliding when the tangential force sits at the Coulomb cap μ·basis.
@@ -160,7 +171,13 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, int& sli
     const double cap = std::get<dem::SpringCoulombTangential>(laws[g].tangential).friction * basis;
     const double tangential = (o.force_on_p - o.normal_force * geometry.normal).norm();
     const bool slid = cap > 0.0 && tangential >= cap * (1.0 - 1e-9);
-    (slid ? sliding : sticking) += 1;
+    (slid ? reached.sliding : reached.sticking) += 1;
+    if (c.unloaded == dem::UnloadedSlider::zero && tangential == 0.0) {
+      dem::PairLaw capping = laws[g];
+      capping.policies.unloaded_slider = dem::UnloadedSlider::cap;
+      const dem::ContactOutcome o_cap = dem::evaluate_contact(capping, geometry, committed, elapsed);
+      if ((o_cap.force_on_p - o_cap.normal_force * geometry.normal).norm() > 0.0) ++reached.dropped;
+    }
     EXPECT_EQ(bits(b.fx[g]), bits(o.force_on_p[0]));
     EXPECT_EQ(bits(b.fy[g]), bits(o.force_on_p[1]));
     EXPECT_EQ(bits(b.fz[g]), bits(o.force_on_p[2]));
@@ -177,22 +194,25 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, int& sli
 }
 
 TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
-  int sliding = 0;
-  int sticking = 0;
-  int apart = 0;
+  Reached reached;
   std::uint64_t seed = 20261204;
   for (const auto normal : {dem::BatchNormal::linear, dem::BatchNormal::hertz}) {
     for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius}) {
       for (const auto history : {dem::TangentialHistory::project_rescale, dem::TangentialHistory::increment_project}) {
         for (const auto limit : {dem::FrictionLimit::total, dem::FrictionLimit::elastic,
-                                 dem::FrictionLimit::elastic_damping, dem::FrictionLimit::jkr_shifted}) {
+                                 dem::FrictionLimit::elastic_damping, dem::FrictionLimit::jkr_shifted,
+                                 dem::FrictionLimit::total_plus_pulloff}) {
           for (const bool clamp : {false, true}) {
             for (const bool zero_overlap : {false, true}) {
-              // Batches of every length up to a full one, so the vector loops' tails run too.
-              const auto lanes = static_cast<std::uint32_t>(1 + seed % dem::kContactBatch);
-              check_case({normal, arm, history, limit, clamp, zero_overlap}, seed++, lanes, sliding, sticking, apart);
-              check_case({normal, arm, history, limit, clamp, zero_overlap}, seed++, dem::kContactBatch, sliding,
-                         sticking, apart);
+              for (const auto unloaded : {dem::UnloadedSlider::cap, dem::UnloadedSlider::zero}) {
+                const Case c{normal, arm, history, limit, clamp, zero_overlap, unloaded};
+                // Batches of every length up to a full one, so the vector loops' tails run too;
+                // one step into the contact, and at its first evaluation (elapsed 0).
+                const auto lanes = static_cast<std::uint32_t>(1 + seed % dem::kContactBatch);
+                check_case(c, seed++, lanes, 1e-6, reached);
+                check_case(c, seed++, dem::kContactBatch, 1e-6, reached);
+                check_case(c, seed++, dem::kContactBatch, 0.0, reached);
+              }
             }
           }
         }
@@ -200,9 +220,10 @@ TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
     }
   }
   // The random pairs reached every branch the comparison is about.
-  EXPECT_GT(sliding, 1000);
-  EXPECT_GT(sticking, 1000);
-  EXPECT_GT(apart, 1000);
+  EXPECT_GT(reached.sliding, 1000);
+  EXPECT_GT(reached.sticking, 1000);
+  EXPECT_GT(reached.apart, 1000);
+  EXPECT_GT(reached.dropped, 20);
 }
 
 }  // namespace

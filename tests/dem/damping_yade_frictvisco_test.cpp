@@ -35,7 +35,7 @@ TEST(YadeFrictViscoDamping, WallUsesTwiceTheSphereRadius) {
   p.position = dem::Vec3(0, 0, 0.0099);
   p.velocity = dem::Vec3(3.0, 0, -2.0);
   const dem::PlaneWall wall{dem::Vec3::Zero(), dem::Vec3::UnitZ()};
-  const auto g = dem::wall_geometry(p, wall, 0.0, false);
+  const auto g = dem::wall_geometry(p, wall, 0.0, dem::WallLeverArm::contact_point);
   ASSERT_TRUE(g.against_wall);
   ASSERT_NEAR(g.overlap, 1e-4, 1e-16);
   dem::NormalResponse n;

@@ -24,7 +24,7 @@ const double kInertia = 0.4 * kMass * kRadius * kRadius;
 
 dem::ContactGeometry floor_contact(double overlap, const Vec3& v, const Vec3& w) {
   const dem::SphereState p{Vec3(0, 0, kRadius - overlap), v, w, kRadius, kRadius, 1.0 / kMass};
-  return dem::wall_geometry(p, dem::PlaneWall{Vec3::Zero(), Vec3::UnitZ()}, 0.0, false);
+  return dem::wall_geometry(p, dem::PlaneWall{Vec3::Zero(), Vec3::UnitZ()}, 0.0, dem::WallLeverArm::contact_point);
 }
 
 dem::PairLaw rolling_law(const char* rolling, double mu_r, double k_r = 1e3, double gamma_r = 0.0) {

@@ -26,7 +26,7 @@ dem::ContactGeometry floor_contact(double overlap, const Vec3& v, const Vec3& w 
                                    bool lever_is_radius = false) {
   const dem::SphereState p{Vec3(0, 0, kRadius - overlap), v, w, kRadius, kRadius, 1.0 / kMass};
   const dem::PlaneWall floor{Vec3::Zero(), Vec3::UnitZ()};
-  return dem::wall_geometry(p, floor, 0.0, lever_is_radius);
+  return dem::wall_geometry(p, floor, 0.0, lever_is_radius ? dem::WallLeverArm::radius : dem::WallLeverArm::contact_point);
 }
 
 /// Pair properties of a linear spring–dashpot contact with spring–Coulomb friction.
@@ -73,7 +73,7 @@ TEST(HistoryRotation, UnchangedNormalLeavesTheSlipAloneAndSlipAlongTheNewNormalV
 TEST(SpringSlider, StuckForceIsMinusSpringMinusDashpotAndTheDashpotDissipates) {
   const Vec3 carried(2e-6, 0, 0), v(0.1, 0.2, 0);
   const double elapsed = 1e-6;
-  const auto r = dem::laws::spring_slider(1e5, 3.0, 10.0, carried, v, elapsed);
+  const auto r = dem::laws::spring_slider(1e5, 3.0, 10.0, carried, v, elapsed, false);
   EXPECT_FALSE(r.sliding);
   EXPECT_TRUE(r.displacement.isApprox(carried + v * elapsed, 1e-15));
   EXPECT_TRUE(r.force.isApprox(-1e5 * r.displacement - 3.0 * v, 1e-15));
@@ -83,7 +83,7 @@ TEST(SpringSlider, StuckForceIsMinusSpringMinusDashpotAndTheDashpotDissipates) {
 TEST(SpringSlider, CoulombCapHoldsTheForceAtTheLimitAndTruncatesTheSlip) {
   const Vec3 xi(3e-4, -1.5e-4, 0), v(0.3, 0.0, 0);
   const double k = 2e4, limit = 3.0;
-  const auto r = dem::laws::spring_slider(k, 0.0, limit, xi, v, 0.0);
+  const auto r = dem::laws::spring_slider(k, 0.0, limit, xi, v, 0.0, false);
   ASSERT_TRUE(r.sliding);
   EXPECT_NEAR(r.force.norm(), limit, 1e-14);
   EXPECT_NEAR(k * r.displacement.norm(), limit, 1e-14);  // k|ς| = μ·basis (Cundall–Strack)
@@ -95,7 +95,7 @@ TEST(SpringSlider, SteadySlidingDissipatesLimitTimesSlipSpeedTimesElapsed) {
   const double k = 2e4, limit = 3.0, elapsed = 1e-6;
   const Vec3 v(0.3, 0.4, 0);
   const Vec3 at_cap = v.normalized() * (limit / k);
-  const auto r = dem::laws::spring_slider(k, 0.0, limit, at_cap, v, elapsed);
+  const auto r = dem::laws::spring_slider(k, 0.0, limit, at_cap, v, elapsed, false);
   ASSERT_TRUE(r.sliding);
   EXPECT_TRUE(r.displacement.isApprox(at_cap, 1e-14));
   EXPECT_NEAR(r.dissipated, limit * v.norm() * elapsed, 1e-12 * limit * v.norm() * elapsed);
@@ -104,7 +104,7 @@ TEST(SpringSlider, SteadySlidingDissipatesLimitTimesSlipSpeedTimesElapsed) {
 TEST(SpringSlider, TruncationKeepsTheDashpotPartAsLammpsDoes) {
   const Vec3 xi(1e-4, 0, 0), v(0.5, 0.5, 0);
   const double k = 2e4, gamma = 2.0, limit = 1.5;
-  const auto r = dem::laws::spring_slider(k, gamma, limit, xi, v, 0.0);
+  const auto r = dem::laws::spring_slider(k, gamma, limit, xi, v, 0.0, false);
   ASSERT_TRUE(r.sliding);
   const Vec3 trial = -k * xi - gamma * v;
   EXPECT_TRUE(r.force.isApprox(trial * (limit / trial.norm()), 1e-14));
@@ -116,7 +116,7 @@ TEST(SpringSlider, TruncationKeepsTheDashpotPartAsLammpsDoes) {
 TEST(SpringSlider, DashpotAboveTheCapLeavesTheSpringPointingAlongTheSlipAsInLammps) {
   // γ|v| = 2 N > limit 0.5 N: the spring must push forwards so that spring + dashpot = F_capped.
   const Vec3 v(1.0, 0, 0);
-  const auto r = dem::laws::spring_slider(2e4, 2.0, 0.5, Vec3(1e-5, 0, 0), v, 1e-6);
+  const auto r = dem::laws::spring_slider(2e4, 2.0, 0.5, Vec3(1e-5, 0, 0), v, 1e-6, false);
   ASSERT_TRUE(r.sliding);
   EXPECT_NEAR(r.force.x(), -0.5, 1e-15);
   EXPECT_LT(r.displacement.x(), 0.0);  // −(F + γv)/k = −1.5 N / k
@@ -125,9 +125,30 @@ TEST(SpringSlider, DashpotAboveTheCapLeavesTheSpringPointingAlongTheSlipAsInLamm
 }
 
 TEST(SpringSlider, ZeroStiffnessStoresNoDisplacement) {
-  const auto r = dem::laws::spring_slider(0.0, 1.0, 10.0, Vec3(1e-3, 0, 0), Vec3(0.1, 0, 0), 1e-6);
+  const auto r = dem::laws::spring_slider(0.0, 1.0, 10.0, Vec3(1e-3, 0, 0), Vec3(0.1, 0, 0), 1e-6, false);
   EXPECT_EQ(r.displacement, Vec3::Zero());
   EXPECT_TRUE(r.force.isApprox(Vec3(-0.1, 0, 0)));
+}
+
+TEST(SpringSlider, UnloadedSliderOverTheCapDropsItsForceOnlyUnderTheZeroPolicy) {
+  // ς = 0 at the first evaluation (elapsed 0) and a dashpot force γ|v| = 2 N above the 0.5 N cap.
+  const Vec3 v(0.6, -0.8, 0);
+  const auto capped = dem::laws::spring_slider(2e4, 2.0, 0.5, Vec3::Zero(), v, 0.0, false);
+  ASSERT_TRUE(capped.sliding);
+  EXPECT_NEAR(capped.force.norm(), 0.5, 1e-15);
+  const auto dropped = dem::laws::spring_slider(2e4, 2.0, 0.5, Vec3::Zero(), v, 0.0, true);
+  EXPECT_TRUE(dropped.sliding);
+  EXPECT_EQ(dropped.force, Vec3::Zero());
+  EXPECT_EQ(dropped.displacement, Vec3::Zero());
+  EXPECT_EQ(dropped.dissipated, 0.0);
+  // Below the cap, or once any displacement is stored, the policy changes nothing.
+  const auto stuck = dem::laws::spring_slider(2e4, 2.0, 5.0, Vec3::Zero(), v, 0.0, true);
+  EXPECT_EQ(stuck.force, -2.0 * v);
+  const auto loaded_cap = dem::laws::spring_slider(2e4, 2.0, 0.5, Vec3::Zero(), v, 1e-9, false);
+  const auto loaded_zero = dem::laws::spring_slider(2e4, 2.0, 0.5, Vec3::Zero(), v, 1e-9, true);
+  EXPECT_EQ(loaded_zero.force, loaded_cap.force);
+  EXPECT_EQ(loaded_zero.displacement, loaded_cap.displacement);
+  EXPECT_NEAR(loaded_zero.force.norm(), 0.5, 1e-15);
 }
 
 TEST(MindlinStiffness, ThesisFormHasPrefactorSixteenThirdsAndMindlinEight) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <string>
@@ -23,6 +24,36 @@ TEST(MatchedFuzz, ASeedAlwaysGivesTheSameScene) {
     }
   }
   EXPECT_THROW((void)studies::random_matched_scene("liggghts", 1), std::invalid_argument);
+}
+
+TEST(MatchedFuzz, MostSeedsRedrawUntilTheFilterAcceptsAndTheRestKeepTheirFirstDraft) {
+  // A filter standing in for a code's mapping: only scenes with a linear normal model.
+  const studies::ExpressibleFilter linear = [](const studies::FuzzScene& s) { return s.model.starts_with("linear/"); };
+  int kept_first = 0;
+  int filtered = 0;
+  for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+    const studies::FuzzScene s = studies::random_matched_scene("lammps", seed, linear);
+    EXPECT_EQ(s.toml, studies::random_matched_scene("lammps", seed, linear).toml);  // deterministic
+    EXPECT_EQ(s.name, "fuzz_lammps_" + std::to_string(seed));
+    if (s.draws == 1) {
+      EXPECT_EQ(s.toml, studies::random_matched_scene("lammps", seed).toml);
+      ++kept_first;
+    }
+    if (linear(s)) ++filtered;
+    if (s.draws > 1) {
+      EXPECT_TRUE(linear(s));
+      EXPECT_NE(s.toml.find(", draft " + std::to_string(s.draws)), std::string::npos);
+    }
+  }
+  // About 80 % of the seeds must be accepted; the first draft is linear for about half of them.
+  EXPECT_GT(filtered, 150);
+  EXPECT_GT(kept_first, 60);
+  EXPECT_LT(filtered, 200);  // the other seeds keep n/a scenes too
+  // A filter that accepts nothing stops after kMaxDrafts drafts.
+  const auto none = [](const studies::FuzzScene&) { return false; };
+  int longest = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) longest = std::max(longest, studies::random_matched_scene("yade", seed, none).draws);
+  EXPECT_EQ(longest, studies::kMaxDrafts);
 }
 
 TEST(MatchedFuzz, EveryGeneratedCaseLoadsAndEveryRowIsDrawn) {

@@ -31,6 +31,19 @@ namespace dem::laws {
   return displacement - displacement.dot(normal) * normal;
 }
 
+/// A stored tangential displacement ς turned YADE's way (ScGeom::precompute and rotate,
+/// docs/physics-tangential.md): first by the turn of the normal, ς − ς × (n_old × n), then by the
+/// mean spin about the old normal over `elapsed`, ς − ς × (½ elapsed n_old·(ω_p + ω_q)) n_old,
+/// each to first order and without re-projecting onto the tangent plane. A new contact
+/// (n_old = 0) keeps ς. `spin_sum` is ω_p + ω_q [rad/s].
+[[nodiscard]] inline Vec3 yade_rotate(const Vec3& displacement, const Vec3& previous_normal, const Vec3& normal,
+                                      const Vec3& spin_sum, double elapsed) noexcept {
+  if (previous_normal.isZero(0.0)) return displacement;
+  const Vec3 turned = displacement - displacement.cross(previous_normal.cross(normal));
+  const Vec3 twist = (elapsed * 0.5 * previous_normal.dot(spin_sum)) * previous_normal;
+  return turned - turned.cross(twist);
+}
+
 /// Result of a spring–dashpot–slider: force, stored displacement and the dissipated work.
 struct SpringSliderResult {
   Vec3 force = Vec3::Zero();         ///< −k ς − γ v, or its Coulomb-capped value [N]
@@ -47,17 +60,21 @@ struct SpringSliderResult {
 /// the spring carries the capped force minus the unchanged dashpot part,
 /// ς_new = −(F_capped + γ v)/k (LAMMPS pair granular rule; with γ = 0 this is k|ς_new| = limit).
 /// When γ|v| > limit this leaves the spring pointing along the slip, as in LAMMPS.
+/// With `zero_when_unloaded` (UnloadedSlider::zero) a slider whose displacement carried + v·elapsed
+/// is exactly zero (|·| = 0) and whose dashpot alone exceeds the limit returns no force at all and
+/// keeps the zero displacement (LAMMPS pair granular, fix wall/gran, gran/hooke/history).
 /// Dissipation over `elapsed`: stuck, the dashpot's γ|v|² elapsed; sliding, the work of the
 /// applied force −F·v elapsed minus the change of the spring energy ½k|ς|² (clamped at ≥ 0).
 /// stiffness k [N/m] ≥ 0 (k = 0 stores no displacement), damping γ [kg/s] ≥ 0, limit [N] ≥ 0,
 /// displacements [m], v the relative velocity of the contact [m/s], elapsed [s].
 [[nodiscard]] inline SpringSliderResult spring_slider(double stiffness, double damping,
                                                       double limit, const Vec3& carried,
-                                                      const Vec3& velocity,
-                                                      double elapsed) noexcept {
+                                                      const Vec3& velocity, double elapsed,
+                                                      bool zero_when_unloaded) noexcept {
   SpringSliderResult r;
   const Vec3 start = stiffness > 0.0 ? carried : Vec3::Zero();
-  r.displacement = stiffness > 0.0 ? Vec3(carried + velocity * elapsed) : Vec3::Zero();
+  const Vec3 integrated = carried + velocity * elapsed;
+  r.displacement = stiffness > 0.0 ? integrated : Vec3::Zero();
   r.force = -stiffness * r.displacement - damping * velocity;
   const double magnitude = r.force.norm();
   const double cap = std::max(limit, 0.0);
@@ -66,6 +83,10 @@ struct SpringSliderResult {
     return r;
   }
   r.sliding = true;
+  if (zero_when_unloaded && integrated.norm() == 0.0) {
+    r.force = Vec3::Zero();
+    return r;
+  }
   r.force *= cap / magnitude;
   if (stiffness > 0.0) r.displacement = -(r.force + damping * velocity) / stiffness;
   const double work = -r.force.dot(velocity) * elapsed;

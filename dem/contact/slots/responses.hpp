@@ -28,6 +28,9 @@ struct ContactPolicies {
   bool contact_at_zero_overlap = false;  ///< δ = 0 counts as contact (ModelChoice)
   TangentialHistory tangential_history = TangentialHistory::project_rescale;
   MindlinRadius mindlin_radius = MindlinRadius::overlap;
+  UnloadedSlider unloaded_slider = UnloadedSlider::cap;
+  AdhesiveDashpot adhesive_dashpot = AdhesiveDashpot::clamp;
+  MindlinForm mindlin_form = MindlinForm::total;
 };
 
 /// Everything a sub-model may read about one contact at one evaluation.

@@ -45,7 +45,8 @@ struct SpringDashpotSliderRolling {
     const Vec3 v_roll = laws::rolling_velocity(r, in.g.relative_angular_velocity, in.g.normal);
     const Vec3 carried = laws::carry_into_tangent_plane(in.committed.rolling_slip, in.g.normal);
     const laws::SpringSliderResult s = laws::spring_slider(
-        stiffness, damping, rolling_friction * basis, carried, v_roll, in.elapsed);
+        stiffness, damping, rolling_friction * basis, carried, v_roll, in.elapsed,
+        in.policies.unloaded_slider == UnloadedSlider::zero);
     next.rolling_slip = s.displacement;
     const Vec3 torque = laws::rolling_torque(r, in.g.normal, s.force);
     return {torque, -torque, s.dissipated, laws::spring_energy(stiffness, s.displacement)};

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <string_view>
 
@@ -17,6 +18,40 @@ namespace dem {
     return t_in.contact_radius;
   }
   return laws::mindlin_contact_radius(in.g.reduced_radius, in.g.overlap);
+}
+
+/// The incremental Mindlin response (MindlinForm::incremental, YADE's Hertz–Mindlin): each slip
+/// increment u_t Δt is loaded at the stiffness k_t = c a of its own step, F = F_old − c a u_t Δt,
+/// rather than the whole slip at today's stiffness. The history holds σ = −F_spring / c [m²]
+/// (carried by the TangentialHistory rule like a slip), so σ ← σ + a u_t Δt; with the dashpot
+/// η_t u_t, the Coulomb cap and the unloaded-slider rule as spring_coulomb_response. The spring
+/// energy is |F_spring|²/(2 k_t). `c` is the stiffness per unit contact radius [N/m²], a [m].
+[[nodiscard]] inline TangentialResponse incremental_mindlin_response(double c, double a, double friction,
+                                                                     double damping_ratio, const ContactInput& in,
+                                                                     const TangentialInput& t_in,
+                                                                     ContactHistory& next) noexcept {
+  const Vec3& u_t = in.g.tangential_velocity;
+  const Vec3 start = carried_slip(in);
+  const Vec3 integrated = start + (a * in.elapsed) * u_t;
+  const double eta_t = damping_ratio * t_in.damping_coefficient;
+  const double cap = std::max(friction * t_in.limit_basis, 0.0);
+  const double k_t = c * a;
+  const auto energy = [&](const Vec3& sigma) { return k_t > 0.0 ? 0.5 * c * c * sigma.squaredNorm() / k_t : 0.0; };
+  Vec3 force = -c * integrated - eta_t * u_t;
+  const double magnitude = force.norm();
+  if (!(magnitude > cap)) {
+    next.tangential_slip = integrated;
+    return {force, energy(integrated), eta_t * u_t.squaredNorm() * in.elapsed};
+  }
+  if (in.policies.unloaded_slider == UnloadedSlider::zero && integrated.norm() == 0.0) {
+    next.tangential_slip = integrated;
+    return {Vec3::Zero(), 0.0, 0.0};
+  }
+  force *= cap / magnitude;
+  const Vec3 sigma = c > 0.0 ? Vec3(-(force + eta_t * u_t) / c) : Vec3::Zero();
+  next.tangential_slip = sigma;
+  const double work = -force.dot(u_t) * in.elapsed;
+  return {force, energy(sigma), std::max(work - (energy(sigma) - energy(start)), 0.0)};
 }
 
 /// Mixed parameters of a Mindlin tangential sub-model.
@@ -60,7 +95,12 @@ struct MindlinTangential {
   /// Tangential force on p; updates next.tangential_slip.
   [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
                                             ContactHistory& next) const noexcept {
-    const double k = laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, mindlin_radius(in, t_in));
+    const double a = mindlin_radius(in, t_in);
+    if (in.policies.mindlin_form == MindlinForm::incremental) {
+      return incremental_mindlin_response(laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, 1.0), a,
+                                          p.friction, p.damping_ratio, in, t_in, next);
+    }
+    const double k = laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, a);
     return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
   }
 };
@@ -89,7 +129,12 @@ struct Mindlin8GTangential {
   /// Tangential force on p; updates next.tangential_slip.
   [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
                                             ContactHistory& next) const noexcept {
-    const double k = laws::mindlin_stiffness_at_radius(p.shear_modulus, mindlin_radius(in, t_in));
+    const double a = mindlin_radius(in, t_in);
+    if (in.policies.mindlin_form == MindlinForm::incremental) {
+      return incremental_mindlin_response(laws::mindlin_stiffness_at_radius(p.shear_modulus, 1.0), a, p.friction,
+                                          p.damping_ratio, in, t_in, next);
+    }
+    const double k = laws::mindlin_stiffness_at_radius(p.shear_modulus, a);
     return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
   }
 };

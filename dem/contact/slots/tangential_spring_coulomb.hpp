@@ -10,6 +10,20 @@
 
 namespace dem {
 
+/// The committed tangential slip carried into the current tangent plane by the model's
+/// TangentialHistory rule (eq 3.9; docs/physics-tangential.md).
+[[nodiscard]] inline Vec3 carried_slip(const ContactInput& in) noexcept {
+  switch (in.policies.tangential_history) {
+    case TangentialHistory::increment_project:
+      return laws::project_onto_tangent_plane(in.committed.tangential_slip, in.g.normal);
+    case TangentialHistory::yade_rotate:
+      return laws::yade_rotate(in.committed.tangential_slip, in.committed.normal, in.g.normal,
+                               in.g.angular_velocity_sum, in.elapsed);
+    case TangentialHistory::project_rescale: break;
+  }
+  return laws::carry_into_tangent_plane(in.committed.tangential_slip, in.g.normal);
+}
+
 /// The spring–dashpot–Coulomb tangential response shared by the history-based tangential
 /// sub-models: the committed slip carried into the current tangent plane (by the policy's
 /// TangentialHistory rule) plus u_t·elapsed
@@ -21,13 +35,11 @@ namespace dem {
                                                                 const TangentialInput& t_in,
                                                                 ContactHistory& next) noexcept {
   const Vec3& u_t = in.g.tangential_velocity;
-  const Vec3 carried =
-      in.policies.tangential_history == TangentialHistory::increment_project
-          ? laws::project_onto_tangent_plane(in.committed.tangential_slip, in.g.normal)
-          : laws::carry_into_tangent_plane(in.committed.tangential_slip, in.g.normal);
+  const Vec3 carried = carried_slip(in);
   const double eta_t = damping_ratio * t_in.damping_coefficient;
   const laws::SpringSliderResult r = laws::spring_slider(
-      stiffness, eta_t, friction * t_in.limit_basis, carried, u_t, in.elapsed);
+      stiffness, eta_t, friction * t_in.limit_basis, carried, u_t, in.elapsed,
+      in.policies.unloaded_slider == UnloadedSlider::zero);
   next.tangential_slip = r.displacement;
   return {r.force, laws::spring_energy(stiffness, r.displacement), r.dissipated};
 }
