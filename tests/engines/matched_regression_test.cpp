@@ -23,17 +23,27 @@ cases::Scene regression(const std::string& name) {
   return cases::load_case(fs::path(DEMWB_SOURCE_DIR) / "tests" / "data" / "matched" / (name + ".toml"));
 }
 
-/// Trace deviation of the core on `code`'s numerics against `code` itself on `scene`.
-double matched_deviation(const cases::Scene& scene, const reference::Engine& engine, const std::string& code) {
+/// Whole-trace deviation of the core on `code`'s numerics against `code` itself on `scene`, the
+/// matched scene first passed through `edit`; `if_failed` when a run or the comparison fails
+/// (the caller picks it so that its own check then fails).
+template <class Edit>
+double whole_deviation(const cases::Scene& scene, const reference::Engine& engine, const std::string& code, Edit edit,
+                       double if_failed) {
   const cases::RunResult theirs = reference::run_engine(engine, scene, demwb_lammps_test::scratch("regression-" + scene.name));
   EXPECT_EQ(theirs.status, cases::RunStatus::ok) << theirs.reason << "\n" << theirs.log_tail;
-  const cases::RunResult ours =
-      reference::run_engine(reference::InhouseEngine{}, reference::matched_scene(scene, code), {});
+  cases::Scene matched = reference::matched_scene(scene, code);
+  edit(matched);
+  const cases::RunResult ours = reference::run_engine(reference::InhouseEngine{}, matched, {});
   EXPECT_EQ(ours.status, cases::RunStatus::ok) << ours.reason;
   std::string problem;
   const auto deviation = comparison::trace_deviation(scene, ours, theirs, problem);
   EXPECT_TRUE(deviation.has_value()) << problem;
-  return deviation ? deviation->whole : 1.0;
+  return deviation ? deviation->whole : if_failed;
+}
+
+/// Trace deviation of the core on `code`'s numerics against `code` itself on `scene`.
+double matched_deviation(const cases::Scene& scene, const reference::Engine& engine, const std::string& code) {
+  return whole_deviation(scene, engine, code, [](cases::Scene&) {}, 1.0);
 }
 
 TEST(MatchedRegression, JkrWithMindlinOnTheContactRadiusAgreesWithLammps) {
@@ -73,14 +83,7 @@ TEST(MatchedRegression, DmtWithFrictionIsNotApplicableForLammps) {
 template <class Unset>
 double deviation_without_policy(const cases::Scene& scene, const reference::Engine& engine, const std::string& code,
                                 Unset unset) {
-  const cases::RunResult theirs = reference::run_engine(engine, scene, demwb_lammps_test::scratch("regression-" + scene.name));
-  cases::Scene matched = reference::matched_scene(scene, code);
-  unset(matched);
-  const cases::RunResult ours = reference::run_engine(reference::InhouseEngine{}, matched, {});
-  std::string problem;
-  const auto deviation = comparison::trace_deviation(scene, ours, theirs, problem);
-  EXPECT_TRUE(deviation.has_value()) << problem;
-  return deviation ? deviation->whole : 0.0;
+  return whole_deviation(scene, engine, code, unset, 0.0);
 }
 
 TEST(MatchedRegression, SpheresTouchingAtTheStartDropAnOverloadedTangentialDashpotAsLammpsDoes) {
