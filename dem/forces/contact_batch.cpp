@@ -47,7 +47,7 @@ template <BatchNormal Normal, bool IncrementProject>
   const double arm_factor = p.lever_arm_radius ? 0.0 : 0.5;
   const double basis_damping = p.limit_elastic ? 0.0 : 1.0;
   const double clamp_below = p.clamp_tensile ? 0.0 : -std::numeric_limits<double>::infinity();
-  // |ς| at or below this drops a capped force: 0 under UnloadedSlider::zero, never (−1) else.
+  // |ς|² at or below this drops a capped force: 0 under UnloadedSlider::zero, never (−1) else.
   const double unloaded_below = p.zero_when_unloaded ? 0.0 : -1.0;
   for (std::uint32_t g = 0; g < n; ++g) {
     const double k_normal = b.normal[g];
@@ -108,7 +108,8 @@ template <BatchNormal Normal, bool IncrementProject>
     const double cap = limit < 0.0 ? 0.0 : limit;
     const bool sliding = magnitude > cap;
     // UnloadedSlider::zero: a capped slider with nothing stored gives no force and keeps ς = 0.
-    const bool dropped = sliding && std::sqrt(dot(integrated, integrated)) <= unloaded_below;
+    // |ς|² = 0 exactly when |ς| = 0. `&`, not `&&`: a short circuit stops GCC vectorising the loop.
+    const bool dropped = sliding & (dot(integrated, integrated) <= unloaded_below);
     const V3 capped = trial * (cap / magnitude);
     const V3 friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
     const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
