@@ -13,6 +13,7 @@
 #include "cases/output_budget.hpp"
 #include "compare/time_step_refinement.hpp"
 #include "store/scene_json.hpp"
+#include "reference/registry.hpp"
 
 namespace app {
 namespace {

@@ -8,6 +8,7 @@
 #include "app/options.hpp"
 #include "cases/catalogue.hpp"
 #include "reference/engine.hpp"
+#include "reference/registry.hpp"
 #include "reports/markdown.hpp"
 
 namespace app {

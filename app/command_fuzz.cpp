@@ -20,6 +20,7 @@
 #include "cases/case_loader.hpp"
 #include "compare/metrics.hpp"
 #include "reference/engine.hpp"
+#include "reference/registry.hpp"
 #include "studies/matched_fuzz.hpp"
 #include "support/text_file.hpp"
 

@@ -16,6 +16,7 @@
 #include "store/scene_json.hpp"
 #include "support/interrupts.hpp"
 #include "sweeps/sweep_spec.hpp"
+#include "reference/registry.hpp"
 
 namespace app {
 

@@ -14,6 +14,7 @@
 #include "reports/case_report.hpp"
 #include "reports/markdown.hpp"
 #include "support/interrupts.hpp"
+#include "reference/registry.hpp"
 
 namespace app {
 namespace {

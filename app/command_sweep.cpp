@@ -19,6 +19,7 @@
 #include "cases/catalogue.hpp"
 #include "ranks/ranks.hpp"
 #include "reference/engine.hpp"
+#include "reference/registry.hpp"
 #include "reports/case_outputs.hpp"
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"

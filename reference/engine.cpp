@@ -7,12 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "reference/analytic/analytic_engine.hpp"
-#include "cases/catalogue.hpp"
-#include "reference/inhouse/inhouse_engine.hpp"
-#include "reference/inhouse/matched_engine.hpp"
-#include "reference/lammps/lammps_engine.hpp"
-#include "reference/yade/yade_engine.hpp"
 #include "support/utf8.hpp"
 
 namespace reference {
@@ -24,22 +18,6 @@ std::string Support::explain() const {
     out += r;
   }
   return out;
-}
-
-std::unique_ptr<Engine> make_engine(std::string_view name, const ExternalPrograms& programs) {
-  if (name == "inhouse") return std::make_unique<InhouseEngine>();
-  if (name == "analytic") return std::make_unique<AnalyticEngine>();
-  if (name == "lammps") {
-    LammpsOptions options;
-    options.program = programs.lammps;
-    options.probe_timeout_s = programs.probe_timeout_s;
-    return std::make_unique<LammpsEngine>(std::move(options));
-  }
-  if (name == "yade") return std::make_unique<YadeEngine>(YadeEngine::from_launcher(programs.yade));
-  if (const auto code = cases::matched_code(name); !code.empty()) {
-    return std::make_unique<MatchedInhouseEngine>(std::string(code));
-  }
-  return nullptr;
 }
 
 namespace {

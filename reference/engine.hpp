@@ -61,8 +61,8 @@ struct ExternalPrograms {
   double probe_timeout_s = 10.0;  ///< limit of a version probe that starts a process
 };
 
-/// The engine called `name` driving `programs`, or nullptr when no such engine exists.
-std::unique_ptr<Engine> make_engine(std::string_view name, const ExternalPrograms& programs = {});
+// The engines themselves are made by make_engine (reference/registry.hpp), the one place that
+// knows every driver: this header is what every engine and caller shares.
 
 /// Runs `engine` on `scene` with the common bookkeeping: `missing` when not installed,
 /// `n/a` with reasons when unsupported, `error` with the message when run() throws, and

@@ -15,6 +15,7 @@
 #include "cases/case_loader.hpp"
 #include "compare/metrics.hpp"
 #include "reference/engine.hpp"
+#include "reference/registry.hpp"
 
 namespace studies {
 namespace {

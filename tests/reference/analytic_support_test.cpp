@@ -9,6 +9,7 @@
 #include "analytic_scenes.hpp"
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/analytic/collinear_solver.hpp"
+#include "reference/registry.hpp"
 
 namespace analytic_support_test {
 

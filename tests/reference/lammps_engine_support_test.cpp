@@ -6,6 +6,7 @@
 
 #include "lammps_scenes.hpp"
 #include "reference/engine.hpp"
+#include "reference/registry.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 
 namespace lammps_engine_support_test {

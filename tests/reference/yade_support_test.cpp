@@ -12,6 +12,7 @@
 #include "reference/yade/run_plan.hpp"
 #include "reference/yade/yade_engine.hpp"
 #include "reference/yade/yade_installation.hpp"
+#include "reference/registry.hpp"
 
 namespace yade_support_test {
 

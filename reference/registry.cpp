@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#include "reference/registry.hpp"
+
+#include <array>
+
+#include "cases/catalogue.hpp"
+#include "reference/analytic/analytic_engine.hpp"
+#include "reference/inhouse/inhouse_engine.hpp"
+#include "reference/inhouse/matched_engine.hpp"
+#include "reference/lammps/lammps_engine.hpp"
+#include "reference/yade/yade_engine.hpp"
+
+namespace reference {
+namespace {
+
+std::unique_ptr<Engine> make_inhouse(const ExternalPrograms&) { return std::make_unique<InhouseEngine>(); }
+
+std::unique_ptr<Engine> make_analytic(const ExternalPrograms&) { return std::make_unique<AnalyticEngine>(); }
+
+std::unique_ptr<Engine> make_lammps(const ExternalPrograms& programs) {
+  LammpsOptions options;
+  options.program = programs.lammps;
+  options.probe_timeout_s = programs.probe_timeout_s;
+  return std::make_unique<LammpsEngine>(std::move(options));
+}
+
+std::unique_ptr<Engine> make_yade(const ExternalPrograms& programs) {
+  return std::make_unique<YadeEngine>(YadeEngine::from_launcher(programs.yade));
+}
+
+constexpr std::array kEngines{
+    EngineEntry{"inhouse", &make_inhouse},
+    EngineEntry{"analytic", &make_analytic},
+    EngineEntry{"lammps", &make_lammps},
+    EngineEntry{"yade", &make_yade},
+};
+
+}  // namespace
+
+std::span<const EngineEntry> engine_registry() noexcept { return kEngines; }
+
+std::unique_ptr<Engine> make_engine(std::string_view name, const ExternalPrograms& programs) {
+  for (const EngineEntry& e : kEngines) {
+    if (e.name == name) return e.make(programs);
+  }
+  if (const auto code = cases::matched_code(name); !code.empty()) {
+    return std::make_unique<MatchedInhouseEngine>(std::string(code));
+  }
+  return nullptr;
+}
+
+}  // namespace reference
