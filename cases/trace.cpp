@@ -3,11 +3,24 @@
 
 #include "cases/scene.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
 namespace cases {
+
+std::string first_non_finite(const Trace& trace) {
+  for (std::size_t c = 0; c < trace.columns().size(); ++c) {
+    const auto& v = trace.values(c);
+    for (std::size_t r = 0; r < v.size(); ++r) {
+      if (!std::isfinite(v[r])) {
+        return fmt::format("{} = {} at t = {:.6g} s (row {})", trace.columns()[c], v[r], trace.values(0)[r], r);
+      }
+    }
+  }
+  return "";
+}
 
 std::size_t Trace::add_column(std::string name) {
   if (column(name) != nullptr) throw std::invalid_argument("duplicate trace column " + name);

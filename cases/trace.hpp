@@ -38,6 +38,10 @@ class Trace {
   std::vector<std::vector<double>> values_;
 };
 
+/// The first value of `trace` that is NaN or infinite, as "<column> = <value> at t = <time> s
+/// (row <r>)" (the time column is the first), or empty when every value is finite.
+[[nodiscard]] std::string first_non_finite(const Trace& trace);
+
 /// Column name of a particle quantity, e.g. particle_column(0, "vx") = "p0.vx".
 std::string particle_column(std::size_t particle, std::string_view quantity);
 /// Column name of a contact quantity, e.g. pair_column(0, 1, "overlap") = "c0-1.overlap".

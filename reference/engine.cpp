@@ -20,20 +20,6 @@ std::string Support::explain() const {
   return out;
 }
 
-namespace {
-
-/// Name of the first trace column holding a NaN or infinity, with the row, or empty.
-std::string first_non_finite(const cases::Trace& trace) {
-  for (std::size_t c = 0; c < trace.columns().size(); ++c) {
-    const auto& v = trace.values(c);
-    for (std::size_t r = 0; r < v.size(); ++r) {
-      if (!std::isfinite(v[r])) return fmt::format("{} at row {} is {}", trace.columns()[c], r, v[r]);
-    }
-  }
-  return "";
-}
-
-}  // namespace
 
 cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
                             const RunOptions& options) {
@@ -71,7 +57,7 @@ cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.status == cases::RunStatus::ok) {
-    if (const std::string bad = first_non_finite(result.trace); !bad.empty()) {
+    if (const std::string bad = cases::first_non_finite(result.trace); !bad.empty()) {
       result.status = cases::RunStatus::error;
       result.reason = "non-finite value in trace: " + bad;
     }

@@ -23,9 +23,14 @@
 #include "reference/analytic/two_body_ode.hpp"
 #include "reference/analytic/vector3_math.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
+#include "reference/analytic/model_support.hpp"
 
 namespace reference::analytic {
 namespace {
+
+/// What the Hertz two-body solution solves: the Hertz spring with any dashpot (clamped or not),
+/// frictionless, no cohesion, no rolling resistance.
+const ModelSupport kHertzModel{"Hertz two-body", {"hertz"}, {}, {"none"}, {"none"}, {"none"}, true};
 
 using cases::Vector3;
 
@@ -59,23 +64,6 @@ struct HertzPair {
   dem::PairLaw law;
 };
 
-/// Reasons against the model choice (keywords only).
-void check_hertz_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
-  const dem::ModelChoice& m = scene.model;
-  if (m.normal != "hertz") {
-    reasons.push_back(reason("normal model '{}' is not solved here (only 'hertz')", m.normal));
-  }
-  if (m.tangential != "none") {
-    reasons.push_back(reason("tangential model '{}' is not supported (only 'none': frictionless)",
-                             m.tangential));
-  }
-  if (m.cohesion != "none") {
-    reasons.push_back(reason("cohesion model '{}' is not supported (only 'none')", m.cohesion));
-  }
-  if (m.rolling != "none") {
-    reasons.push_back(reason("rolling model '{}' is not supported (only 'none')", m.rolling));
-  }
-}
 
 /// Reasons against the fields and the particles' extras.
 void check_environment(const cases::Scene& scene, std::vector<std::string>& reasons) {
@@ -465,7 +453,7 @@ std::map<std::string, std::string> conventions(const cases::Scene& scene, const 
 
 std::vector<std::string> HertzSolver::unsupported_reasons(const cases::Scene& scene) const {
   std::vector<std::string> reasons;
-  check_hertz_model(scene, reasons);
+  reasons = model_reasons(scene.model, kHertzModel);
   check_environment(scene, reasons);
   check_hertz_layout(scene, reasons);
   if (reasons.empty()) static_cast<void>(reduce_checked(scene, reasons));

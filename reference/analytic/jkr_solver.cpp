@@ -17,9 +17,14 @@
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/vector3_math.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
+#include "reference/analytic/model_support.hpp"
 
 namespace reference::analytic {
 namespace {
+
+/// What the JKR pull-off rig solves: Hertz–JKR, quasi-static (no dashpot), frictionless, either
+/// rupture rule.
+const ModelSupport kJkrModel{"JKR pull-off rig", {"hertz"}, {"none"}, {"none"}, {"jkr"}, {"none"}, true};
 
 using cases::Vector3;
 
@@ -244,29 +249,6 @@ std::map<std::string, std::string> conventions(const Rig& rig, double dt, std::u
   return c;
 }
 
-/// Reasons against the model choice.
-void check_jkr_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
-  const dem::ModelChoice& m = scene.model;
-  if (m.cohesion != "jkr") {
-    reasons.push_back(fmt::format("analytic (JKR pull-off rig): needs cohesion = 'jkr', got '{}'", m.cohesion));
-    return;
-  }
-  if (m.normal != "hertz") {
-    reasons.push_back(fmt::format(
-        "analytic (JKR pull-off rig): JKR replaces the Hertz normal force; needs normal = 'hertz', "
-        "got '{}'",
-        m.normal));
-  }
-  if (m.damping != "none") {
-    reasons.push_back(fmt::format(
-        "analytic (JKR pull-off rig): damping '{}' adds a rate-dependent force; only 'none' is "
-        "quasi-static",
-        m.damping));
-  }
-  if (m.tangential != "none" || m.rolling != "none") {
-    reasons.push_back("analytic (JKR pull-off rig): only tangential = 'none' and rolling = 'none'");
-  }
-}
 
 /// Reasons against the layout: two fixed spheres, one moving along the line of centres.
 void check_jkr_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
@@ -312,7 +294,7 @@ void check_jkr_layout(const cases::Scene& scene, std::vector<std::string>& reaso
 
 std::vector<std::string> JkrPulloffSolver::unsupported_reasons(const cases::Scene& scene) const {
   std::vector<std::string> reasons;
-  check_jkr_model(scene, reasons);
+  for (std::string& r : model_reasons(scene.model, kJkrModel)) reasons.push_back(std::move(r));
   if (!reasons.empty()) return reasons;
   check_jkr_layout(scene, reasons);
   if (!reasons.empty()) return reasons;

@@ -20,9 +20,14 @@
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/vector3_math.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
+#include "reference/analytic/model_support.hpp"
 
 namespace reference::analytic {
 namespace {
+
+/// What the linear-cohesion pair solves: a linear spring with no or a restitution dashpot, not
+/// clamped, linear cohesion, frictionless, no rolling resistance.
+const ModelSupport kLinearCohesionModel{"linear cohesion pair", {"linear"}, {"none", "restitution"}, {"none"}, {"linear"}, {"none"}};
 
 using cases::Vector3;
 
@@ -347,28 +352,6 @@ std::map<std::string, std::string> conventions(const Pair& p, double dt, std::ui
   return c;
 }
 
-void check_linear_cohesion_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
-  const dem::ModelChoice& m = scene.model;
-  if (m.cohesion != "linear") {
-    reasons.push_back(fmt::format("analytic (linear cohesion pair): needs cohesion = 'linear', got '{}'",
-                                  m.cohesion));
-    return;
-  }
-  if (m.normal != "linear") {
-    reasons.push_back(fmt::format("analytic (linear cohesion pair): needs normal = 'linear', got '{}'",
-                                  m.normal));
-  }
-  if (m.damping != "none" && m.damping != "restitution") {
-    reasons.push_back(fmt::format(
-        "analytic (linear cohesion pair): damping '{}' has no closed form here", m.damping));
-  }
-  if (m.tangential != "none" || m.rolling != "none") {
-    reasons.push_back("analytic (linear cohesion pair): only tangential = 'none' and rolling = 'none'");
-  }
-  if (m.clamp_tensile) {
-    reasons.push_back("analytic (linear cohesion pair): clamp_tensile changes the dashpot law");
-  }
-}
 
 void check_linear_cohesion_layout(const cases::Scene& scene, std::vector<std::string>& reasons) {
   if (scene.particles.size() != 2 || scene.particles[0].fixed == scene.particles[1].fixed) {
@@ -407,7 +390,7 @@ void check_linear_cohesion_layout(const cases::Scene& scene, std::vector<std::st
 
 std::vector<std::string> LinearCohesionSolver::unsupported_reasons(const cases::Scene& scene) const {
   std::vector<std::string> reasons;
-  check_linear_cohesion_model(scene, reasons);
+  for (std::string& r : model_reasons(scene.model, kLinearCohesionModel)) reasons.push_back(std::move(r));
   if (!reasons.empty()) return reasons;
   check_linear_cohesion_layout(scene, reasons);
   if (!reasons.empty()) return reasons;

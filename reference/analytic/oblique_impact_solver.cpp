@@ -17,6 +17,7 @@
 #include "reference/analytic/linear_oscillator.hpp"
 #include "reference/analytic/vector3_math.hpp"
 #include "reference/inhouse/scene_to_core.hpp"
+#include "reference/analytic/model_support.hpp"
 
 namespace reference::analytic {
 namespace {
@@ -326,17 +327,11 @@ std::vector<std::string> sphere_wall_reasons(const cases::Scene& scene, std::str
   const auto reason = [&](const std::string& why) {
     reasons.push_back(fmt::format("analytic ({}): {}", solver, why));
   };
-  const dem::ModelChoice& m = scene.model;
-  if (m.normal != "linear") reason(fmt::format("normal model '{}' (only 'linear')", m.normal));
-  if (m.damping != "none" && m.damping != "restitution") {
-    reason(fmt::format("damping model '{}' (only 'none' or 'restitution')", m.damping));
-  }
-  if (m.tangential != "none" && m.tangential != "spring_coulomb") {
-    reason(fmt::format("tangential model '{}' (only 'none' or 'spring_coulomb')", m.tangential));
-  }
-  if (m.cohesion != "none") reason(fmt::format("cohesion model '{}' (only 'none')", m.cohesion));
-  if (m.rolling != "none") reason(fmt::format("rolling model '{}' (only 'none')", m.rolling));
-  if (m.clamp_tensile) reason("clamp_tensile changes the dashpot law");
+  // A linear spring with no or a restitution dashpot, not clamped, spring–Coulomb friction whose
+  // slip velocity and torque use r − δ/2 or r (not YADE's α-scaled increment).
+  ModelSupport model{solver, {"linear"}, {"none", "restitution"}, {"none", "spring_coulomb"}, {"none"}, {"none"}};
+  model.wall_lever_arm = {dem::WallLeverArm::contact_point, dem::WallLeverArm::radius};
+  reasons = model_reasons(scene.model, model);
   if (scene.particles.size() != 1) {
     reason(fmt::format("{} particles; one mobile sphere against one wall is solved", scene.particles.size()));
   } else {

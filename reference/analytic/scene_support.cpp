@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "reference/analytic/scene_support.hpp"
 
+#include "reference/analytic/model_support.hpp"
+
 #include <cmath>
 #include <exception>
 #include <string>
@@ -15,40 +17,13 @@
 namespace reference::analytic {
 namespace {
 
+/// What the collinear closed forms solve: a linear spring with no or a restitution dashpot,
+/// not clamped (eq 3.10–3.11), frictionless, no cohesion, no rolling resistance.
+const ModelSupport kCollinearModel{"collinear collision", {"linear"}, {"none", "restitution"}, {"none"}, {"none"}, {"none"}};
+
 using cases::Vector3;
 
 
-/// Reasons against the model choice (keywords only: a PairTable would throw on unknown ones).
-void check_collinear_model(const cases::Scene& scene, std::vector<std::string>& reasons) {
-  const dem::ModelChoice& m = scene.model;
-  if (m.normal != "linear") {
-    reasons.push_back(fmt::format(
-        "analytic: normal model '{}' has no closed form here (only 'linear')", m.normal));
-  }
-  if (m.damping != "none" && m.damping != "restitution") {
-    reasons.push_back(fmt::format(
-        "analytic: damping model '{}' has no closed form here (only 'none' or 'restitution')",
-        m.damping));
-  }
-  if (m.tangential != "none") {
-    reasons.push_back(fmt::format(
-        "analytic: tangential model '{}' is not supported: the closed forms are frictionless "
-        "(only 'none')",
-        m.tangential));
-  }
-  if (m.cohesion != "none") {
-    reasons.push_back(fmt::format(
-        "analytic: cohesion model '{}' is not supported: the closed forms have no attraction "
-        "(only 'none')",
-        m.cohesion));
-  }
-  if (m.rolling != "none") {
-    reasons.push_back(fmt::format(
-        "analytic: rolling model '{}' is not supported: the closed forms have no rolling "
-        "resistance (only 'none')",
-        m.rolling));
-  }
-}
 
 /// Reasons against the particles' layout: one mobile sphere with collinear fixed partners, or
 /// two mobile spheres alone colliding head-on.
@@ -156,7 +131,7 @@ void check_parameters(const CollinearScene& reduced, const cases::Scene& scene,
 
 std::vector<std::string> unsupported_reasons(const cases::Scene& scene) {
   std::vector<std::string> reasons;
-  check_collinear_model(scene, reasons);
+  for (std::string& r : model_reasons(scene.model, kCollinearModel)) reasons.push_back(std::move(r));
   const Vector3& g = scene.gravity;
   if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0) {
     reasons.push_back(fmt::format(
@@ -175,9 +150,6 @@ std::vector<std::string> unsupported_reasons(const cases::Scene& scene) {
     if (scene.particles[i].charge != 0.0) {
       reasons.push_back(fmt::format("analytic: particle {} is charged", i));
     }
-  }
-  if (scene.model.clamp_tensile) {
-    reasons.push_back("analytic: clamp_tensile changes the dashpot law; no closed form here");
   }
   check_collinear_layout(scene, reasons);
   if (!reasons.empty()) return reasons;

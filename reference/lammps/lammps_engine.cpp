@@ -39,20 +39,6 @@ cases::RunResult failure(std::string reason, std::string log_tail) {
   return r;
 }
 
-/// Name of the first trace column holding a NaN or infinity, with the time, or empty.
-std::string first_non_finite(const cases::Trace& trace) {
-  const std::vector<double>& time = trace.values(0);
-  for (std::size_t c = 0; c < trace.columns().size(); ++c) {
-    const auto& v = trace.values(c);
-    for (std::size_t r = 0; r < v.size(); ++r) {
-      if (!std::isfinite(v[r])) {
-        return fmt::format("{} = {} at t = {:.6g} s (row {})", trace.columns()[c], v[r], time[r],
-                           r);
-      }
-    }
-  }
-  return "";
-}
 
 }  // namespace
 
@@ -232,7 +218,7 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
   } catch (const std::exception& e) {
     return failure(e.what(), outcome.log_tail);
   }
-  if (const std::string bad = first_non_finite(result.trace); !bad.empty()) {
+  if (const std::string bad = cases::first_non_finite(result.trace); !bad.empty()) {
     return failure("LAMMPS produced a non-finite value: " + bad, outcome.log_tail);
   }
   for (const auto& w : outcome.warnings) result.warnings.push_back("LAMMPS log: " + w);

@@ -10,6 +10,7 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/registry.hpp"
+#include "reference/analytic/model_support.hpp"
 
 namespace analytic_support_test {
 
@@ -48,7 +49,7 @@ TEST(AnalyticSupport, RejectsANormalModelWithoutClosedForm) {
   scene.model.normal = "hertz";  // not (yet) in the registry: must not reach the PairTable
   const auto r = reasons(scene);
   ASSERT_EQ(r.size(), 1u);
-  EXPECT_EQ(r[0], "analytic: normal model 'hertz' has no closed form here (only 'linear')");
+  EXPECT_EQ(r[0], "analytic (collinear collision): normal model 'hertz' is not solved here (only 'linear')");
 }
 
 TEST(AnalyticSupport, RejectsOtherDampingFrictionCohesionAndRolling) {
@@ -60,11 +61,36 @@ TEST(AnalyticSupport, RejectsOtherDampingFrictionCohesionAndRolling) {
   const auto r = reasons(scene);
   ASSERT_EQ(r.size(), 4u);
   EXPECT_EQ(r[0],
-            "analytic: damping model 'tsuji' has no closed form here (only 'none' or "
+            "analytic (collinear collision): damping model 'tsuji' is not solved here (only 'none', "
             "'restitution')");
   EXPECT_TRUE(mentions(r, "tangential model 'spring_coulomb'"));
   EXPECT_TRUE(mentions(r, "cohesion model 'jkr'"));
   EXPECT_TRUE(mentions(r, "rolling model 'sds'"));
+}
+
+// What each solver supports is data (reference/analytic/model_support.hpp): a policy the closed
+// forms do not reproduce is refused by every solver it would change, never silently ignored.
+TEST(AnalyticSupport, RefusesThePoliciesASolverDoesNotReproduce) {
+  cases::Scene scene = single_collision();
+  scene.model.damping = "restitution";
+  scene.model.clamp_tensile = true;  // the collinear closed form is the unclamped dashpot
+  auto r = reasons(scene);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_NE(r[0].find("clamp_tensile"), std::string::npos) << r[0];
+  const reference::analytic::ModelSupport wall{"oblique impact", {"linear"}, {"none"}, {"spring_coulomb"}, {"none"},
+                                               {"none"}, false, {dem::WallLeverArm::contact_point}};
+  dem::ModelChoice m;
+  m.tangential = "spring_coulomb";
+  m.wall_lever_arm = dem::WallLeverArm::yade_incident;
+  r = reference::analytic::model_reasons(m, wall);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0], "analytic (oblique impact): wall_lever_arm = 'yade_incident' is not solved here (only 'contact_point')");
+  m.wall_lever_arm = dem::WallLeverArm::contact_point;
+  EXPECT_TRUE(reference::analytic::model_reasons(m, wall).empty());
+  // An empty slot list accepts every sub-model of the slot.
+  const reference::analytic::ModelSupport any_damping{"x", {"linear"}, {}, {"spring_coulomb"}, {"none"}, {"none"}};
+  m.damping = "tsuji";
+  EXPECT_TRUE(reference::analytic::model_reasons(m, any_damping).empty());
 }
 
 TEST(AnalyticSupport, RejectsAFixedSphereOffTheLineOfMotion) {
