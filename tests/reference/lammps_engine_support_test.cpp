@@ -57,6 +57,25 @@ TEST(LammpsEngineSupport, NamesEverySubModelThatIsNotMapped) {
   EXPECT_TRUE(mentions(s, "rolling model 'constant_torque' is not mapped"));
 }
 
+TEST(LammpsEngineSupport, RefusesYadesConventionsAndPoliciesPairGranularDoesNotHave) {
+  cases::Scene scene = demwb_lammps_unit::mixed_scene();
+  scene.model.pair_lever_arm = dem::PairLeverArm::yade_incident;
+  EXPECT_TRUE(mentions(LammpsEngine{}.supports(scene), "'yade_incident'"));
+  scene.model.pair_lever_arm = dem::PairLeverArm::contact_point;
+  scene.model.tangential_history = dem::TangentialHistory::yade_rotate;
+  EXPECT_TRUE(mentions(LammpsEngine{}.supports(scene), "'yade_rotate'"));
+  scene.model.tangential_history = dem::TangentialHistory::project_rescale;
+  scene.model.tangential = "mindlin_8g";
+  scene.model.mindlin_form = dem::MindlinForm::incremental;
+  EXPECT_TRUE(mentions(LammpsEngine{}.supports(scene), "mindlin_form = 'incremental'"));
+  scene.model = {};
+  scene.model.normal = "hertz";
+  scene.model.cohesion = "jkr";
+  scene.model.damping = "lammps_velocity";
+  scene.model.adhesive_dashpot = dem::AdhesiveDashpot::pulloff_cap;
+  EXPECT_TRUE(mentions(LammpsEngine{}.supports(scene), "adhesive_dashpot = 'pulloff_cap'"));
+}
+
 TEST(LammpsEngineSupport, IsMissingWhenTheBinaryIsNotInstalled) {
   const LammpsEngine engine(reference::LammpsOptions{"demwb-no-such-lammps", ""});
   EXPECT_FALSE(engine.version().has_value());

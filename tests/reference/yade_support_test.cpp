@@ -51,6 +51,19 @@ TEST(YadeSupport, EachUnmappedFeatureHasItsOwnReason) {
   EXPECT_TRUE(mentions(s, "prescribed motion"));
 }
 
+TEST(YadeSupport, AcceptsYadesOwnConventionsAndRefusesLammpsOnes) {
+  cases::Scene scene = cases::load_case(kCanonical / "oblique_wall_impact.toml");
+  scene.model.pair_lever_arm = dem::PairLeverArm::yade_incident;
+  scene.model.wall_lever_arm = dem::WallLeverArm::yade_incident;
+  scene.model.tangential_history = dem::TangentialHistory::yade_rotate;
+  EXPECT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
+  cases::Scene lammps = scene;
+  lammps.model.wall_lever_arm = dem::WallLeverArm::radius;
+  EXPECT_TRUE(mentions(offline_engine().supports(lammps), "LAMMPS conventions"));
+  scene.model.tangential_history = dem::TangentialHistory::increment_project;
+  EXPECT_TRUE(mentions(offline_engine().supports(scene), "LAMMPS conventions"));
+}
+
 TEST(YadeSupport, Phase2CanonicalCasesAreSupportedAndJkrIsNot) {
   for (const char* file : {"hertz_collision.toml", "oblique_wall_impact.toml"}) {
     const auto s = offline_engine().supports(cases::load_case(kCanonical / file));
