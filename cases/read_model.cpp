@@ -33,62 +33,39 @@ constexpr auto kPolicyKeys = std::to_array<std::string_view>(
     {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm", "pair_lever_arm", "tangential_history",
      "mindlin_radius", "unloaded_slider", "adhesive_dashpot", "mindlin_form"});
 
-/// The enumerator a policy keyword names; `names` lists the keywords in enumerator order.
-template <class Enum, class Parse>
-Enum read_policy(const Value& value, std::span<const std::string_view> names, Parse parse,
-                 std::string_view what) {
-  return *parse(value.keyword(names, what));
+/// Reads the optional policy `key` of [model] into `field`: `names` lists its keywords (the
+/// admissible values an error names), `parse` maps one to its enumerator, `what` says what it is.
+template <class Enum, std::size_t N, class Parse>
+void read_policy(const Table& model, std::string_view key, const std::array<std::string_view, N>& names, Parse parse,
+                 std::string_view what, Enum& field) {
+  if (const auto v = model.find(key)) field = *parse(v->keyword(names, what));
 }
 
-/// Reads the named policies of [model] (all optional).
+/// Reads the named policies of [model] (all optional; docs/case-format.md, the policy table).
 void read_policies(const Table& model, dem::ModelChoice& choice) {
   if (const auto v = model.find("clamp_tensile")) choice.clamp_tensile = v->boolean();
-  if (const auto v = model.find("friction_limit")) {
-    constexpr auto names = std::to_array<std::string_view>(
-        {"total", "elastic", "elastic_damping", "jkr_shifted", "total_plus_pulloff"});
-    choice.friction_limit = read_policy<dem::FrictionLimit>(
-        *v, names, [](std::string_view k) { return dem::parse_friction_limit(k); }, "friction-limit policy");
-  }
-  if (const auto v = model.find("jkr_rupture")) {
-    constexpr auto names = std::to_array<std::string_view>({"displacement", "load"});
-    choice.jkr_rupture = read_policy<dem::JkrRupture>(
-        *v, names, [](std::string_view k) { return dem::parse_jkr_rupture(k); }, "JKR rupture policy");
-  }
-  if (const auto v = model.find("wall_lever_arm")) {
-    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius", "yade_incident"});
-    choice.wall_lever_arm = read_policy<dem::WallLeverArm>(
-        *v, names, [](std::string_view k) { return dem::parse_wall_lever_arm(k); }, "wall lever-arm policy");
-  }
-  if (const auto v = model.find("pair_lever_arm")) {
-    constexpr auto names = std::to_array<std::string_view>({"contact_point", "radius", "radius_velocity", "yade_incident"});
-    choice.pair_lever_arm = read_policy<dem::PairLeverArm>(
-        *v, names, [](std::string_view k) { return dem::parse_pair_lever_arm(k); }, "pair lever-arm policy");
-  }
-  if (const auto v = model.find("tangential_history")) {
-    constexpr auto names = std::to_array<std::string_view>({"project_rescale", "increment_project", "yade_rotate"});
-    choice.tangential_history = read_policy<dem::TangentialHistory>(
-        *v, names, [](std::string_view k) { return dem::parse_tangential_history(k); }, "tangential-history rule");
-  }
-  if (const auto v = model.find("mindlin_radius")) {
-    constexpr auto names = std::to_array<std::string_view>({"overlap", "contact_radius"});
-    choice.mindlin_radius = read_policy<dem::MindlinRadius>(
-        *v, names, [](std::string_view k) { return dem::parse_mindlin_radius(k); }, "Mindlin-radius policy");
-  }
-  if (const auto v = model.find("unloaded_slider")) {
-    constexpr auto names = std::to_array<std::string_view>({"cap", "zero"});
-    choice.unloaded_slider = read_policy<dem::UnloadedSlider>(
-        *v, names, [](std::string_view k) { return dem::parse_unloaded_slider(k); }, "unloaded-slider policy");
-  }
-  if (const auto v = model.find("mindlin_form")) {
-    constexpr auto names = std::to_array<std::string_view>({"total", "incremental"});
-    choice.mindlin_form = read_policy<dem::MindlinForm>(
-        *v, names, [](std::string_view k) { return dem::parse_mindlin_form(k); }, "Mindlin-form policy");
-  }
-  if (const auto v = model.find("adhesive_dashpot")) {
-    constexpr auto names = std::to_array<std::string_view>({"clamp", "pulloff_cap"});
-    choice.adhesive_dashpot = read_policy<dem::AdhesiveDashpot>(
-        *v, names, [](std::string_view k) { return dem::parse_adhesive_dashpot(k); }, "adhesive-dashpot policy");
-  }
+  using Names = std::string_view;
+  read_policy(model, "friction_limit",
+              std::to_array<Names>({"total", "elastic", "elastic_damping", "jkr_shifted", "total_plus_pulloff"}),
+              dem::parse_friction_limit, "friction-limit policy", choice.friction_limit);
+  read_policy(model, "jkr_rupture", std::to_array<Names>({"displacement", "load"}), dem::parse_jkr_rupture,
+              "JKR rupture policy", choice.jkr_rupture);
+  read_policy(model, "wall_lever_arm", std::to_array<Names>({"contact_point", "radius", "yade_incident"}),
+              dem::parse_wall_lever_arm, "wall lever-arm policy", choice.wall_lever_arm);
+  read_policy(model, "pair_lever_arm",
+              std::to_array<Names>({"contact_point", "radius", "radius_velocity", "yade_incident"}),
+              dem::parse_pair_lever_arm, "pair lever-arm policy", choice.pair_lever_arm);
+  read_policy(model, "tangential_history",
+              std::to_array<Names>({"project_rescale", "increment_project", "yade_rotate"}),
+              dem::parse_tangential_history, "tangential-history rule", choice.tangential_history);
+  read_policy(model, "mindlin_radius", std::to_array<Names>({"overlap", "contact_radius"}), dem::parse_mindlin_radius,
+              "Mindlin-radius policy", choice.mindlin_radius);
+  read_policy(model, "unloaded_slider", std::to_array<Names>({"cap", "zero"}), dem::parse_unloaded_slider,
+              "unloaded-slider policy", choice.unloaded_slider);
+  read_policy(model, "mindlin_form", std::to_array<Names>({"total", "incremental"}), dem::parse_mindlin_form,
+              "Mindlin-form policy", choice.mindlin_form);
+  read_policy(model, "adhesive_dashpot", std::to_array<Names>({"clamp", "pulloff_cap"}), dem::parse_adhesive_dashpot,
+              "adhesive-dashpot policy", choice.adhesive_dashpot);
 }
 
 /// The member of `choice` (const or not) holding the keyword of `slot`.
