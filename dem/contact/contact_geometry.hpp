@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "dem/contact/laws/linear_dashpot.hpp"
 #include "dem/contact/model_choice.hpp"
 #include "dem/core/vector.hpp"
 
@@ -48,13 +49,6 @@ struct SphereState {
   double charge = 0.0;  ///< [C]
 };
 
-/// YADE's ratcheting factor α = D/(D − δ) for the reference length D (r_p + r_q, or 2r against
-/// a wall) and overlap δ: ScGeom::getIncidentVel with avoidGranularRatcheting scales the
-/// centres' relative velocity by it.
-[[nodiscard]] inline double yade_ratcheting_factor(double length, double overlap) noexcept {
-  return length / (length - overlap);
-}
-
 /// The tangential velocity YADE integrates into the shear (docs/physics-tangential.md): the
 /// tangential part of α u_centres − (r_p ω_p + r_q ω_q) × n, given the unscaled one `unscaled`
 /// (spins with the radii) and the centres' relative velocity `centres`.
@@ -94,7 +88,7 @@ struct SphereState {
   if (arm == PairLeverArm::yade_incident) {
     g.tangential_velocity =
         yade_tangential_velocity(g.tangential_velocity, p.velocity - q.velocity, g.normal,
-                                 yade_ratcheting_factor(p.radius + q.radius, g.overlap));
+                                 laws::incident_velocity_scale(p.radius + q.radius, g.overlap));
   }
   g.relative_angular_velocity = p.angular_velocity - q.angular_velocity;
   g.angular_velocity_sum = p.angular_velocity + q.angular_velocity;
@@ -139,7 +133,7 @@ struct PlaneWall {
   g.tangential_velocity = g.contact_velocity - g.normal_speed * g.normal;
   if (arm == WallLeverArm::yade_incident) {
     g.tangential_velocity = yade_tangential_velocity(g.tangential_velocity, p.velocity - w.velocity, g.normal,
-                                                     yade_ratcheting_factor(2.0 * p.radius, g.overlap));
+                                                     laws::incident_velocity_scale(2.0 * p.radius, g.overlap));
   }
   g.relative_angular_velocity = p.angular_velocity;
   g.angular_velocity_sum = p.angular_velocity;
