@@ -10,7 +10,7 @@
 #include "cases/case_loader.hpp"
 #include "compare/case_outcome.hpp"
 #include "prepare/prepare_scene.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "store/result_cache.hpp"
 
 namespace app {

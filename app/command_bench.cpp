@@ -14,7 +14,7 @@
 #include "bench/core_run.hpp"
 #include "bench/lammps_run.hpp"
 #include "cases/case_loader.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "reference/lammps/deck_writer.hpp"
 #include "reports/case_outputs.hpp"
 #include "support/text_file.hpp"

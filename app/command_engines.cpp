@@ -7,7 +7,7 @@
 #include "app/cli.hpp"
 #include "app/options.hpp"
 #include "cases/catalogue.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/registry.hpp"
 #include "reports/markdown.hpp"
 

@@ -19,7 +19,7 @@
 #include "app/options.hpp"
 #include "cases/case_loader.hpp"
 #include "compare/metrics.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/registry.hpp"
 #include "studies/matched_fuzz.hpp"
 #include "support/text_file.hpp"

@@ -18,7 +18,7 @@
 #include "cases/case_loader.hpp"
 #include "cases/catalogue.hpp"
 #include "ranks/ranks.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/registry.hpp"
 #include "reports/case_outputs.hpp"
 #include "support/sha256.hpp"

@@ -28,7 +28,7 @@ struct SphereCensus {
 
 /// The core's time-step limits for the scene (dem::timestep_limits over its spheres, plane walls,
 /// gravity and contact model `table`), exactly as the in-house engine computes them before a run
-/// (reference/inhouse/scene_to_core.cpp).
+/// (reference/common/core_setup.cpp).
 [[nodiscard]] dem::TimestepLimits scene_timestep_limits(const Scene& scene, const dem::PairTable& table);
 
 /// The time step a run of the scene takes [s]: integration.timestep, or for "auto" the core's

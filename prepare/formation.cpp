@@ -12,7 +12,7 @@
 #include "cases/formation_model.hpp"
 #include "dem/fields/central_pull.hpp"
 #include "dem/simulation/simulation.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 
 namespace prepare {
 namespace {

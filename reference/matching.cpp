@@ -4,16 +4,18 @@
 #include <stdexcept>
 #include <string>
 
-#include "reference/lammps/matched_scene.hpp"
-#include "reference/yade/matched_scene.hpp"
+#include "reference/registry.hpp"
 
 namespace reference {
 
 cases::Scene matched_scene(const cases::Scene& scene, std::string_view engine) {
-  if (engine == "lammps") return lammps::matched_scene(scene);
-  if (engine == "yade") return yade::matched_scene(scene);
-  throw std::invalid_argument("no matched-numerics variant for engine '" + std::string(engine) +
-                              "' (known: lammps, yade)");
+  if (const CodeConventions* c = code_conventions(engine)) return c->matched_scene(scene);
+  std::string known;
+  for (const EngineEntry& e : engine_registry()) {
+    if (e.conventions != nullptr) known += (known.empty() ? "" : ", ") + std::string(e.name);
+  }
+  throw std::invalid_argument("no matched-numerics variant for engine '" + std::string(engine) + "' (known: " +
+                              known + ")");
 }
 
 }  // namespace reference

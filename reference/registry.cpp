@@ -8,12 +8,17 @@
 #include "reference/inhouse/inhouse_engine.hpp"
 #include "reference/inhouse/matched_engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
+#include "reference/lammps/matched_scene.hpp"
+#include "reference/yade/matched_scene.hpp"
 #include "reference/yade/yade_engine.hpp"
 
 namespace reference {
 namespace {
 
-std::unique_ptr<Engine> make_inhouse(const ExternalPrograms&) { return std::make_unique<InhouseEngine>(); }
+// The core takes a multi-step scheme's exact start-up states from the closed forms.
+std::unique_ptr<Engine> make_inhouse(const ExternalPrograms&) {
+  return std::make_unique<InhouseEngine>(ExactStates(&exact_states));
+}
 
 std::unique_ptr<Engine> make_analytic(const ExternalPrograms&) { return std::make_unique<AnalyticEngine>(); }
 
@@ -31,8 +36,8 @@ std::unique_ptr<Engine> make_yade(const ExternalPrograms& programs) {
 constexpr std::array kEngines{
     EngineEntry{"inhouse", &make_inhouse},
     EngineEntry{"analytic", &make_analytic},
-    EngineEntry{"lammps", &make_lammps},
-    EngineEntry{"yade", &make_yade},
+    EngineEntry{"lammps", &make_lammps, &lammps::conventions},
+    EngineEntry{"yade", &make_yade, &yade::conventions},
 };
 
 }  // namespace
@@ -43,8 +48,15 @@ std::unique_ptr<Engine> make_engine(std::string_view name, const ExternalProgram
   for (const EngineEntry& e : kEngines) {
     if (e.name == name) return e.make(programs);
   }
-  if (const auto code = cases::matched_code(name); !code.empty()) {
-    return std::make_unique<MatchedInhouseEngine>(std::string(code));
+  if (const CodeConventions* c = code_conventions(cases::matched_code(name))) {
+    return std::make_unique<MatchedInhouseEngine>(*c);
+  }
+  return nullptr;
+}
+
+const CodeConventions* code_conventions(std::string_view code) noexcept {
+  for (const EngineEntry& e : kEngines) {
+    if (e.name == code && e.conventions != nullptr) return &e.conventions();
   }
   return nullptr;
 }

@@ -14,7 +14,7 @@
 #include "cases/case_library.hpp"
 #include "cases/case_loader.hpp"
 #include "compare/metrics.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/registry.hpp"
 
 namespace studies {

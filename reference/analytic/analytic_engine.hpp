@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 
 namespace reference {
 

@@ -13,7 +13,7 @@
 #include "reference/analytic/collinear_scene.hpp"
 #include "reference/analytic/contact_episode.hpp"
 #include "reference/analytic/scene_support.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 
 namespace reference::analytic {
 namespace {

@@ -22,7 +22,7 @@
 #include "reference/analytic/hertz_elastic.hpp"
 #include "reference/analytic/two_body_ode.hpp"
 #include "reference/analytic/vector3_math.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "reference/analytic/model_support.hpp"
 
 namespace reference::analytic {

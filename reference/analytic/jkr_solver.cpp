@@ -16,7 +16,7 @@
 #include "dem/contact/pair_table.hpp"
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/vector3_math.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "reference/analytic/model_support.hpp"
 
 namespace reference::analytic {

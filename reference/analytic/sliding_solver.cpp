@@ -12,7 +12,7 @@
 #include "reference/analytic/collinear_solver.hpp"
 #include "reference/analytic/oblique_impact_solver.hpp"
 #include "reference/analytic/vector3_math.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 
 namespace reference::analytic {
 namespace {

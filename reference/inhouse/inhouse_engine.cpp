@@ -7,8 +7,7 @@
 #include <fmt/format.h>
 
 #include "dem/integrators/scheme.hpp"
-#include "reference/analytic/analytic_engine.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "support/build_info.hpp"
 #include "cases/time_step.hpp"
 
@@ -98,15 +97,20 @@ cases::Snapshot snapshot(const dem::Simulation& sim) {
   return snap;
 }
 
-/// Gives a multi-step scheme exact states at t = −Δt, −2Δt, … from the analytic solution.
-void supply_exact_past(const cases::Scene& scene, dem::Simulation& sim) {
+/// Gives a multi-step scheme exact states at t = −Δt, −2Δt, … from `exact` (the closed forms).
+void supply_exact_past(const cases::Scene& scene, const ExactStates& exact, dem::Simulation& sim) {
   const std::size_t needed = sim.past_states_needed();
   if (needed == 0) return;
+  if (!exact) {
+    throw std::runtime_error(
+        "integration.startup = \"exact\" needs the analytic solution of the scene, which this "
+        "engine was not given (make it with reference::make_engine(\"inhouse\"))");
+  }
   std::vector<double> times;
   for (std::size_t k = 1; k <= needed; ++k) times.push_back(-static_cast<double>(k) * sim.timestep());
   std::vector<dem::KinematicState> past;
   try {
-    for (const auto& snap : exact_states(scene, times)) past.push_back(to_state(snap));
+    for (const auto& snap : exact(scene, times)) past.push_back(to_state(snap));
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(
         std::string("integration.startup = \"exact\" needs the analytic solution of the scene, "
@@ -145,7 +149,7 @@ Support InhouseEngine::supports(const cases::Scene&) const { return {}; }
 cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions& options) const {
   const CoreSetup setup = core_setup(scene, options.threads);
   dem::Simulation sim(setup.simulation);
-  if (scene.integration.startup == dem::StartupPolicy::exact) supply_exact_past(scene, sim);
+  if (scene.integration.startup == dem::StartupPolicy::exact) supply_exact_past(scene, exact_, sim);
   sim.watch(watched_contacts(scene));
 
   cases::RunResult result;

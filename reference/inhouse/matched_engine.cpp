@@ -7,12 +7,11 @@
 
 #include "cases/catalogue.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
-#include "reference/matching.hpp"
 
 namespace reference {
 
-MatchedInhouseEngine::MatchedInhouseEngine(std::string code)
-    : code_(std::move(code)), name_(cases::matched_engine_name(code_)) {}
+MatchedInhouseEngine::MatchedInhouseEngine(const CodeConventions& conventions)
+    : conventions_(conventions), code_(conventions.code), name_(cases::matched_engine_name(code_)) {}
 
 std::optional<std::string> MatchedInhouseEngine::version() const {
   return InhouseEngine().version();
@@ -20,7 +19,7 @@ std::optional<std::string> MatchedInhouseEngine::version() const {
 
 Support MatchedInhouseEngine::supports(const cases::Scene& scene) const {
   try {
-    static_cast<void>(matched_scene(scene, code_));
+    static_cast<void>(conventions_.matched_scene(scene));
   } catch (const std::exception& e) {
     return Support{{std::string("no matched numerics for ") + code_ + ": " + e.what()}};
   }
@@ -48,7 +47,7 @@ bool nudge_start(cases::Scene& scene) {
 }  // namespace
 
 cases::RunResult MatchedInhouseEngine::run(const cases::Scene& scene, const RunOptions& options) const {
-  const cases::Scene matched = matched_scene(scene, code_);
+  const cases::Scene matched = conventions_.matched_scene(scene);
   cases::RunResult result = InhouseEngine().run(matched, options);
   result.conventions["matched to"] = code_ + " (reference::matched_scene: its integrator, velocity "
                                              "convention, damping formula, friction-limit basis and "

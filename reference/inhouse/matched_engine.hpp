@@ -3,18 +3,19 @@
 
 #include <string>
 
-#include "reference/engine.hpp"
+#include "reference/common/code_conventions.hpp"
+#include "reference/common/engine.hpp"
 
 namespace reference {
 
 /// The in-house core run with a reference code's own numerics ("inhouse@lammps", "inhouse@yade"):
 /// integrator, velocity convention, damping formula, friction-limit basis and tangential-history
-/// rule of that code (reference::matched_scene), so that comparing it with the code isolates the
+/// rule of that code (the CodeConventions its driver exports), so that comparing it with the code isolates the
 /// force model down to round-off (docs/engines.md, "Native and matched comparisons").
 class MatchedInhouseEngine final : public Engine {
  public:
-  /// The core matched to reference code `code` ("lammps" or "yade").
-  explicit MatchedInhouseEngine(std::string code);
+  /// The core matched to the code whose numerics `conventions` describe.
+  explicit MatchedInhouseEngine(const CodeConventions& conventions);
   [[nodiscard]] std::string_view name() const noexcept override { return name_; }
   [[nodiscard]] std::optional<std::string> version() const override;
   [[nodiscard]] Support supports(const cases::Scene& scene) const override;
@@ -22,6 +23,7 @@ class MatchedInhouseEngine final : public Engine {
                                      const RunOptions& options) const override;
 
  private:
+  CodeConventions conventions_;
   std::string code_;
   std::string name_;
 };

@@ -10,7 +10,7 @@
 
 #include "dem/contact/pair_table.hpp"
 #include "dem/core/model_error.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/dump_parser.hpp"

@@ -4,7 +4,7 @@
 #include <mutex>
 #include <string>
 
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/lammps_runner.hpp"
 

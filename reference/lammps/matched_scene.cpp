@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reference/lammps/matched_scene.hpp"
 
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 
 namespace reference::lammps {
 
@@ -31,6 +31,11 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   // pair granular `mindlin` keeps the slip and multiplies it by today's k_t.
   matched.model.mindlin_form = dem::MindlinForm::total;
   return matched;
+}
+
+const CodeConventions& conventions() noexcept {
+  static constexpr CodeConventions kConventions{"lammps", &matched_scene};
+  return kConventions;
 }
 
 }  // namespace reference::lammps

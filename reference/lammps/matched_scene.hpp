@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cases/scene.hpp"
+#include "reference/common/code_conventions.hpp"
 
 namespace reference::lammps {
 
@@ -15,5 +16,8 @@ namespace reference::lammps {
 /// reproduced (documented in docs/engines.md (section LAMMPS)): the 1e-10 threshold of the
 /// history projection and the wall's δ = 0 contact onset.
 cases::Scene matched_scene(const cases::Scene& scene);
+
+/// LAMMPS's numerics as the matched engine "inhouse@lammps" adopts them (matched_scene above).
+[[nodiscard]] const CodeConventions& conventions() noexcept;
 
 }  // namespace reference::lammps

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "reference/inhouse/inhouse_engine.hpp"
+#include "cases/time_step.hpp"
+#include "dem/simulation/simulation.hpp"
+#include "reference/common/core_setup.hpp"
 
 namespace reference::yade {
 namespace {
@@ -29,26 +31,25 @@ cases::Scene two_body_scene(const cases::Scene& matched, const YadeCalibrationPl
   return s;
 }
 
-/// Rebound restitution of the two-body core run with material restitution ε', or NaN.
+/// Rebound restitution of the two-body core run with material restitution ε', or NaN. The core
+/// is driven directly (the neutral layer's set-up), not through the in-house engine: a driver
+/// depends on no other engine (docs/architecture.md, "Layers").
 double rebound(cases::Scene s, const YadeCalibrationPlan& plan, double restitution) {
   s.materials[plan.material].restitution = restitution;
-  const auto run = InhouseEngine{}.run(s, {});
-  if (run.status != cases::RunStatus::ok || run.trace.rows() == 0) return std::nan("");
-  const auto velocity = [&](std::size_t i, std::size_t row) {
+  dem::Simulation sim(core_setup(s).simulation);
+  const bool pair = s.particles.size() > 1;
+  // Velocity of sphere `id` along the plan's normal, summed component by component.
+  const auto along_normal = [&](std::uint32_t id) {
+    const auto c = static_cast<Eigen::Index>(sim.slot(id));
     double v = 0.0;
-    const char* names[] = {"vx", "vy", "vz"};
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto* c = run.trace.column(cases::particle_column(i, names[k]));
-      if (c == nullptr) return std::nan("");
-      v += (*c)[row] * plan.normal[k];
-    }
+    for (Eigen::Index k = 0; k < 3; ++k) v += sim.state().velocity(k, c) * plan.normal[static_cast<std::size_t>(k)];
     return v;
   };
-  const std::size_t last = run.trace.rows() - 1;
-  const bool pair = s.particles.size() > 1;
-  const double before = velocity(0, 0) - (pair ? velocity(1, 0) : 0.0);
-  const double after = velocity(0, last) - (pair ? velocity(1, last) : 0.0);
-  return -after / before;
+  const auto relative = [&] { return along_normal(0) - (pair ? along_normal(1) : 0.0); };
+  const double before = relative();
+  const std::uint64_t steps = cases::step_count(s.integration.duration, sim.timestep());
+  for (std::uint64_t n = 0; n < steps; ++n) sim.step();
+  return -relative() / before;
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "reference/yade/matched_scene.hpp"
 
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "reference/yade/matched_calibration.hpp"
 #include "reference/yade/model_mapping.hpp"
 #include "reference/yade/restitution_calibration.hpp"
@@ -69,6 +69,11 @@ cases::Scene matched_scene(const cases::Scene& scene) {
     }
   }
   return matched;
+}
+
+const CodeConventions& conventions() noexcept {
+  static constexpr CodeConventions kConventions{"yade", &matched_scene};
+  return kConventions;
 }
 
 }  // namespace reference::yade

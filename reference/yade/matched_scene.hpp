@@ -2,6 +2,7 @@
 #pragma once
 
 #include "cases/scene.hpp"
+#include "reference/common/code_conventions.hpp"
 
 namespace reference::yade {
 
@@ -9,5 +10,8 @@ namespace reference::yade {
 /// half-step velocities as NewtonIntegrator, pinned Δt, and every sub-model replaced by the
 /// variant YADE computes).
 cases::Scene matched_scene(const cases::Scene& scene);
+
+/// YADE's numerics as the matched engine "inhouse@yade" adopts them (matched_scene above).
+[[nodiscard]] const CodeConventions& conventions() noexcept;
 
 }  // namespace reference::yade

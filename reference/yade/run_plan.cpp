@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "cases/trace.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "cases/time_step.hpp"
 
 namespace reference::yade {

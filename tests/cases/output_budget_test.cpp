@@ -192,7 +192,7 @@ duration = 0.01
 
 TEST(TimeStep, TheAutomaticStepFromTheSphereCensusIsTheCoresStep) {
   const cases::Scene s = cases::load_case_text(kMixed, "mixed.toml");
-  // The core's own computation over every sphere (reference/inhouse/scene_to_core.cpp).
+  // The core's own computation over every sphere (reference/common/core_setup.cpp).
   std::vector<dem::ParticleInit> inits;
   for (const cases::ParticleSpec& p : s.particles) {
     inits.push_back({p.radius, p.effect_radius, s.materials[p.material].density, static_cast<std::uint32_t>(p.material),

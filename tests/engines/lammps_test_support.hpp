@@ -11,7 +11,7 @@
 
 #include "cases/case_loader.hpp"
 #include "cases/run_result.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "support/process.hpp"
 
 // Helpers of the tests that run the real LAMMPS binary (ctest -L reference).

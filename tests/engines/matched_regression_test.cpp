@@ -10,7 +10,7 @@
 #include "compare/metrics.hpp"
 #include "lammps_test_support.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
-#include "reference/inhouse/matched_engine.hpp"
+#include "reference/registry.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/matching.hpp"
 #include "reference/yade/yade_engine.hpp"
@@ -103,7 +103,7 @@ TEST(MatchedRegression, AChaoticClusterAgreesWithLammpsUpToItsRoundoffHorizon) {
   const cases::RunResult theirs =
       reference::run_engine(reference::LammpsEngine{}, scene, demwb_lammps_test::scratch("regression-chaotic"));
   ASSERT_EQ(theirs.status, cases::RunStatus::ok) << theirs.reason;
-  const cases::RunResult ours = reference::run_engine(reference::MatchedInhouseEngine{"lammps"}, scene, {});
+  const cases::RunResult ours = reference::run_engine(*reference::make_engine("inhouse@lammps"), scene, {});
   ASSERT_EQ(ours.status, cases::RunStatus::ok) << ours.reason;
   ASSERT_TRUE(ours.roundoff_twin.has_value());
   std::string problem;

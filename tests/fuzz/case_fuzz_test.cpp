@@ -37,7 +37,7 @@
 #include "case_mutator.hpp"
 #include "cases/case_loader.hpp"
 #include "cases/output_budget.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 #include "reference/lammps/deck_writer.hpp"
 #include "reference/lammps/lammps_engine.hpp"

@@ -9,7 +9,7 @@
 
 #include "cases/case_loader.hpp"
 #include "lammps_scenes.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/registry.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/yade/yade_engine.hpp"

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "lammps_scenes.hpp"
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 #include "reference/registry.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "lammps_scenes.hpp"
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 #include "reference/matching.hpp"
 
 namespace lammps_matching_test {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "reference/engine.hpp"
+#include "reference/common/engine.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "reference/inhouse/scene_to_core.hpp"
+#include "reference/common/core_setup.hpp"
 
 #include <algorithm>
 #include <cmath>
