@@ -30,12 +30,13 @@ std::string refresh_command(const cases::Scene& scene) {
                      scene.source_path.empty() ? scene.name + ".toml" : scene.source_path);
 }
 
-/// The committed baseline result of `engine` for `scene`. Empty when there is none and the code
+/// The committed baseline result of `engine` for the prepared scene. Empty when there is none and the code
 /// is merely not installed (the run stays `missing`); an `error` naming the refresh command when
 /// the baseline is unreadable, absent in the fast tier, or stale: made from another version of
 /// the case, or from another input than the driver writes for it now.
-std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const reference::Engine& engine,
+std::optional<cases::RunResult> baseline_result(const reference::PreparedScene& prepared, const reference::Engine& engine,
                                                 const std::filesystem::path& dir, BaselineUse use) {
+  const cases::Scene& scene = prepared.scene();
   const std::string name(engine.name());
   const auto file = dir / (scene.name + ".json");
   const std::string why = use == BaselineUse::not_installed
@@ -70,7 +71,7 @@ std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const
     stale = "was made for another version of this case";
   } else if (const auto input = b.inputs.find(name); input == b.inputs.end()) {
     stale = fmt::format("does not record the input {} was given", name);
-  } else if (input->second != engine.input_fingerprint(scene)) {
+  } else if (input->second != engine.input_fingerprint(prepared)) {
     stale = fmt::format("was made from another {} than the driver writes now", name == "yade" ? "script" : "input deck");
   }
   if (!stale.empty()) {
@@ -90,8 +91,10 @@ std::optional<cases::RunResult> baseline_result(const cases::Scene& scene, const
   return r;
 }
 
-/// Runs one engine, through the cache and baselines when it is a reference code.
-cases::RunResult run_one(const cases::Scene& scene, const std::string& name, const RunContext& ctx) {
+/// Runs one engine on the prepared scene, through the cache and baselines when it is a reference
+/// code.
+cases::RunResult run_one(const reference::PreparedScene& prepared, const std::string& name, const RunContext& ctx) {
+  const cases::Scene& scene = prepared.scene();
   const auto engine = reference::make_engine(name, ctx.programs);
   if (!engine) throw std::invalid_argument("unknown engine '" + name + "'");
   reference::RunOptions o = ctx.options;
@@ -100,7 +103,7 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
   // A full-tier case in the fast tier: the in-house side runs, the reference result is the
   // committed one (a code that cannot express the case still answers n/a at once).
   if (reference_code && ctx.tier == cases::Tier::fast && scene.tier == cases::Tier::full &&
-      engine->supports(scene).supported()) {
+      engine->supports(prepared).supported()) {
     if (!ctx.baselines) {
       cases::RunResult r;
       r.engine = name;
@@ -110,7 +113,7 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
                              scene.name);
       return r;
     }
-    return *baseline_result(scene, *engine, *ctx.baselines, BaselineUse::fast_tier);
+    return *baseline_result(prepared, *engine, *ctx.baselines, BaselineUse::fast_tier);
   }
   // The cache key's version: the code's own and its driver's source revision, so that results
   // made by another driver are never reused.
@@ -132,7 +135,7 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
     }
     distrusted = found.problem;
   }
-  cases::RunResult result = reference::run_engine(*engine, scene, o);
+  cases::RunResult result = reference::run_engine(*engine, prepared, o);
   if (key && result.status == cases::RunStatus::ok) ctx.cache->store(scene, result, *key);
   if (!distrusted.empty()) {
     result.warnings.push_back(fmt::format("cache entry not trusted, {} ran again{}: {}", name,
@@ -140,7 +143,7 @@ cases::RunResult run_one(const cases::Scene& scene, const std::string& name, con
                                           distrusted));
   }
   if (reference_code && result.status == cases::RunStatus::missing && ctx.baselines) {
-    if (auto b = baseline_result(scene, *engine, *ctx.baselines, BaselineUse::not_installed)) return *b;
+    if (auto b = baseline_result(prepared, *engine, *ctx.baselines, BaselineUse::not_installed)) return *b;
   }
   return result;
 }
@@ -167,7 +170,7 @@ void refine_reference_runs(const cases::Scene& scene, std::vector<cases::RunResu
       ++level;
       RunContext ctx = context;
       ctx.options.work_dir = context.options.work_dir / fmt::format("{}-dt{}", r.engine, 1 << level);
-      return run_one(finer, r.engine, ctx);
+      return run_one(reference::PreparedScene(finer), r.engine, ctx);
     };
     r.refinement = comparison::refine_time_step(scene, r, runner, analytic);
     const auto& f = *r.refinement;
@@ -203,8 +206,10 @@ comparison::CaseOutcome run_case(const cases::Scene& input, const std::vector<st
     }
     return comparison::evaluate_runs(input, std::move(runs));
   }
+  // One pair table (and whatever else the engines derive from the scene) for every engine.
+  const reference::PreparedScene prepared(scene);
   for (const auto& name : engines) {
-    runs.push_back(run_one(scene, name, context));
+    runs.push_back(run_one(prepared, name, context));
     if (context.on_engine_done) context.on_engine_done(scene, runs.back());
   }
   if (context.refine_time_step) refine_reference_runs(scene, runs, context);

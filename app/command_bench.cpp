@@ -128,7 +128,8 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
   r.description = scene.description.empty() ? scene.name : scene.description;
   r.steps = steps;
   r.particles = scene.particles.size();
-  const reference::CoreSetup setup = reference::core_setup(scene, o.threads);
+  const reference::PreparedScene prepared(scene);
+  const reference::CoreSetup setup = reference::core_setup(prepared, o.threads);
   std::function<bench::LammpsRun()> run_lammps;
   std::function<bench::CoreRun()> run_core;
   if (o.lammps) {
@@ -138,7 +139,7 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
     settings.timing_only = true;
     std::vector<bench::DeckFile> files;
     try {
-      const std::string deck = reference::lammps::write_deck(scene, settings);
+      const std::string deck = reference::lammps::write_deck(prepared, settings);
       if (reference::lammps::atoms_in_data_file(scene)) {
         files.push_back({settings.data_file, reference::lammps::write_atom_data(scene, settings)});
       }
@@ -223,7 +224,7 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   } else if (o.scene.ends_with(".toml")) {
     const cases::Scene scene = cases::load_case(o.scene);
     const std::uint64_t steps =
-        o.steps.value_or(cases::step_count(scene.integration.duration, reference::core_setup(scene).simulation.timestep));
+        o.steps.value_or(cases::step_count(scene.integration.duration, reference::core_setup(reference::PreparedScene(scene)).simulation.timestep));
     result = bench_scene(o, scene, steps);
     result.scene = scene.name;
   } else {

@@ -92,7 +92,7 @@ cases::Scene formation_scene(const cases::Scene& scene, const cases::FormationSt
 
 Formation form_agglomerate(const cases::Scene& scene, const cases::FormationStageSpec& stage, int threads) {
   const cases::Scene formed = formation_scene(scene, stage);
-  reference::CoreSetup core = reference::core_setup(formed, threads);
+  reference::CoreSetup core = reference::core_setup(reference::PreparedScene(formed), threads);
   dem::SimulationSetup& setup = core.simulation;
   setup.track_energy = false;
 

@@ -9,7 +9,7 @@
 namespace reference {
 
 cases::Scene matched_scene(const cases::Scene& scene, std::string_view engine) {
-  if (const CodeConventions* c = code_conventions(engine)) return c->matched_scene(scene);
+  if (const CodeConventions* c = code_conventions(engine)) return c->matched_scene(PreparedScene(scene));
   std::string known;
   for (const EngineEntry& e : engine_registry()) {
     if (e.conventions != nullptr) known += (known.empty() ? "" : ", ") + std::string(e.name);

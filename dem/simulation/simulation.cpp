@@ -20,9 +20,12 @@ ParticleProperties make_properties(const SimulationSetup& setup, KinematicState&
 
 Simulation::Simulation(const SimulationSetup& setup)
     : props_(make_properties(setup, state_)),
-      table_(setup.materials, setup.mixing, setup.pair_overrides, setup.model),
+      table_(setup.pair_table != nullptr
+                 ? setup.pair_table
+                 : std::make_shared<const PairTable>(setup.materials, setup.mixing, setup.pair_overrides,
+                                                     setup.model)),
       field_(std::make_unique<ContactForceField>(
-          props_, table_,
+          props_, *table_,
           ForceFieldSetup{setup.walls, setup.fields, setup.motions,
                           setup.model.wall_lever_arm,
                           setup.model.pair_lever_arm, setup.box,

@@ -29,6 +29,9 @@ struct SimulationSetup {
   NeighborSettings neighbors;   ///< skin (0: a tenth of the smallest diameter), reorder interval
   int threads = 1;              ///< OpenMP threads; results do not depend on it
   bool track_energy = true;     ///< keep the energy ledger (energy()); off skips its arithmetic
+  /// The pair table of materials, mixing, pair_overrides and model above when the caller has
+  /// already built it (it must be built from exactly those); null: the simulation builds it.
+  std::shared_ptr<const PairTable> pair_table;
 };
 
 /// Wires particles, pair laws, force field and scheme together and steps them. Holds no
@@ -75,7 +78,7 @@ class Simulation {
   /// Static particle properties.
   [[nodiscard]] const ParticleProperties& particles() const noexcept { return props_; }
   /// The pair table (mixed parameters and laws).
-  [[nodiscard]] const PairTable& pair_table() const noexcept { return table_; }
+  [[nodiscard]] const PairTable& pair_table() const noexcept { return *table_; }
   /// The force field (forces, torques, watched pairs, contact history).
   [[nodiscard]] ContactForceField& force_field() noexcept { return *field_; }
   [[nodiscard]] const ContactForceField& force_field() const noexcept { return *field_; }
@@ -102,7 +105,7 @@ class Simulation {
   [[nodiscard]] bool sorts() const noexcept;
   KinematicState state_;       // declared first: props_' initialiser fills it
   ParticleProperties props_;
-  PairTable table_;
+  std::shared_ptr<const PairTable> table_;  ///< never null; the force field holds a reference to it
   std::unique_ptr<ContactForceField> field_;
   std::unique_ptr<Scheme> scheme_;
   Accelerations acc_;

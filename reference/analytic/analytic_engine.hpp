@@ -13,17 +13,18 @@ namespace reference {
 /// maximum overlap and maximum force of the compared pair.
 class AnalyticEngine final : public Engine {
  public:
+  using Engine::run;
+  using Engine::supports;
   [[nodiscard]] std::string_view name() const noexcept override { return "analytic"; }
   [[nodiscard]] std::optional<std::string> version() const override;
-  [[nodiscard]] Support supports(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
-                                     const RunOptions& options) const override;
+  [[nodiscard]] Support supports(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared, const RunOptions& options) const override;
 };
 
-/// Exact states of every particle of `scene` at the given times (negative times allowed:
+/// Exact states of every particle of the prepared scene at the given times (negative times allowed:
 /// the motion is continued backwards). Throws std::invalid_argument with the reasons when the
 /// analytic engine does not support the scene. Used for exact multi-step start-up data.
-std::vector<cases::Snapshot> exact_states(const cases::Scene& scene,
+std::vector<cases::Snapshot> exact_states(const PreparedScene& prepared,
                                           const std::vector<double>& times);
 
 }  // namespace reference

@@ -104,14 +104,15 @@ CollinearScene build_collinear_scene(const cases::Scene& scene, const dem::PairT
   return out;
 }
 
-CollinearScene reduce_scene(const cases::Scene& scene) {
-  const std::vector<std::string> reasons = unsupported_reasons(scene);
+CollinearScene reduce_scene(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
+  const std::vector<std::string> reasons = unsupported_reasons(prepared);
   if (!reasons.empty()) {
     std::string text;
     for (const auto& r : reasons) text += (text.empty() ? "" : "; ") + r;
     throw std::invalid_argument(text);
   }
-  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+  const dem::PairTable& table = prepared.pair_table();
   return build_collinear_scene(scene, table);
 }
 

@@ -7,6 +7,7 @@
 
 #include "cases/run_result.hpp"
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "reference/analytic/collinear_motion.hpp"
 
@@ -45,7 +46,7 @@ struct CollinearScene {
 
 /// Reduces `scene` to one axis. Throws std::invalid_argument carrying every reason when the
 /// scene is unsupported (see unsupported_reasons).
-CollinearScene reduce_scene(const cases::Scene& scene);
+CollinearScene reduce_scene(const PreparedScene& prepared);
 
 /// The reduction of a scene whose model and layout are supported, with the pair parameters
 /// from `table` (k_e, and η = β(ε) √(m* k_e), eq 3.11); the parameters are not checked.

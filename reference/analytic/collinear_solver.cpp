@@ -127,13 +127,14 @@ std::map<std::string, std::string> conventions(const CollinearScene& reduced, do
 
 }  // namespace
 
-std::vector<std::string> CollinearSolver::unsupported_reasons(const cases::Scene& scene) const {
-  return analytic::unsupported_reasons(scene);
+std::vector<std::string> CollinearSolver::unsupported_reasons(const PreparedScene& prepared) const {
+  return analytic::unsupported_reasons(prepared);
 }
 
-cases::RunResult CollinearSolver::run(const cases::Scene& scene) const {
-  const CollinearScene reduced = analytic::reduce_scene(scene);
-  const auto [dt, steps, every, t_end] = sample_grid(scene);
+cases::RunResult CollinearSolver::run(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
+  const CollinearScene reduced = analytic::reduce_scene(prepared);
+  const auto [dt, steps, every, t_end] = sample_grid(prepared);
   const analytic::AxisSolution solution(reduced.problem, 0.0, t_end);
 
   cases::RunResult result;
@@ -152,9 +153,10 @@ cases::RunResult CollinearSolver::run(const cases::Scene& scene) const {
   return result;
 }
 
-std::vector<cases::Snapshot> collinear_exact_states(const cases::Scene& scene,
+std::vector<cases::Snapshot> collinear_exact_states(const PreparedScene& prepared,
                                                     const std::vector<double>& times) {
-  const CollinearScene reduced = analytic::reduce_scene(scene);
+  const cases::Scene& scene = prepared.scene();
+  const CollinearScene reduced = analytic::reduce_scene(prepared);
   double t_min = 0.0;
   double t_max = 0.0;
   for (const double t : times) {

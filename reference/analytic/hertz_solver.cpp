@@ -204,9 +204,10 @@ HertzPair reduce(const cases::Scene& scene, const dem::PairTable& table) {
 }
 
 /// Builds the pair table and the reduction, adding reasons against the parameters.
-std::optional<HertzPair> reduce_checked(const cases::Scene& scene, std::vector<std::string>& reasons) {
+std::optional<HertzPair> reduce_checked(const PreparedScene& prepared, std::vector<std::string>& reasons) {
+  const cases::Scene& scene = prepared.scene();
   try {
-    const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+    const dem::PairTable& table = prepared.pair_table();
     HertzPair h = reduce(scene, table);
     if (!(h.effective_modulus > 0.0) || !std::isfinite(h.effective_modulus)) {
       reasons.push_back(reason("the pair's effective modulus is {} Pa; need 0 < E* < ∞", h.effective_modulus));
@@ -451,21 +452,23 @@ std::map<std::string, std::string> conventions(const cases::Scene& scene, const 
 
 }  // namespace
 
-std::vector<std::string> HertzSolver::unsupported_reasons(const cases::Scene& scene) const {
+std::vector<std::string> HertzSolver::unsupported_reasons(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   std::vector<std::string> reasons;
   reasons = model_reasons(scene.model, kHertzModel);
   check_environment(scene, reasons);
   check_hertz_layout(scene, reasons);
-  if (reasons.empty()) static_cast<void>(reduce_checked(scene, reasons));
+  if (reasons.empty()) static_cast<void>(reduce_checked(prepared, reasons));
   return reasons;
 }
 
-cases::RunResult HertzSolver::run(const cases::Scene& scene) const {
+cases::RunResult HertzSolver::run(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   std::vector<std::string> reasons;
-  const std::optional<HertzPair> reduced = reduce_checked(scene, reasons);
+  const std::optional<HertzPair> reduced = reduce_checked(prepared, reasons);
   if (!reduced) throw std::invalid_argument(reasons.empty() ? "unsupported scene" : reasons.front());
   const HertzPair& h = *reduced;
-  const auto [dt, steps, every, t_end] = sample_grid(scene);
+  const auto [dt, steps, every, t_end] = sample_grid(prepared);
 
   std::vector<double> times;
   for (std::uint64_t n = 0; n <= steps; n += every) times.push_back(static_cast<double>(n) * dt);

@@ -16,9 +16,11 @@ namespace reference::analytic {
 /// or without clamp_tensile) a Dormand–Prince integration to 1e-12 (solve_normal_contact).
 class HertzSolver final : public Solver {
  public:
+  using Solver::run;
+  using Solver::unsupported_reasons;
   [[nodiscard]] std::string_view name() const noexcept override { return "Hertz two-body contact"; }
-  [[nodiscard]] std::vector<std::string> unsupported_reasons(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene) const override;
+  [[nodiscard]] std::vector<std::string> unsupported_reasons(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared) const override;
 };
 
 }  // namespace reference::analytic

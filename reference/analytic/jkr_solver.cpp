@@ -101,8 +101,9 @@ struct Rig {
   }
 };
 
-Rig make_rig(const cases::Scene& scene) {
-  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+Rig make_rig(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
+  const dem::PairTable& table = prepared.pair_table();
   const auto& a = scene.particles[0];
   const auto& b = scene.particles[1];
   const dem::PairLaw& law = table.law(a.material, b.material);
@@ -292,15 +293,16 @@ void check_jkr_layout(const cases::Scene& scene, std::vector<std::string>& reaso
 
 }  // namespace
 
-std::vector<std::string> JkrPulloffSolver::unsupported_reasons(const cases::Scene& scene) const {
+std::vector<std::string> JkrPulloffSolver::unsupported_reasons(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   std::vector<std::string> reasons;
   for (std::string& r : model_reasons(scene.model, kJkrModel)) reasons.push_back(std::move(r));
   if (!reasons.empty()) return reasons;
   check_jkr_layout(scene, reasons);
   if (!reasons.empty()) return reasons;
   try {
-    const Rig rig = make_rig(scene);
-    const double t_end = sample_grid(scene).t_end;
+    const Rig rig = make_rig(prepared);
+    const double t_end = sample_grid(prepared).t_end;
     for (const double t : breakpoints(scene)) {
       if (!(rig.distance(std::min(t, t_end)) > 0.0)) {
         reasons.push_back("analytic (JKR pull-off rig): the centres meet during the motion");
@@ -315,9 +317,10 @@ std::vector<std::string> JkrPulloffSolver::unsupported_reasons(const cases::Scen
   return reasons;
 }
 
-cases::RunResult JkrPulloffSolver::run(const cases::Scene& scene) const {
-  const Rig rig = make_rig(scene);
-  const auto [dt, steps, every, t_end] = sample_grid(scene);
+cases::RunResult JkrPulloffSolver::run(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
+  const Rig rig = make_rig(prepared);
+  const auto [dt, steps, every, t_end] = sample_grid(prepared);
   const History history(rig, t_end);
 
   cases::RunResult result;

@@ -13,9 +13,11 @@ namespace reference::analytic {
 /// Exact metrics: pull-off force, rupture separation, force at rupture, separation work.
 class JkrPulloffSolver final : public Solver {
  public:
+  using Solver::run;
+  using Solver::unsupported_reasons;
   [[nodiscard]] std::string_view name() const noexcept override { return "JKR pull-off rig"; }
-  [[nodiscard]] std::vector<std::string> unsupported_reasons(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene) const override;
+  [[nodiscard]] std::vector<std::string> unsupported_reasons(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared) const override;
 };
 
 }  // namespace reference::analytic

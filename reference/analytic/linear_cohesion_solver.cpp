@@ -248,12 +248,13 @@ class Motion {
   std::vector<Piece> pieces_;
 };
 
-Pair make_pair(const cases::Scene& scene) {
+Pair make_pair(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
   const std::size_t mobile = scene.particles[0].fixed ? 1 : 0;
   const std::size_t fixed = 1 - mobile;
   const auto& m = scene.particles[mobile];
   const auto& f = scene.particles[fixed];
-  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+  const dem::PairTable& table = prepared.pair_table();
   const dem::PairLaw& law = table.law(m.material, f.material);
   const double k_e = std::get<dem::LinearNormal>(law.normal).stiffness;
   const double k_c = std::get<dem::LinearCohesion>(law.cohesion).stiffness;
@@ -388,14 +389,15 @@ void check_linear_cohesion_layout(const cases::Scene& scene, std::vector<std::st
 
 }  // namespace
 
-std::vector<std::string> LinearCohesionSolver::unsupported_reasons(const cases::Scene& scene) const {
+std::vector<std::string> LinearCohesionSolver::unsupported_reasons(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   std::vector<std::string> reasons;
   for (std::string& r : model_reasons(scene.model, kLinearCohesionModel)) reasons.push_back(std::move(r));
   if (!reasons.empty()) return reasons;
   check_linear_cohesion_layout(scene, reasons);
   if (!reasons.empty()) return reasons;
   try {
-    const Pair p = make_pair(scene);
+    const Pair p = make_pair(prepared);
     if (!(p.k_e > p.k_c)) {
       reasons.push_back(fmt::format(
           "analytic (linear cohesion pair): needs k_e > k_c for an equilibrium, got k_e = {} N/m, "
@@ -403,16 +405,17 @@ std::vector<std::string> LinearCohesionSolver::unsupported_reasons(const cases::
           p.k_e, p.k_c));
     }
     if (!(p.mass > 0.0)) reasons.push_back("analytic (linear cohesion pair): needs a positive mass");
-    static_cast<void>(core_setup(scene));
+    static_cast<void>(core_setup(prepared));
   } catch (const std::exception& e) {
     reasons.push_back(std::string("analytic (linear cohesion pair): ") + e.what());
   }
   return reasons;
 }
 
-cases::RunResult LinearCohesionSolver::run(const cases::Scene& scene) const {
-  const Pair p = make_pair(scene);
-  const auto [dt, steps, every, t_end] = sample_grid(scene);
+cases::RunResult LinearCohesionSolver::run(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
+  const Pair p = make_pair(prepared);
+  const auto [dt, steps, every, t_end] = sample_grid(prepared);
   const auto [delta0, rate0] = initial(scene, p);
   const Motion motion(p, delta0, rate0, t_end);
 

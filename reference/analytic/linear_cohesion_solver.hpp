@@ -13,9 +13,11 @@ namespace reference::analytic {
 /// 748. Exact metrics: equilibrium overlap, and the first contact's duration and maximum overlap.
 class LinearCohesionSolver final : public Solver {
  public:
+  using Solver::run;
+  using Solver::unsupported_reasons;
   [[nodiscard]] std::string_view name() const noexcept override { return "linear cohesion pair"; }
-  [[nodiscard]] std::vector<std::string> unsupported_reasons(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene) const override;
+  [[nodiscard]] std::vector<std::string> unsupported_reasons(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared) const override;
 };
 
 }  // namespace reference::analytic

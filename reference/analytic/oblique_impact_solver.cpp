@@ -322,7 +322,8 @@ double inverse_inertia(const cases::Scene& scene, double mass, double radius) {
 
 }  // namespace
 
-std::vector<std::string> sphere_wall_reasons(const cases::Scene& scene, std::string_view solver) {
+std::vector<std::string> sphere_wall_reasons(const PreparedScene& prepared, std::string_view solver) {
+  const cases::Scene& scene = prepared.scene();
   std::vector<std::string> reasons;
   const auto reason = [&](const std::string& why) {
     reasons.push_back(fmt::format("analytic ({}): {}", solver, why));
@@ -349,7 +350,7 @@ std::vector<std::string> sphere_wall_reasons(const cases::Scene& scene, std::str
   if (scene.fluid) reason("a fluid (drag, buoyancy) has no closed form here");
   if (!reasons.empty()) return reasons;
   try {
-    const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+    const dem::PairTable& table = prepared.pair_table();
     static_cast<void>(table);
   } catch (const std::exception& e) {
     reason(e.what());
@@ -357,10 +358,11 @@ std::vector<std::string> sphere_wall_reasons(const cases::Scene& scene, std::str
   return reasons;
 }
 
-SphereWallScene sphere_wall_scene(const cases::Scene& scene) {
+SphereWallScene sphere_wall_scene(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
   const cases::ParticleSpec& p = scene.particles.front();
   const cases::WallSpec& w = scene.walls.front();
-  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+  const dem::PairTable& table = prepared.pair_table();
   const dem::PairProperties& pair = table.properties(p.material, w.material);
   SphereWallScene s;
   s.radius = p.radius;
@@ -385,16 +387,17 @@ SphereWallScene sphere_wall_scene(const cases::Scene& scene) {
   return s;
 }
 
-std::vector<std::string> ObliqueImpactSolver::unsupported_reasons(const cases::Scene& scene) const {
+std::vector<std::string> ObliqueImpactSolver::unsupported_reasons(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   constexpr std::string_view who = "oblique impact";
-  std::vector<std::string> reasons = sphere_wall_reasons(scene, who);
+  std::vector<std::string> reasons = sphere_wall_reasons(prepared, who);
   const auto reason = [&](const std::string& why) {
     reasons.push_back(fmt::format("analytic ({}): {}", who, why));
   };
   const auto& g = scene.gravity;
   if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0) reason("gravity must be zero (a free impact)");
   if (!reasons.empty()) return reasons;
-  const SphereWallScene s = sphere_wall_scene(scene);
+  const SphereWallScene s = sphere_wall_scene(prepared);
   const Vec3 n = vec(s.normal);
   const double distance = (vec(s.position) - vec(s.wall_point)).dot(n);
   if (!(distance >= s.radius)) reason("the sphere must start clear of the wall (δ ≤ 0)");
@@ -420,10 +423,11 @@ std::vector<std::string> ObliqueImpactSolver::unsupported_reasons(const cases::S
   return reasons;
 }
 
-cases::RunResult ObliqueImpactSolver::run(const cases::Scene& scene) const {
-  const SphereWallScene s = sphere_wall_scene(scene);
+cases::RunResult ObliqueImpactSolver::run(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
+  const SphereWallScene s = sphere_wall_scene(prepared);
   const GrossSlidingImpact impact(s);
-  const auto [dt, steps, every, t_end] = sample_grid(scene);
+  const auto [dt, steps, every, t_end] = sample_grid(prepared);
 
   cases::RunResult result;
   result.status = cases::RunStatus::ok;

@@ -35,10 +35,10 @@ struct SphereWallScene {
 /// and naming `solver`: one mobile sphere, one plane wall at rest, linear normal law with no or
 /// restitution damping, tangential 'none' or 'spring_coulomb', no cohesion, rolling, fluid,
 /// charge, prescribed motion or tensile clamp.
-std::vector<std::string> sphere_wall_reasons(const cases::Scene& scene, std::string_view solver);
+std::vector<std::string> sphere_wall_reasons(const PreparedScene& prepared, std::string_view solver);
 
 /// The scene in sphere–wall terms; `scene` must pass sphere_wall_reasons.
-SphereWallScene sphere_wall_scene(const cases::Scene& scene);
+SphereWallScene sphere_wall_scene(const PreparedScene& prepared);
 
 /// Oblique impact of a sphere on a plane wall in gross sliding (thesis §3.5.2, eq 3.10–3.11,
 /// 3.23, 3.32): the normal motion is the linear spring–dashpot collision in closed form, the
@@ -47,11 +47,13 @@ SphereWallScene sphere_wall_scene(const cases::Scene& scene);
 /// integrated by Gauss–Legendre quadrature of the closed-form basis to double precision.
 class ObliqueImpactSolver final : public Solver {
  public:
+  using Solver::run;
+  using Solver::unsupported_reasons;
   [[nodiscard]] std::string_view name() const noexcept override {
     return "sphere–wall impact in gross sliding";
   }
-  [[nodiscard]] std::vector<std::string> unsupported_reasons(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene) const override;
+  [[nodiscard]] std::vector<std::string> unsupported_reasons(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared) const override;
 };
 
 }  // namespace reference::analytic

@@ -129,7 +129,8 @@ void check_parameters(const CollinearScene& reduced, const cases::Scene& scene,
 
 }  // namespace
 
-std::vector<std::string> unsupported_reasons(const cases::Scene& scene) {
+std::vector<std::string> unsupported_reasons(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
   std::vector<std::string> reasons;
   for (std::string& r : model_reasons(scene.model, kCollinearModel)) reasons.push_back(std::move(r));
   const Vector3& g = scene.gravity;
@@ -154,7 +155,7 @@ std::vector<std::string> unsupported_reasons(const cases::Scene& scene) {
   check_collinear_layout(scene, reasons);
   if (!reasons.empty()) return reasons;
   try {
-    const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+    const dem::PairTable& table = prepared.pair_table();
     check_parameters(build_collinear_scene(scene, table), scene, reasons);
   } catch (const std::exception& e) {
     reasons.push_back(std::string("analytic: ") + e.what());

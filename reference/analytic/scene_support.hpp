@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 
 namespace reference::analytic {
 
@@ -12,6 +13,6 @@ namespace reference::analytic {
 /// condition (empty when they can): linear normal law with no or restitution damping (eq
 /// 3.10–3.11), no tangential/cohesion/rolling model, zero gravity, and either one mobile sphere
 /// whose fixed partners lie on its line of motion, or two mobile spheres colliding head-on.
-std::vector<std::string> unsupported_reasons(const cases::Scene& scene);
+std::vector<std::string> unsupported_reasons(const PreparedScene& prepared);
 
 }  // namespace reference::analytic

@@ -71,14 +71,15 @@ class SlidingMotion {
 
 }  // namespace
 
-std::vector<std::string> SlidingSolver::unsupported_reasons(const cases::Scene& scene) const {
+std::vector<std::string> SlidingSolver::unsupported_reasons(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   constexpr std::string_view who = "sliding";
-  std::vector<std::string> reasons = sphere_wall_reasons(scene, who);
+  std::vector<std::string> reasons = sphere_wall_reasons(prepared, who);
   if (!reasons.empty()) return reasons;
   const auto reason = [&](const std::string& why) {
     reasons.push_back(fmt::format("analytic ({}): {}", who, why));
   };
-  const SphereWallScene s = sphere_wall_scene(scene);
+  const SphereWallScene s = sphere_wall_scene(prepared);
   const Vec3 n = vec(s.normal);
   const Vec3 g = vec(scene.gravity);
   const double g_n = -g.dot(n);
@@ -100,10 +101,11 @@ std::vector<std::string> SlidingSolver::unsupported_reasons(const cases::Scene& 
   return reasons;
 }
 
-cases::RunResult SlidingSolver::run(const cases::Scene& scene) const {
-  const SphereWallScene s = sphere_wall_scene(scene);
+cases::RunResult SlidingSolver::run(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
+  const SphereWallScene s = sphere_wall_scene(prepared);
   const SlidingMotion motion(s, vec(scene.gravity));
-  const auto [dt, steps, every, t_end] = sample_grid(scene);
+  const auto [dt, steps, every, t_end] = sample_grid(prepared);
   const double weight = s.mass * -vec(scene.gravity).dot(vec(s.normal));
 
   cases::RunResult result;

@@ -12,11 +12,13 @@ namespace reference::analytic {
 /// rolling at constant velocity (thesis eq 3.23, 3.32; ℓ the lever arm).
 class SlidingSolver final : public Solver {
  public:
+  using Solver::run;
+  using Solver::unsupported_reasons;
   [[nodiscard]] std::string_view name() const noexcept override {
     return "sphere sliding then rolling on a plane";
   }
-  [[nodiscard]] std::vector<std::string> unsupported_reasons(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene) const override;
+  [[nodiscard]] std::vector<std::string> unsupported_reasons(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared) const override;
 };
 
 }  // namespace reference::analytic

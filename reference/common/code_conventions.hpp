@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 
 namespace reference {
 
@@ -13,10 +14,10 @@ namespace reference {
 /// these, the registry hands it to the matched engine ("inhouse@<code>").
 struct CodeConventions {
   std::string_view code;  ///< the code's engine name: "lammps", "yade"
-  /// A copy of a scene that the core runs to reproduce the code's integrator, velocity convention
+  /// A copy of the prepared scene that the core runs to reproduce the code's integrator, velocity convention
   /// and force formulas (docs/engines.md, "Native and matched comparisons"). Throws
   /// std::invalid_argument with the reason when the code's numerics cannot be matched.
-  cases::Scene (*matched_scene)(const cases::Scene& scene);
+  cases::Scene (*matched_scene)(const PreparedScene& prepared);
 };
 
 }  // namespace reference

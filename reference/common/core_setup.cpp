@@ -37,7 +37,8 @@ double smallest_radius(const cases::Scene& scene) {
 
 }  // namespace
 
-CoreSetup core_setup(const cases::Scene& scene, int threads) {
+CoreSetup core_setup(const PreparedScene& prepared, int threads) {
+  const cases::Scene& scene = prepared.scene();
   CoreSetup out;
   dem::SimulationSetup& s = out.simulation;
   for (const auto& p : scene.particles) {
@@ -90,7 +91,8 @@ CoreSetup core_setup(const cases::Scene& scene, int threads) {
   dem::ParticleProperties props;
   dem::KinematicState initial;
   dem::build_particles(s.particles, props, initial);
-  const dem::PairTable table(s.materials, s.mixing, s.pair_overrides, s.model);
+  s.pair_table = prepared.shared_pair_table();
+  const dem::PairTable& table = *s.pair_table;
   std::vector<std::uint32_t> wall_materials;
   for (const auto& w : s.walls) wall_materials.push_back(w.material);
   out.limits = dem::timestep_limits(props, initial, table, s.fields.gravity, in.rotation,
@@ -111,8 +113,9 @@ CoreSetup core_setup(const cases::Scene& scene, int threads) {
   return out;
 }
 
-SampleGrid sample_grid(const cases::Scene& scene) {
-  const double dt = core_setup(scene).simulation.timestep;
+SampleGrid sample_grid(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
+  const double dt = core_setup(prepared).simulation.timestep;
   const std::uint64_t steps = cases::step_count(scene.integration.duration, dt);
   return {dt, steps, std::max<std::uint64_t>(1, scene.output.trace_every), static_cast<double>(steps) * dt};
 }

@@ -9,6 +9,7 @@
 #include "dem/particles/particles.hpp"
 #include "dem/simulation/simulation.hpp"
 #include "dem/timestep/timestep_control.hpp"
+#include "reference/common/prepared_scene.hpp"
 
 namespace reference {
 
@@ -19,9 +20,9 @@ struct CoreSetup {
   std::vector<std::string> warnings;  ///< time-step warnings, naming integration.timestep
 };
 
-/// Translates `scene` into the core's terms, run with `threads` OpenMP threads. Throws
-/// dem::ModelError on an incomplete model.
-CoreSetup core_setup(const cases::Scene& scene, int threads = 1);
+/// Translates the prepared scene into the core's terms, run with `threads` OpenMP threads, sharing
+/// its pair table. Throws dem::ModelError on an incomplete model.
+CoreSetup core_setup(const PreparedScene& prepared, int threads = 1);
 
 /// The time grid every engine samples a scene on: the core's resolved Δt, the step count, the
 /// trace interval in steps and the end time steps·Δt.
@@ -32,8 +33,8 @@ struct SampleGrid {
   double t_end;
 };
 
-/// The sample grid of `scene` (resolves the time step like core_setup).
-SampleGrid sample_grid(const cases::Scene& scene);
+/// The sample grid of the prepared scene (resolves the time step like core_setup).
+SampleGrid sample_grid(const PreparedScene& prepared);
 
 /// Converts an exact snapshot into the core's state (orientations at identity).
 dem::KinematicState to_state(const cases::Snapshot& snapshot);

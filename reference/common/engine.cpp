@@ -21,8 +21,11 @@ std::string Support::explain() const {
 }
 
 
-cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
-                            const RunOptions& options) {
+cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene, const RunOptions& options) {
+  return run_engine(engine, PreparedScene(scene), options);
+}
+
+cases::RunResult run_engine(const Engine& engine, const PreparedScene& prepared, const RunOptions& options) {
   cases::RunResult result;
   result.engine = std::string(engine.name());
   const auto version = engine.version();
@@ -31,7 +34,7 @@ cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
     result.reason = fmt::format("engine '{}' is not installed: {}", engine.name(), engine.location());
     return result;
   }
-  const Support support = engine.supports(scene);
+  const Support support = engine.supports(prepared);
   if (!support.supported()) {
     result.version = *version;
     result.status = cases::RunStatus::not_applicable;
@@ -40,7 +43,7 @@ cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
   }
   const auto start = std::chrono::steady_clock::now();
   try {
-    result = engine.run(scene, options);
+    result = engine.run(prepared, options);
   } catch (const std::exception& e) {
     result = cases::RunResult{};
     result.status = cases::RunStatus::error;

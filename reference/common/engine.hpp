@@ -10,6 +10,7 @@
 
 #include "cases/run_result.hpp"
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 
 namespace reference {
 
@@ -41,16 +42,26 @@ class Engine {
   /// Where the engine's program was found (or why it was not): `demwb engines` and `missing`
   /// reasons show it.
   [[nodiscard]] virtual std::string location() const { return "built in"; }
-  /// Can the engine express `scene`?
-  [[nodiscard]] virtual Support supports(const cases::Scene& scene) const = 0;
-  /// Runs `scene` and returns its traces (status ok) or why not.
-  [[nodiscard]] virtual cases::RunResult run(const cases::Scene& scene,
-                                             const RunOptions& options) const = 0;
-  /// SHA-256 of everything the engine would feed its program for `scene` (a reference code's
+  /// Can the engine express the prepared scene?
+  [[nodiscard]] virtual Support supports(const PreparedScene& prepared) const = 0;
+  /// Runs the prepared scene and returns its traces (status ok) or why not.
+  [[nodiscard]] virtual cases::RunResult run(const PreparedScene& prepared, const RunOptions& options) const = 0;
+  /// SHA-256 of everything the engine would feed its program for the scene (a reference code's
   /// input deck, data file or script), without running it: a stored result whose fingerprint
   /// differs was made from another input. Empty for engines with no external input (the core,
   /// closed forms) and for scenes the engine cannot express.
-  [[nodiscard]] virtual std::string input_fingerprint(const cases::Scene& /*scene*/) const { return {}; }
+  [[nodiscard]] virtual std::string input_fingerprint(const PreparedScene& /*prepared*/) const { return {}; }
+
+  /// supports() of `scene` prepared for this one call.
+  [[nodiscard]] Support supports(const cases::Scene& scene) const { return supports(PreparedScene(scene)); }
+  /// run() of `scene` prepared for this one call.
+  [[nodiscard]] cases::RunResult run(const cases::Scene& scene, const RunOptions& options) const {
+    return run(PreparedScene(scene), options);
+  }
+  /// input_fingerprint() of `scene` prepared for this one call.
+  [[nodiscard]] std::string input_fingerprint(const cases::Scene& scene) const {
+    return input_fingerprint(PreparedScene(scene));
+  }
 };
 
 /// Which external programs the reference engines drive (docs/user-guide.md, "Choosing the
@@ -64,10 +75,12 @@ struct ExternalPrograms {
 // The engines themselves are made by make_engine (reference/registry.hpp), the one place that
 // knows every driver: this header is what every engine and caller shares.
 
-/// Runs `engine` on `scene` with the common bookkeeping: `missing` when not installed,
-/// `n/a` with reasons when unsupported, `error` with the message when run() throws, and
-/// `error` when the trace holds a non-finite value. Sets engine name, version and wall time.
-cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene,
-                            const RunOptions& options);
+/// Runs `engine` on the prepared scene with the common bookkeeping: `missing` when not
+/// installed, `n/a` with reasons when unsupported, `error` with the message when run() throws,
+/// and `error` when the trace holds a non-finite value. Sets engine name, version and wall time.
+cases::RunResult run_engine(const Engine& engine, const PreparedScene& prepared, const RunOptions& options);
+
+/// run_engine on `scene` prepared for this one run.
+cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene, const RunOptions& options);
 
 }  // namespace reference

@@ -8,14 +8,14 @@
 #include <vector>
 
 #include "cases/run_result.hpp"
-#include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 
 namespace reference {
 
-/// Exact states of every particle of a scene at the given times (negative times: the motion
+/// Exact states of every particle of a prepared scene at the given times (negative times: the motion
 /// continued backwards). Throws std::invalid_argument with the reasons when the scene has no
 /// exact solution.
 using ExactStates =
-    std::function<std::vector<cases::Snapshot>(const cases::Scene& scene, const std::vector<double>& times)>;
+    std::function<std::vector<cases::Snapshot>(const PreparedScene& prepared, const std::vector<double>& times)>;
 
 }  // namespace reference

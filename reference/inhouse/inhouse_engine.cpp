@@ -98,7 +98,7 @@ cases::Snapshot snapshot(const dem::Simulation& sim) {
 }
 
 /// Gives a multi-step scheme exact states at t = −Δt, −2Δt, … from `exact` (the closed forms).
-void supply_exact_past(const cases::Scene& scene, const ExactStates& exact, dem::Simulation& sim) {
+void supply_exact_past(const PreparedScene& prepared, const ExactStates& exact, dem::Simulation& sim) {
   const std::size_t needed = sim.past_states_needed();
   if (needed == 0) return;
   if (!exact) {
@@ -110,7 +110,7 @@ void supply_exact_past(const cases::Scene& scene, const ExactStates& exact, dem:
   for (std::size_t k = 1; k <= needed; ++k) times.push_back(-static_cast<double>(k) * sim.timestep());
   std::vector<dem::KinematicState> past;
   try {
-    for (const auto& snap : exact(scene, times)) past.push_back(to_state(snap));
+    for (const auto& snap : exact(prepared, times)) past.push_back(to_state(snap));
   } catch (const std::invalid_argument& e) {
     throw std::runtime_error(
         std::string("integration.startup = \"exact\" needs the analytic solution of the scene, "
@@ -144,12 +144,13 @@ std::optional<std::string> InhouseEngine::version() const {
   return fmt::format("dem-workbench {} ({})", support::kVersion, support::kGitCommit);
 }
 
-Support InhouseEngine::supports(const cases::Scene&) const { return {}; }
+Support InhouseEngine::supports(const PreparedScene&) const { return {}; }
 
-cases::RunResult InhouseEngine::run(const cases::Scene& scene, const RunOptions& options) const {
-  const CoreSetup setup = core_setup(scene, options.threads);
+cases::RunResult InhouseEngine::run(const PreparedScene& prepared, const RunOptions& options) const {
+  const cases::Scene& scene = prepared.scene();
+  const CoreSetup setup = core_setup(prepared, options.threads);
   dem::Simulation sim(setup.simulation);
-  if (scene.integration.startup == dem::StartupPolicy::exact) supply_exact_past(scene, exact_, sim);
+  if (scene.integration.startup == dem::StartupPolicy::exact) supply_exact_past(prepared, exact_, sim);
   sim.watch(watched_contacts(scene));
 
   cases::RunResult result;

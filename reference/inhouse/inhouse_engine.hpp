@@ -12,6 +12,8 @@ namespace reference {
 /// it for the case's duration and records the requested traces and snapshots.
 class InhouseEngine final : public Engine {
  public:
+  using Engine::run;
+  using Engine::supports;
   /// The core without exact start-up data: a scene asking for `integration.startup = "exact"`
   /// fails with the reason.
   InhouseEngine() = default;
@@ -20,9 +22,8 @@ class InhouseEngine final : public Engine {
   explicit InhouseEngine(ExactStates exact) : exact_(std::move(exact)) {}
   [[nodiscard]] std::string_view name() const noexcept override { return "inhouse"; }
   [[nodiscard]] std::optional<std::string> version() const override;
-  [[nodiscard]] Support supports(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
-                                     const RunOptions& options) const override;
+  [[nodiscard]] Support supports(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared, const RunOptions& options) const override;
 
  private:
   ExactStates exact_;

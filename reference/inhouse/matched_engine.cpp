@@ -17,9 +17,9 @@ std::optional<std::string> MatchedInhouseEngine::version() const {
   return InhouseEngine().version();
 }
 
-Support MatchedInhouseEngine::supports(const cases::Scene& scene) const {
+Support MatchedInhouseEngine::supports(const PreparedScene& prepared) const {
   try {
-    static_cast<void>(conventions_.matched_scene(scene));
+    static_cast<void>(conventions_.matched_scene(prepared));
   } catch (const std::exception& e) {
     return Support{{std::string("no matched numerics for ") + code_ + ": " + e.what()}};
   }
@@ -46,8 +46,8 @@ bool nudge_start(cases::Scene& scene) {
 
 }  // namespace
 
-cases::RunResult MatchedInhouseEngine::run(const cases::Scene& scene, const RunOptions& options) const {
-  const cases::Scene matched = conventions_.matched_scene(scene);
+cases::RunResult MatchedInhouseEngine::run(const PreparedScene& prepared, const RunOptions& options) const {
+  const cases::Scene matched = conventions_.matched_scene(prepared);
   cases::RunResult result = InhouseEngine().run(matched, options);
   result.conventions["matched to"] = code_ + " (reference::matched_scene: its integrator, velocity "
                                              "convention, damping formula, friction-limit basis and "

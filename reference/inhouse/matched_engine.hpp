@@ -14,13 +14,14 @@ namespace reference {
 /// force model down to round-off (docs/engines.md, "Native and matched comparisons").
 class MatchedInhouseEngine final : public Engine {
  public:
+  using Engine::run;
+  using Engine::supports;
   /// The core matched to the code whose numerics `conventions` describe.
   explicit MatchedInhouseEngine(const CodeConventions& conventions);
   [[nodiscard]] std::string_view name() const noexcept override { return name_; }
   [[nodiscard]] std::optional<std::string> version() const override;
-  [[nodiscard]] Support supports(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
-                                     const RunOptions& options) const override;
+  [[nodiscard]] Support supports(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared, const RunOptions& options) const override;
 
  private:
   CodeConventions conventions_;

@@ -150,8 +150,7 @@ void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& 
 }
 
 /// `pair_style granular`, one `pair_coeff` per type pair, neighbour settings.
-void write_pairs(std::string& deck, const cases::Scene& scene, const AtomTypes& types) {
-  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+void write_pairs(std::string& deck, const cases::Scene& scene, const dem::PairTable& table, const AtomTypes& types) {
   line(deck, "pair_style", "granular");
   deck += "# explicit pair_coeff for every type pair: LAMMPS' own i-j mixing is never used\n";
   for (std::size_t a = 0; a < types.types.size(); ++a) {
@@ -172,9 +171,8 @@ void write_pairs(std::string& deck, const cases::Scene& scene, const AtomTypes& 
 }
 
 /// One `fix wall/gran granular` per (wall, mobile atom type): η depends on the type's mass.
-void write_walls(std::string& deck, const cases::Scene& scene, const AtomTypes& types) {
+void write_walls(std::string& deck, const cases::Scene& scene, const dem::PairTable& table, const AtomTypes& types) {
   if (scene.walls.empty()) return;
-  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
   deck += "# walls: parameters belong to the particle-wall interaction (E_in = 2(1-nu) E*, "
           "explicit k_t; lever arm r; delta = 0 counts as contact)\n";
   for (std::size_t t = 0; t < types.types.size(); ++t) {
@@ -203,16 +201,16 @@ void write_walls(std::string& deck, const cases::Scene& scene, const AtomTypes& 
 
 /// Pair-force store, walls, contact-force store, gravity, motion, integration, freeze (in that
 /// order) and the time step.
-void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
+void write_fixes(std::string& deck, const cases::Scene& scene, const dem::PairTable& table, const AtomTypes& types,
                  const DeckSettings& s) {
   const bool any_mobile = !types_where(types, false).empty();
   const bool any_fixed = !types_where(types, true).empty();
   if (s.timing_only) {
-    write_walls(deck, scene, types);
+    write_walls(deck, scene, table, types);
   } else {
     deck += "# the pair forces alone, stored before gravity is added and frozen atoms are zeroed\n";
     line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
-    write_walls(deck, scene, types);
+    write_walls(deck, scene, table, types);
   }
   if (!s.timing_only && !scene.walls.empty()) {
     deck += "# pair + wall forces (the wall force is the difference of the two stores)\n";
@@ -296,12 +294,17 @@ std::string wall_fix_id(std::size_t wall, std::size_t lammps_type) {
 }
 
 std::string write_deck(const cases::Scene& scene, const DeckSettings& settings) {
+  return write_deck(PreparedScene(scene), settings);
+}
+
+std::string write_deck(const PreparedScene& prepared, const DeckSettings& settings) {
+  const cases::Scene& scene = prepared.scene();
   const AtomTypes types = classify_particles(scene);
   std::string deck;
   write_header(deck, scene, settings);
   write_atoms(deck, scene, types, static_cast<double>(settings.steps) * settings.timestep, settings);
-  write_pairs(deck, scene, types);
-  write_fixes(deck, scene, types, settings);
+  write_pairs(deck, scene, prepared.pair_table(), types);
+  write_fixes(deck, scene, prepared.pair_table(), types, settings);
   if (settings.timing_only) {
     line(deck, "thermo", fmt::format("{}", std::max<std::uint64_t>(settings.steps, 1)));
   } else {

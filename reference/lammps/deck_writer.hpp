@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
 
@@ -42,6 +43,8 @@ std::string wall_fix_id(std::size_t wall, std::size_t lammps_type);
 /// by `fix print` (trace_print_plan); plane walls as `fix wall/gran granular` per mobile type;
 /// prescribed motion by `fix move variable`; snapshots by `dump custom` at cases::snapshot_steps().
 /// Throws std::invalid_argument when the model has a sub-model LAMMPS cannot express.
+std::string write_deck(const PreparedScene& prepared, const DeckSettings& settings);
+/// write_deck of a bare scene (the bench's and the tests' decks), prepared for this one deck.
 std::string write_deck(const cases::Scene& scene, const DeckSettings& settings);
 
 /// The LAMMPS data file of a large scene (atoms_in_data_file): the box of simulation_box(), and

@@ -54,7 +54,8 @@ std::string LammpsEngine::location() const {
   return fmt::format("'{}' not found (choose the binary with --lammps PATH or DEMWB_LAMMPS)", options_.program);
 }
 
-Support LammpsEngine::supports(const cases::Scene& scene) const {
+Support LammpsEngine::supports(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   Support s;
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     for (auto& reason : lammps::unmapped_wall(scene.walls[w], w)) s.reasons.push_back(reason);
@@ -110,7 +111,7 @@ Support LammpsEngine::supports(const cases::Scene& scene) const {
     }
   }
   try {
-    const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+    const dem::PairTable& table = prepared.pair_table();
     if (table.material_count() > 0) {
       // The sub-model types are global, but whether a pair maps can depend on its values (a JKR
       // pair with γ = 0 is plain Hertz, which a wall can take): check every pair of materials
@@ -149,11 +150,12 @@ lammps::DeckSettings LammpsEngine::deck_settings(const cases::Scene& scene, doub
   return settings;
 }
 
-std::string LammpsEngine::input_fingerprint(const cases::Scene& scene) const {
-  if (!supports(scene).supported()) return {};
+std::string LammpsEngine::input_fingerprint(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
+  if (!supports(prepared).supported()) return {};
   try {
-    const lammps::DeckSettings settings = deck_settings(scene, core_setup(scene).simulation.timestep);
-    std::string input = lammps::write_deck(scene, settings);
+    const lammps::DeckSettings settings = deck_settings(scene, core_setup(prepared).simulation.timestep);
+    std::string input = lammps::write_deck(prepared, settings);
     if (lammps::atoms_in_data_file(scene)) input += "\n--- data file ---\n" + lammps::write_atom_data(scene, settings);
     return support::sha256_hex(input);
   } catch (const std::exception&) {
@@ -161,7 +163,8 @@ std::string LammpsEngine::input_fingerprint(const cases::Scene& scene) const {
   }
 }
 
-cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& options) const {
+cases::RunResult LammpsEngine::run(const PreparedScene& prepared, const RunOptions& options) const {
+  const cases::Scene& scene = prepared.scene();
   // The version probe counts against the run's time limit; a binary that hung on an empty input
   // is not given the deck.
   const lammps::LammpsProbe& checked = probe();
@@ -171,11 +174,11 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
     return failure(fmt::format("LAMMPS timed out: its version probe used the whole time limit ({:.3g} s)", options.timeout_s),
                    "");
   }
-  const CoreSetup setup = core_setup(scene);
+  const CoreSetup setup = core_setup(prepared);
   const lammps::DeckSettings settings = deck_settings(scene, setup.simulation.timestep);
   const double dt = settings.timestep;
   const std::uint64_t steps = settings.steps;
-  const std::string deck = lammps::write_deck(scene, settings);
+  const std::string deck = lammps::write_deck(prepared, settings);
 
   const std::filesystem::path dir = lammps::make_run_directory(options.work_dir);
   const support::OwnedPathGuard partial(dir);  // removed if interrupted mid-run
@@ -229,7 +232,7 @@ cases::RunResult LammpsEngine::run(const cases::Scene& scene, const RunOptions& 
   }
   result.status = cases::RunStatus::ok;
   result.conventions =
-      lammps::run_conventions(scene, dt, steps, outcome.version.value_or("unknown"));
+      lammps::run_conventions(prepared, dt, steps, outcome.version.value_or("unknown"));
   result.inexpressible_metrics = lammps::inexpressible_metrics(scene);
   result.scratch_dir = dir.string();
   return result;

@@ -23,6 +23,9 @@ struct LammpsOptions {
 /// spring–dashpot; other sub-models are reported as not mapped (n/a) with the reason.
 class LammpsEngine final : public Engine {
  public:
+  using Engine::input_fingerprint;
+  using Engine::run;
+  using Engine::supports;
   LammpsEngine() : LammpsEngine(LammpsOptions{}) {}
   /// An engine driving `options.program`.
   explicit LammpsEngine(LammpsOptions options) : options_(std::move(options)) {}
@@ -33,11 +36,10 @@ class LammpsEngine final : public Engine {
   [[nodiscard]] std::optional<std::string> version() const override;
   /// The binary's full path, or why it was not found.
   [[nodiscard]] std::string location() const override;
-  [[nodiscard]] Support supports(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
-                                     const RunOptions& options) const override;
+  [[nodiscard]] Support supports(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared, const RunOptions& options) const override;
   /// SHA-256 of the deck and, for a large scene, the data file run() would write.
-  [[nodiscard]] std::string input_fingerprint(const cases::Scene& scene) const override;
+  [[nodiscard]] std::string input_fingerprint(const PreparedScene& prepared) const override;
 
  private:
   /// The deck settings of `scene` run with time step `timestep` (the core's resolved one).

@@ -5,10 +5,11 @@
 
 namespace reference::lammps {
 
-cases::Scene matched_scene(const cases::Scene& scene) {
+cases::Scene matched_scene(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
   cases::Scene matched = scene;
   // fix nve/sphere (fix nve without rotation): velocity Verlet, forces with v(t + Δt/2).
-  matched.integration.timestep = core_setup(scene).simulation.timestep;
+  matched.integration.timestep = core_setup(prepared).simulation.timestep;
   matched.integration.scheme = dem::SchemeId::velocity_verlet;
   // pair granular's Coulomb cap: |F_ne + F_damp|, or |F_ne + 2 F_pulloff| for jkr/dmt.
   const bool adhesive = scene.model.cohesion == "jkr" || scene.model.cohesion == "dmt";

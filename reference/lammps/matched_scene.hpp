@@ -15,7 +15,7 @@ namespace reference::lammps {
 /// LAMMPS the core's own dashpot (η, or the Tsuji e_in whose factor is the core's). Not
 /// reproduced (documented in docs/engines.md (section LAMMPS)): the 1e-10 threshold of the
 /// history projection and the wall's δ = 0 contact onset.
-cases::Scene matched_scene(const cases::Scene& scene);
+cases::Scene matched_scene(const PreparedScene& prepared);
 
 /// LAMMPS's numerics as the matched engine "inhouse@lammps" adopts them (matched_scene above).
 [[nodiscard]] const CodeConventions& conventions() noexcept;

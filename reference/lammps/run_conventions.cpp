@@ -35,8 +35,7 @@ std::string model_mapping(const dem::ModelChoice& model) {
 }
 
 /// The pair_coeff of every type pair with how its damping and normal values were obtained.
-std::string coefficients_per_type_pair(const cases::Scene& scene, const AtomTypes& types) {
-  const dem::PairTable table(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+std::string coefficients_per_type_pair(const cases::Scene& scene, const dem::PairTable& table, const AtomTypes& types) {
   std::string out;
   for (std::size_t a = 0; a < types.types.size(); ++a) {
     for (std::size_t b = a; b < types.types.size(); ++b) {
@@ -56,9 +55,10 @@ bool has_jkr(const cases::Scene& scene) { return scene.model.cohesion == "jkr"; 
 
 }  // namespace
 
-std::map<std::string, std::string> run_conventions(const cases::Scene& scene, double dt,
+std::map<std::string, std::string> run_conventions(const PreparedScene& prepared, double dt,
                                                    std::uint64_t steps,
                                                    const std::string& version) {
+  const cases::Scene& scene = prepared.scene();
   const AtomTypes types = classify_particles(scene);
   std::map<std::string, std::string> c;
   std::string integrator = fmt::format(
@@ -85,7 +85,7 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, do
   c["atom types"] = fmt::format("{} type(s), one per (material, radius, fixed) class, so m* and "
                                 "η are exact per type pair",
                                 types.types.size());
-  c["damping"] = coefficients_per_type_pair(scene, types);
+  c["damping"] = coefficients_per_type_pair(scene, prepared.pair_table(), types);
   c["friction limit"] =
       has_jkr(scene) || scene.model.cohesion == "dmt"
           ? "LAMMPS: mu |F_ne + 2 F_pulloff| for jkr/dmt pairs (the dashpot not included), mu |F_ne + "

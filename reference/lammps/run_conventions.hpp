@@ -7,14 +7,15 @@
 #include <string>
 
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 
 namespace reference::lammps {
 
-/// The conventions and workarounds of a LAMMPS run of `scene`, for reports (RunResult::
+/// The conventions and workarounds of a LAMMPS run of the prepared scene, for reports (RunResult::
 /// conventions): integrator, time step, rotation, contact onset, fix freeze and m_eff, explicit
 /// pair coefficients, η per type pair, the registry's mapping text of each chosen sub-model, box,
 /// gravity, where each trace column comes from, output precision and version (the run directory is RunResult::scratch_dir).
-std::map<std::string, std::string> run_conventions(const cases::Scene& scene, double dt,
+std::map<std::string, std::string> run_conventions(const PreparedScene& prepared, double dt,
                                                    std::uint64_t steps,
                                                    const std::string& version);
 

@@ -36,7 +36,7 @@ cases::Scene two_body_scene(const cases::Scene& matched, const YadeCalibrationPl
 /// depends on no other engine (docs/architecture.md, "Layers").
 double rebound(cases::Scene s, const YadeCalibrationPlan& plan, double restitution) {
   s.materials[plan.material].restitution = restitution;
-  dem::Simulation sim(core_setup(s).simulation);
+  dem::Simulation sim(core_setup(PreparedScene(s)).simulation);
   const bool pair = s.particles.size() > 1;
   // Velocity of sphere `id` along the plan's normal, summed component by component.
   const auto along_normal = [&](std::uint32_t id) {

@@ -16,9 +16,10 @@ namespace reference::yade {
 /// contacts under gravity, v(0) otherwise), as leapfrog with given half-step velocities. The
 /// sub-models and policies are replaced by the variants the mapped YADE law computes
 /// (model_mapping.hpp).
-cases::Scene matched_scene(const cases::Scene& scene) {
+cases::Scene matched_scene(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
   cases::Scene matched = scene;
-  matched.integration.timestep = core_setup(scene).simulation.timestep;
+  matched.integration.timestep = core_setup(prepared).simulation.timestep;
   const StartVelocities start = start_velocities(scene, *matched.integration.timestep);
   for (std::size_t i = 0; i < matched.particles.size(); ++i) matched.particles[i].velocity = start.velocity[i];
   matched.integration.scheme = dem::SchemeId::leapfrog;
@@ -31,7 +32,7 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   // dashpot, which leaves out the linear cohesion the script adds as a separate force; Mindlin on
   // the magnitude of the whole normal force after the dashpot (and its clip), plus the DMT
   // adhesion force 4πR*γ when adhesive (HertzMindlin.cpp: maxFs = tanφ (F_ad + |F_n|)).
-  const YadeLaw law = map_contact_model(scene).law;
+  const YadeLaw law = map_contact_model(prepared).law;
   matched.model.friction_limit = law == YadeLaw::frict         ? dem::FrictionLimit::elastic
                                  : law == YadeLaw::frict_visco ? dem::FrictionLimit::elastic_damping
                                                                : dem::FrictionLimit::total_plus_pulloff;
@@ -60,7 +61,7 @@ cases::Scene matched_scene(const cases::Scene& scene) {
   matched.model.mindlin_form = dem::MindlinForm::incremental;
   // The native YADE run calibrates FrictViscoMat.betan (restitution_calibration.hpp); the core
   // repeats that calibration on its own replica and takes the ε' whose β(ε')/2 is that betan.
-  const YadeModelMapping mapping = map_contact_model(scene);
+  const YadeModelMapping mapping = map_contact_model(prepared);
   const auto calibration =
       plan_calibration(scene, mapping, cases::step_count(scene.integration.duration, *matched.integration.timestep));
   if (calibration) {

@@ -387,11 +387,12 @@ WallAxis wall_axis(const cases::Vector3& n) noexcept {
   return {};
 }
 
-YadeModelMapping map_contact_model(const cases::Scene& scene) {
+YadeModelMapping map_contact_model(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
   YadeModelMapping out;
-  std::optional<dem::PairTable> table;
+  const dem::PairTable* table = nullptr;
   try {
-    table.emplace(scene.materials, scene.mixing, scene.pair_overrides, scene.model);
+    table = &prepared.pair_table();
   } catch (const dem::ModelError& e) {
     out.reasons.push_back(fmt::format("YADE driver: the contact model cannot be built: {}", e.what()));
     return out;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 
 namespace reference::yade {
 
@@ -74,7 +75,7 @@ struct YadeModelMapping {
 
 /// Maps the scene's contact model (one small function per slot) and its plane walls. Never
 /// throws: a model the core cannot build gives a reason.
-YadeModelMapping map_contact_model(const cases::Scene& scene);
+YadeModelMapping map_contact_model(const PreparedScene& prepared);
 
 /// Pair damping ratio YADE forms from two FrictViscoMat.betan values (Ip2_FrictViscoMat_…:
 /// the mean when both are non-zero, else the non-zero one).

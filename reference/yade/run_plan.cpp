@@ -97,14 +97,15 @@ StartVelocities start_velocities(const cases::Scene& scene, double dt) {
   return out;
 }
 
-YadeRunPlan make_run_plan(const cases::Scene& scene) {
+YadeRunPlan make_run_plan(const PreparedScene& prepared) {
+  const cases::Scene& scene = prepared.scene();
   YadeRunPlan plan;
-  const CoreSetup setup = core_setup(scene);
+  const CoreSetup setup = core_setup(prepared);
   plan.timestep = setup.simulation.timestep;
   plan.steps = cases::step_count(scene.integration.duration, plan.timestep);
   plan.snapshot_iterations = snapshot_iterations(scene.output.snapshot_times, plan.timestep, plan.steps);
   plan.trace_columns = trace_columns(scene);
-  plan.model = map_contact_model(scene);
+  plan.model = map_contact_model(prepared);
   plan.calibration = plan_calibration(scene, plan.model, plan.steps);
   if (plan.model.viscous && plan.model.python_cohesion && scene.model.damping == "restitution") {
     // Without cohesion the driver calibrates betan on a two-body YADE run; the cohesion is a

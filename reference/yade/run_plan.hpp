@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cases/scene.hpp"
+#include "reference/common/prepared_scene.hpp"
 #include "reference/yade/model_mapping.hpp"
 #include "reference/yade/restitution_calibration.hpp"
 
@@ -30,7 +31,7 @@ struct YadeRunPlan {
 };
 
 /// Builds the plan. Throws dem::ModelError when the core cannot resolve the time step.
-YadeRunPlan make_run_plan(const cases::Scene& scene);
+YadeRunPlan make_run_plan(const PreparedScene& prepared);
 
 /// The trace columns of the scene, in the in-house engine's order (cases::trace_layout): time;
 /// per traced particle x y z vx vy vz wx wy wz fx fy fz; per traced pair and per traced

@@ -83,16 +83,17 @@ std::string YadeEngine::location() const {
   return launcher_.empty() ? where : fmt::format("{} → {}", launcher_, where);
 }
 
-Support YadeEngine::supports(const cases::Scene& scene) const {
+Support YadeEngine::supports(const PreparedScene& prepared) const {
   Support s;
-  s.reasons = yade::unsupported_scene_features(scene);
-  for (auto& r : yade::map_contact_model(scene).reasons) s.reasons.push_back(std::move(r));
+  s.reasons = yade::unsupported_scene_features(prepared.scene());
+  for (auto& r : yade::map_contact_model(prepared).reasons) s.reasons.push_back(std::move(r));
   return s;
 }
 
-std::string YadeEngine::input_fingerprint(const cases::Scene& scene) const {
+std::string YadeEngine::input_fingerprint(const PreparedScene& prepared) const {
+  const cases::Scene& scene = prepared.scene();
   try {
-    const yade::YadeRunPlan plan = yade::make_run_plan(scene);
+    const yade::YadeRunPlan plan = yade::make_run_plan(prepared);
     if (!plan.model.reasons.empty()) return {};
     return support::sha256_hex(yade::write_yade_script(scene, plan));
   } catch (const std::exception&) {
@@ -100,8 +101,9 @@ std::string YadeEngine::input_fingerprint(const cases::Scene& scene) const {
   }
 }
 
-cases::RunResult YadeEngine::run(const cases::Scene& scene, const RunOptions& options) const {
-  const yade::YadeRunPlan plan = yade::make_run_plan(scene);
+cases::RunResult YadeEngine::run(const PreparedScene& prepared, const RunOptions& options) const {
+  const cases::Scene& scene = prepared.scene();
+  const yade::YadeRunPlan plan = yade::make_run_plan(prepared);
   cases::RunResult result;
   result.status = cases::RunStatus::error;
   if (!plan.model.reasons.empty()) {

@@ -13,6 +13,9 @@ namespace reference {
 /// none/restitution, frictionless, fixed spheres, gravity.
 class YadeEngine final : public Engine {
  public:
+  using Engine::input_fingerprint;
+  using Engine::run;
+  using Engine::supports;
   /// The engine for the YADE found at `install` (the Debian layout by default).
   explicit YadeEngine(yade::YadeInstallation install = yade::default_yade_installation());
   /// The engine for the YADE whose launcher script is `program` (a path or a name in PATH); a
@@ -23,11 +26,10 @@ class YadeEngine final : public Engine {
   [[nodiscard]] std::optional<std::string> version() const override;
   /// The launcher, interpreter and module directory, or why YADE was not found.
   [[nodiscard]] std::string location() const override;
-  [[nodiscard]] Support supports(const cases::Scene& scene) const override;
-  [[nodiscard]] cases::RunResult run(const cases::Scene& scene,
-                                     const RunOptions& options) const override;
+  [[nodiscard]] Support supports(const PreparedScene& prepared) const override;
+  [[nodiscard]] cases::RunResult run(const PreparedScene& prepared, const RunOptions& options) const override;
   /// SHA-256 of the Python script run() would give YADE.
-  [[nodiscard]] std::string input_fingerprint(const cases::Scene& scene) const override;
+  [[nodiscard]] std::string input_fingerprint(const PreparedScene& prepared) const override;
 
  private:
   yade::YadeInstallation install_;

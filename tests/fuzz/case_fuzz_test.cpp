@@ -217,7 +217,7 @@ std::vector<std::string> run_problems(const cases::Scene& scene, bool& ran) {
     // LAMMPS cannot express every model: not a crash.
   }
   try {
-    const reference::yade::YadeRunPlan plan = reference::yade::make_run_plan(scene);
+    const reference::yade::YadeRunPlan plan = reference::yade::make_run_plan(reference::PreparedScene(scene));
     if (reference::yade::unsupported_scene_features(scene).empty() && plan.model.reasons.empty()) {
       const std::string script = reference::yade::write_yade_script(scene, plan);
       if (injected(script)) out.emplace_back("the YADE script holds a `shell` line");

@@ -52,14 +52,16 @@ TEST_P(AnalyticDampedCollision, DurationIsTheLinearContactDuration) {
   const double expected = dem::laws::linear_contact_duration(c.stiffness, mobile_mass(c), dashpot());
   EXPECT_NEAR(run().exact_metrics.at("contact_duration"), expected, 1e-12 * expected);
   // The located regime changes give the same duration.
-  const auto reduced = reference::analytic::reduce_scene(single_collision(c));
+  const cases::Scene scene = single_collision(c);
+  const auto reduced = reference::analytic::reduce_scene(reference::PreparedScene(scene));
   const auto episode = reference::analytic::first_contact(reduced.problem, 0, 1.0, 1.0);
   ASSERT_TRUE(episode.has_value());
   EXPECT_NEAR(episode->end - episode->start, expected, 1e-12 * expected);
 }
 
 TEST_P(AnalyticDampedCollision, ClosedFormsAgreeWithThePiecewiseSolution) {
-  const auto reduced = reference::analytic::reduce_scene(single_collision(parameters()));
+  const cases::Scene scene = single_collision(parameters());
+  const auto reduced = reference::analytic::reduce_scene(reference::PreparedScene(scene));
   auto episode = reference::analytic::first_contact(reduced.problem, 0, 1.0, 1.0);
   ASSERT_TRUE(episode.has_value());
   const auto closed = reference::analytic::contact_figures(reduced.problem, *episode);

@@ -7,6 +7,7 @@
 #include "analytic_scenes.hpp"
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
+#include "reference/registry.hpp"
 
 namespace analytic_inhouse_agreement_test {
 
@@ -34,7 +35,8 @@ TEST(AnalyticAndInhouse, ExactStartupLetsAdamsBashforthFollowTheSandwich) {
   scene.integration.scheme = dem::SchemeId::ab4;
   scene.integration.startup = dem::StartupPolicy::exact;
   const auto analytic = reference::run_engine(reference::AnalyticEngine{}, scene, {});
-  const auto inhouse = reference::run_engine(reference::InhouseEngine{}, scene, {});
+  // The registry's in-house engine is the one wired to the closed forms' exact states.
+  const auto inhouse = reference::run_engine(*reference::make_engine("inhouse"), scene, {});
   ASSERT_EQ(analytic.status, cases::RunStatus::ok) << analytic.reason;
   ASSERT_EQ(inhouse.status, cases::RunStatus::ok) << inhouse.reason;
   const double amplitude = c.speed / std::sqrt(c.stiffness / mobile_mass(c));
@@ -44,6 +46,16 @@ TEST(AnalyticAndInhouse, ExactStartupLetsAdamsBashforthFollowTheSandwich) {
   for (std::size_t k = 0; k < exact.size(); ++k) {
     EXPECT_NEAR(numeric[k], exact[k], 1e-4 * amplitude) << "row " << k;
   }
+}
+
+TEST(AnalyticAndInhouse, AnInhouseEngineWithoutExactStatesSaysWhereToGetThem) {
+  cases::Scene scene = demwb_test::sandwich(CollisionParameters{});
+  scene.integration.scheme = dem::SchemeId::ab4;
+  scene.integration.startup = dem::StartupPolicy::exact;
+  const auto bare = reference::run_engine(reference::InhouseEngine{}, scene, {});
+  EXPECT_EQ(bare.status, cases::RunStatus::error);
+  EXPECT_NE(bare.reason.find("integration.startup = \"exact\""), std::string::npos) << bare.reason;
+  EXPECT_NE(bare.reason.find("make_engine(\"inhouse\")"), std::string::npos) << bare.reason;
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ TEST(AnalyticSandwich, ExactStatesBeforeTheStartContinueTheOscillation) {
   const double omega = angular_frequency(c);
   const double amplitude = c.speed / omega;
   const std::vector<double> times{-c.timestep, -2.0 * c.timestep, -1e-3};
-  const auto states = reference::exact_states(scene, times);
+  const auto states = reference::exact_states(reference::PreparedScene(scene), times);
   ASSERT_EQ(states.size(), times.size());
   for (std::size_t k = 0; k < times.size(); ++k) {
     const double t = times[k];
@@ -212,7 +212,7 @@ TEST_P(AnalyticPiecewiseSolution, AgreesWithEventAwareRk4AcrossManyRegimeChanges
   cases::Scene scene = sandwich(c);
   scene.particles[1].position[0] += GetParam().preload;
   scene.particles[2].position[0] -= GetParam().preload;
-  const auto reduced = reference::analytic::reduce_scene(scene);
+  const auto reduced = reference::analytic::reduce_scene(reference::PreparedScene(scene));
   const double t_end = 3e-3;
   const reference::analytic::AxisSolution exact(reduced.problem, 0.0, t_end);
   std::size_t double_contact_regimes = 0;

@@ -140,7 +140,7 @@ TEST(AnalyticCollision, ContactStartBetweenSamplesIsGapOverSpeed) {
   CollisionParameters c;
   c.free_motion_steps = 10.5;
   const cases::Scene scene = single_collision(c);
-  const auto reduced = reference::analytic::reduce_scene(scene);
+  const auto reduced = reference::analytic::reduce_scene(reference::PreparedScene(scene));
   const auto episode = reference::analytic::first_contact(reduced.problem, 0, 1.0, 1.0);
   ASSERT_TRUE(episode.has_value());
   const double gap = scene.particles[1].position[0] - (c.radius_p + c.radius_q);
@@ -163,7 +163,8 @@ TEST(AnalyticCollision, ContactStartBetweenSamplesIsGapOverSpeed) {
 
 TEST(AnalyticCollision, PiecewiseMeasureAgreesWithClosedForms) {
   const CollisionParameters c;
-  const auto reduced = reference::analytic::reduce_scene(single_collision(c));
+  const cases::Scene scene = single_collision(c);
+  const auto reduced = reference::analytic::reduce_scene(reference::PreparedScene(scene));
   auto episode = reference::analytic::first_contact(reduced.problem, 0, 1.0, 1.0);
   ASSERT_TRUE(episode.has_value());
   const auto closed = reference::analytic::contact_figures(reduced.problem, *episode);
@@ -212,7 +213,7 @@ TEST(AnalyticCollision, FastSphereTunnelsThroughTheCentreAndLeavesAtFullSpeed) {
   const cases::Scene scene = single_collision(c);
   const double m = mobile_mass(c);
   const double reach = c.radius_p + c.radius_q;
-  const auto reduced = reference::analytic::reduce_scene(scene);
+  const auto reduced = reference::analytic::reduce_scene(reference::PreparedScene(scene));
   const reference::analytic::AxisSolution solution(reduced.problem, 0.0, 8e-4);
   const auto& segments = solution.segments();
   ASSERT_EQ(segments.size(), 4u);  // flight, near side, far side, flight

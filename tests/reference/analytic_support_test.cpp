@@ -190,7 +190,7 @@ TEST(AnalyticSupport, ExactStatesThrowInvalidArgumentWithTheReasons) {
   scene.model.normal = "hertz";
   scene.gravity = {0.0, 0.0, -9.81};
   try {
-    static_cast<void>(reference::exact_states(scene, {-1e-5}));
+    static_cast<void>(reference::exact_states(reference::PreparedScene(scene), {-1e-5}));
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();

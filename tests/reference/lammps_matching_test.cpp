@@ -26,7 +26,7 @@ TEST(MatchedScene, PinsAnAutomaticTimestepToTheValueTheCaseResolvesTo) {
   scene.integration.timestep.reset();
   const cases::Scene matched = reference::matched_scene(scene, "lammps");
   ASSERT_TRUE(matched.integration.timestep.has_value());
-  EXPECT_EQ(*matched.integration.timestep, reference::core_setup(scene).simulation.timestep);
+  EXPECT_EQ(*matched.integration.timestep, reference::core_setup(reference::PreparedScene(scene)).simulation.timestep);
 }
 
 TEST(MatchedScene, RejectsAnEngineWithoutAMatchedVariant) {

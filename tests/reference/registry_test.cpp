@@ -38,4 +38,16 @@ TEST(EngineRegistry, MatchedEnginesExistForTheirCodesAndUnknownNamesGiveNone) {
   EXPECT_EQ(reference::make_engine("inhouse@gromacs"), nullptr);
 }
 
+TEST(EngineRegistry, OnlyReferenceCodesExportConventionsAndEachNamesItsOwnCode) {
+  for (const char* code : {"lammps", "yade"}) {
+    const reference::CodeConventions* c = reference::code_conventions(code);
+    ASSERT_NE(c, nullptr) << code;
+    EXPECT_EQ(c->code, code);
+    EXPECT_NE(c->matched_scene, nullptr) << code;
+  }
+  EXPECT_EQ(reference::code_conventions("inhouse"), nullptr);
+  EXPECT_EQ(reference::code_conventions("analytic"), nullptr);
+  EXPECT_EQ(reference::code_conventions("gromacs"), nullptr);
+}
+
 }  // namespace

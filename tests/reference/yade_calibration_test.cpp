@@ -21,7 +21,7 @@ const std::filesystem::path kData = std::filesystem::path(DEMWB_TEST_DATA_DIR) /
 
 TEST(YadeCalibration, NativeWallImpactCalibratesTheSphereMaterialAgainstTheWall) {
   const auto scene = cases::load_case(kCanonical / "oblique_wall_impact.toml");
-  const auto plan = reference::yade::make_run_plan(scene);
+  const auto plan = reference::yade::make_run_plan(reference::PreparedScene(scene));
   ASSERT_TRUE(plan.calibration);
   EXPECT_EQ(plan.calibration->material, 0u);
   EXPECT_EQ(plan.calibration->target, 0.8);
@@ -37,13 +37,14 @@ TEST(YadeCalibration, NativeWallImpactCalibratesTheSphereMaterialAgainstTheWall)
 TEST(YadeCalibration, YadesOwnDampingAndUndampedCasesAreNotCalibrated) {
   auto scene = cases::load_case(kCanonical / "oblique_wall_impact.toml");
   scene.model.damping = "yade_frictvisco";
-  EXPECT_FALSE(reference::yade::make_run_plan(scene).calibration);
-  EXPECT_FALSE(reference::yade::make_run_plan(cases::load_case(kCanonical / "single_collision.toml")).calibration);
+  EXPECT_FALSE(reference::yade::make_run_plan(reference::PreparedScene(scene)).calibration);
+  const cases::Scene single = cases::load_case(kCanonical / "single_collision.toml");
+  EXPECT_FALSE(reference::yade::make_run_plan(reference::PreparedScene(single)).calibration);
 }
 
 TEST(YadeCalibration, ParsesTheCapturedTableAndTakesTheLastRowAsChosen) {
   const auto scene = cases::load_case(kCanonical / "oblique_wall_impact.toml");
-  const auto plan = reference::yade::make_run_plan(scene);
+  const auto plan = reference::yade::make_run_plan(reference::PreparedScene(scene));
   const auto c = reference::yade::parse_calibration_csv(
       support::read_file(kData / "oblique_wall_calibration.csv"), *plan.calibration);
   EXPECT_EQ(c.samples.size(), 5u);

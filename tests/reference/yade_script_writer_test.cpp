@@ -65,7 +65,7 @@ bool contains(const std::string& text, const std::string& what) {
 
 TEST(YadeScriptWriter, SetsGlobalDampingToZeroAndRecordsBeforeTheIntegrator) {
   const cases::Scene scene = two_material_scene();
-  const std::string s = write_yade_script(scene, make_run_plan(scene));
+  const std::string s = write_yade_script(scene, make_run_plan(reference::PreparedScene(scene)));
   EXPECT_TRUE(contains(s, "NewtonIntegrator(damping=0.0, gravity=GRAVITY)"));
   EXPECT_TRUE(contains(s, "GRAVITY = Vector3(0.0, 0.0, -9.81)"));
   const auto law = s.find("InteractionLoop(");
@@ -84,7 +84,7 @@ TEST(YadeScriptWriter, SetsGlobalDampingToZeroAndRecordsBeforeTheIntegrator) {
 
 TEST(YadeScriptWriter, WritesEveryMaterialPairStiffnessFromThePairTable) {
   const cases::Scene scene = two_material_scene();
-  const std::string s = write_yade_script(scene, make_run_plan(scene));
+  const std::string s = write_yade_script(scene, make_run_plan(reference::PreparedScene(scene)));
   // harmonic mix 2·1e5·3e5/(4e5) for the mixed pair
   EXPECT_TRUE(contains(s, "KN = MatchMaker(matches=((0, 0, 100000.0), (0, 1, 150000.0), (1, 1, "
                           "300000.0), ), algo='val', val=float('nan'))"));
@@ -96,7 +96,7 @@ TEST(YadeScriptWriter, WritesEveryMaterialPairStiffnessFromThePairTable) {
 
 TEST(YadeScriptWriter, GivesTheWorkbenchMassAndHalfStepStartVelocity) {
   const cases::Scene scene = two_material_scene();
-  const std::string s = write_yade_script(scene, make_run_plan(scene));
+  const std::string s = write_yade_script(scene, make_run_plan(reference::PreparedScene(scene)));
   const double m = dem::sphere_mass(1000.0, 0.01);
   // Free of contacts at t = 0 with gravity: v(−Δt/2) = v(0) − Δt/2·g.
   EXPECT_TRUE(contains(s, "(0.01, 0, Vector3(0.0, 0.0, 0.05), Vector3(0.1, 0.0, " +
@@ -111,14 +111,14 @@ TEST(YadeScriptWriter, MatchedSceneKeepsTheGivenVelocityAsHalfStep) {
   cases::Scene scene = two_material_scene();
   scene.integration.scheme = dem::SchemeId::leapfrog;
   scene.integration.leapfrog_start = dem::LeapfrogStart::given_is_half_step;
-  const auto plan = make_run_plan(scene);
+  const auto plan = make_run_plan(reference::PreparedScene(scene));
   EXPECT_EQ(plan.start_velocities[0][2], -1.0);
   EXPECT_TRUE(contains(plan.conventions.at("start velocity"), "unchanged"));
 }
 
 TEST(YadeScriptWriter, NeverUsesTheLauncherOrItsServers) {
   const cases::Scene scene = two_material_scene();
-  const std::string s = write_yade_script(scene, make_run_plan(scene)) +
+  const std::string s = write_yade_script(scene, make_run_plan(reference::PreparedScene(scene))) +
                         reference::yade::yade_runner_script("/usr/lib/x86_64-linux-gnu/yade-double/py");
   for (const char* forbidden : {"/usr/bin/yade", "yade -", "yade.remote", "runServers", "xmlrpc", "socket"}) {
     EXPECT_FALSE(contains(s, forbidden)) << forbidden;
@@ -130,7 +130,7 @@ TEST(YadeScriptWriter, NeverUsesTheLauncherOrItsServers) {
 
 TEST(YadeScriptWriter, IsAPureFunctionOfSceneAndPlan) {
   const cases::Scene scene = two_material_scene();
-  EXPECT_EQ(write_yade_script(scene, make_run_plan(scene)), write_yade_script(scene, make_run_plan(scene)));
+  EXPECT_EQ(write_yade_script(scene, make_run_plan(reference::PreparedScene(scene))), write_yade_script(scene, make_run_plan(reference::PreparedScene(scene))));
 }
 
 TEST(YadeScriptWriter, RestitutionUsesFrictViscoWithHalfTheCoreDampingFactor) {
@@ -138,7 +138,7 @@ TEST(YadeScriptWriter, RestitutionUsesFrictViscoWithHalfTheCoreDampingFactor) {
   scene.model.damping = "restitution";
   scene.materials[0].restitution = 0.5;
   scene.materials[1].restitution = 0.5;
-  const auto plan = make_run_plan(scene);
+  const auto plan = make_run_plan(reference::PreparedScene(scene));
   ASSERT_TRUE(plan.model.reasons.empty());
   const std::string s = write_yade_script(scene, plan);
   const double ln = std::log(0.5);
@@ -153,7 +153,7 @@ TEST(YadeScriptWriter, RestitutionUsesFrictViscoWithHalfTheCoreDampingFactor) {
 TEST(YadeScriptWriter, PlaneWallBecomesAnAxisAlignedYadeWallWithItsOwnMaterial) {
   const cases::Scene scene = cases::load_case(std::filesystem::path(DEMWB_SOURCE_DIR) /
                                               "cases/canonical/oblique_wall_impact.toml");
-  const auto plan = make_run_plan(scene);
+  const auto plan = make_run_plan(reference::PreparedScene(scene));
   ASSERT_TRUE(plan.model.reasons.empty());
   const std::string s = write_yade_script(scene, plan);
   EXPECT_TRUE(contains(s, "    (0.0, 2, 1, 0),\n"));  // z = 0, axis z, sense +1, material 0
@@ -169,7 +169,7 @@ TEST(YadeScriptWriter, PlaneWallBecomesAnAxisAlignedYadeWallWithItsOwnMaterial) 
 TEST(YadeScriptWriter, HertzUsesMindlinWithTheCaseModuli) {
   const cases::Scene scene = cases::load_case(std::filesystem::path(DEMWB_SOURCE_DIR) /
                                               "cases/canonical/hertz_collision.toml");
-  const auto plan = make_run_plan(scene);
+  const auto plan = make_run_plan(reference::PreparedScene(scene));
   ASSERT_TRUE(plan.model.reasons.empty());
   const std::string s = write_yade_script(scene, plan);
   EXPECT_TRUE(contains(s, "('agglomerate', 8000.0, 84000000.0, 0.3, 0.0),"));

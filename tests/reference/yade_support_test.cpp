@@ -119,7 +119,7 @@ TEST(YadeSupport, HertzAgainstAWallIsMappedWithoutFrictionAndRefusedWithIt) {
   floor.point = {0.0, 0.0, -1.0};
   scene.walls.push_back(floor);
   EXPECT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
-  const auto mapping = reference::yade::map_contact_model(scene);
+  const auto mapping = reference::yade::map_contact_model(reference::PreparedScene(scene));
   ASSERT_EQ(mapping.wall_materials.size(), 1U);
   ASSERT_EQ(mapping.wall_material_ids.size(), 1U);
   EXPECT_EQ(mapping.wall_material_ids[0], scene.materials.size());  // its own O.materials entry
@@ -136,7 +136,7 @@ TEST(YadeSupport, TsujiMapsOnlyWhenTheNormalForceIsClipped) {
   const auto unclipped = offline_engine().supports(scene);
   EXPECT_TRUE(mentions(unclipped, "clips the normal force")) << unclipped.explain();
   scene.model.clamp_tensile = true;
-  const auto mapping = reference::yade::map_contact_model(scene);
+  const auto mapping = reference::yade::map_contact_model(reference::PreparedScene(scene));
   ASSERT_TRUE(mapping.reasons.empty()) << mapping.reasons.front();
   ASSERT_FALSE(mapping.pairs.empty());
   // β_n = α/(2√1.5), α = −√5 ln ε/√(π² + ln² ε) for the case's ε = 0.5.
@@ -163,7 +163,7 @@ TEST(YadeSupport, RestitutionIsMappedWithTheAlphaWarning) {
   cases::Scene scene = cases::load_case(kCanonical / "single_collision.toml");
   scene.model.damping = "restitution";
   scene.materials[0].restitution = 0.5;
-  const auto m = reference::yade::map_contact_model(scene);
+  const auto m = reference::yade::map_contact_model(reference::PreparedScene(scene));
   EXPECT_TRUE(m.reasons.empty());
   EXPECT_TRUE(m.viscous);
   ASSERT_EQ(m.warnings.size(), 1u);
@@ -242,7 +242,7 @@ TEST(YadeSupport, LinearAgglomerateWithANonCohesiveWallIsMappedWithYadesFriction
   const cases::Scene scene = cases::load_case(kEnsembles / "agglomerate_linear_yade.toml");
   const auto s = offline_engine().supports(scene);
   EXPECT_TRUE(s.supported()) << s.explain();
-  const auto m = reference::yade::map_contact_model(scene);
+  const auto m = reference::yade::map_contact_model(reference::PreparedScene(scene));
   EXPECT_TRUE(m.python_cohesion);
   EXPECT_NE(m.conventions.at("friction limit").find("elastic + damping"), std::string::npos);
   for (const auto& w : m.warnings) EXPECT_EQ(w.find("friction limit:"), std::string::npos) << w;
@@ -257,7 +257,7 @@ TEST(YadeSupport, TotalFrictionBasisWithPythonCohesionIsFlagged) {
   // The core's `total` basis includes the cohesive pull, which YADE's cap never sees.
   cases::Scene scene = cases::load_case(kEnsembles / "agglomerate_linear_yade.toml");
   scene.model.friction_limit = dem::FrictionLimit::total;
-  const auto m = reference::yade::map_contact_model(scene);
+  const auto m = reference::yade::map_contact_model(reference::PreparedScene(scene));
   bool flagged = false;
   for (const auto& w : m.warnings) flagged = flagged || w.find("friction limit: YADE caps with the elastic + damping") != std::string::npos;
   EXPECT_TRUE(flagged);
@@ -268,12 +268,13 @@ TEST(YadeSupport, LinearCohesionRestitutionIsAStatedConventionGap) {
   // restitution is n/a with the reason, the other metrics of the case are compared.
   const cases::Scene scene = cases::load_case(kCanonical / "linear_cohesion_pair.toml");
   ASSERT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
-  const auto plan = reference::yade::make_run_plan(scene);
+  const auto plan = reference::yade::make_run_plan(reference::PreparedScene(scene));
   EXPECT_FALSE(plan.calibration.has_value());
   ASSERT_EQ(plan.inexpressible_metrics.size(), 1U);
   EXPECT_NE(plan.inexpressible_metrics.at("restitution").find("known convention gap"), std::string::npos);
   // Without cohesion the same dashpot is calibrated and nothing is declared.
-  const auto single = reference::yade::make_run_plan(cases::load_case(kCanonical / "single_collision.toml"));
+  const cases::Scene single_scene = cases::load_case(kCanonical / "single_collision.toml");
+  const auto single = reference::yade::make_run_plan(reference::PreparedScene(single_scene));
   EXPECT_TRUE(single.inexpressible_metrics.empty());
 }
 
