@@ -58,6 +58,18 @@ constexpr std::array kMetrics{
     MetricInfo{"fragments", "-", "fragments at the end (spheres joined while their law still acts; a lone sphere is one)", false, false},
     MetricInfo{"coordination_before", "-", "2 × body contacts / spheres of the formed agglomerate", false, false},
     MetricInfo{"coordination_after", "-", "2 × body contacts / spheres at the end", false, false},
+    MetricInfo{"packing_fraction", "-",
+               "volume of the mobile spheres inside the compare.packing region (each clipped at its faces) / the "
+               "region's volume, at the last snapshot", false, false},
+    MetricInfo{"packing_fraction_interior", "-",
+               "packing_fraction of the region shrunk by compare.packing.interior_margin on every side (default "
+               "two mean diameters), away from the walls' ordering", false, false},
+    MetricInfo{"orf", "-",
+               "obscured reservoir fraction, thesis appendix G: share of a grid over the region's y–z face covered "
+               "by mobile spheres whose centres lie in the region, seen along x, at the last snapshot", false, false},
+    MetricInfo{"dose_remaining", "-",
+               "share of the mobile spheres whose centres lie in the compare.packing region, at the last snapshot",
+               false, false},
     MetricInfo{"cohesive_work", "J",
                "work to separate two mean-size spheres from their force-free contact until cohesion ends (thesis fig. 5.15)", false, false},
 };

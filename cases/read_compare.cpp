@@ -12,6 +12,7 @@
 #include "cases/catalogue.hpp"
 #include "cases/excerpt.hpp"
 #include "cases/loader_sections.hpp"
+#include "cases/packing_region.hpp"
 #include "cases/suggestion.hpp"
 #include "cases/trace.hpp"
 
@@ -20,7 +21,12 @@ namespace {
 
 constexpr auto kCompareKeys = std::to_array<std::string_view>(
     {"engines", "reference", "subject", "pair", "wall_contact", "metrics", "tolerances", "matched",
-     "matched_tolerances"});
+     "matched_tolerances", "packing"});
+
+constexpr auto kPackingKeys = std::to_array<std::string_view>({"min", "max", "interior_margin", "orf_grid"});
+
+/// Most ORF grid points along one axis (the thesis uses 45 × 15).
+constexpr std::int64_t kMaxOrfPoints = 10000;
 
 constexpr auto kOutputKeys = std::to_array<std::string_view>(
     {"trace_every", "trace_particles", "trace_pairs", "trace_walls", "trace_energy",
@@ -259,6 +265,56 @@ std::vector<double> read_snapshot_times(const Table& table, const Scene& scene) 
   return out;
 }
 
+/// [compare.packing]: the region of the packing metrics, required when one is listed.
+std::optional<PackingSpec> read_packing(const Table& table, const Scene& scene, const std::vector<std::string>& metrics) {
+  const auto value = table.find("packing");
+  const auto listed = std::find_if(metrics.begin(), metrics.end(), [](const std::string& m) { return is_packing_metric(m); });
+  if (!value) {
+    if (listed != metrics.end()) {
+      table.fail("metrics", fmt::format("metric '{}' is measured in a region: add [compare.packing] with min and max "
+                                        "(its lower and upper corners, m)",
+                                        *listed));
+    }
+    return std::nullopt;
+  }
+  const Table t = value->table();
+  t.allow_only(kPackingKeys);
+  PackingSpec p;
+  p.min = t.require("min").vector3();
+  p.max = t.require("max").vector3();
+  constexpr std::array<char, 3> kAxes{'x', 'y', 'z'};
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!(p.max[k] > p.min[k])) {
+      t.fail("max", fmt::format("must lie above compare.packing.min on every axis; along {} it is {} against {}",
+                                kAxes[k], p.max[k], p.min[k]));
+    }
+  }
+  if (const auto m = t.find("interior_margin")) {
+    p.interior_margin = m->number(dem::ValueRange{0.0, std::numeric_limits<double>::infinity(), false, true});
+  }
+  if (const auto g = t.find("orf_grid")) {
+    const std::vector<Value> items = g->elements();
+    if (items.size() != 2) g->fail(fmt::format("expected [points along y, points along z], got {} values", items.size()));
+    p.orf_ny = static_cast<std::size_t>(items[0].integer(1, kMaxOrfPoints));
+    p.orf_nz = static_cast<std::size_t>(items[1].integer(1, kMaxOrfPoints));
+  }
+  if (std::find(metrics.begin(), metrics.end(), "packing_fraction_interior") != metrics.end()) {
+    Scene with = scene;
+    with.compare.packing = p;
+    const double margin = interior_margin(with);
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (!(p.max[k] - p.min[k] > 2.0 * margin)) {
+        t.fail(p.interior_margin ? "interior_margin" : "max",
+               fmt::format("leaves no interior: the region is {} m wide along {}, and the margin {} m{} comes off both "
+                           "sides",
+                           p.max[k] - p.min[k], kAxes[k], margin,
+                           p.interior_margin ? "" : " (two mean diameters of the mobile spheres)"));
+      }
+    }
+  }
+  return p;
+}
+
 }  // namespace
 
 void read_compare(const Table& root, Scene& scene) {
@@ -281,6 +337,7 @@ void read_compare(const Table& root, Scene& scene) {
   spec.tolerances = read_tolerances(table, spec.metrics);
   spec.matched = read_matched(table, spec.engines);
   spec.matched_tolerances = read_tolerances(table, spec.metrics, "matched_tolerances");
+  spec.packing = read_packing(table, scene, spec.metrics);
 }
 
 void read_output(const Table& root, Scene& scene) {
@@ -313,6 +370,14 @@ void read_output(const Table& root, Scene& scene) {
     std::sort(spec.snapshot_times.begin(), spec.snapshot_times.end());
     spec.snapshot_times.erase(std::unique(spec.snapshot_times.begin(), spec.snapshot_times.end()),
                               spec.snapshot_times.end());
+  }
+  // The packing metrics read the last snapshot.
+  for (const std::string& m : scene.compare.metrics) {
+    if (is_packing_metric(m) && spec.snapshot_times.empty()) {
+      table.fail("snapshot_times", fmt::format("metric '{}' reads the last snapshot: list output.snapshot_times "
+                                               "(e.g. the end of the run) or give output.snapshot_every",
+                                               m));
+    }
   }
   if (const auto v = table.find("trace_aggregates")) {
     std::vector<std::string_view> known(std::begin(kAggregateQuantities), std::end(kAggregateQuantities));

@@ -18,7 +18,7 @@ namespace {
 
 constexpr auto kPlaneKeys =
     std::to_array<std::string_view>({"type", "name", "point", "normal", "material", "velocity", "rigid"});
-constexpr auto kBoxKeys =
+constexpr auto kBoxWallKeys =
     std::to_array<std::string_view>({"type", "name", "min", "max", "material", "open_faces", "rigid"});
 constexpr auto kWallTypes = std::to_array<std::string_view>({"plane", "box"});
 constexpr auto kBoxFaces = std::to_array<std::string_view>({"x-", "x+", "y-", "y+", "z-", "z+"});
@@ -56,7 +56,7 @@ WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
 
 /// The inner faces of an axis-aligned box, normals pointing inwards, minus the open ones.
 std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t index) {
-  t.allow_only(kBoxKeys);
+  t.allow_only(kBoxWallKeys);
   const std::string name = t.has("name") ? read_name(t.require("name")) : fmt::format("box{}", index);
   const Vector3 lo = t.require("min").vector3();
   const Vector3 hi = t.require("max").vector3();

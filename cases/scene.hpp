@@ -124,6 +124,16 @@ struct Tolerance {
   double abs = 0.0;
 };
 
+/// The region the packing metrics measure (docs/metrics.md, "Packing"): a reservoir, or the part
+/// of a box a pour fills.
+struct PackingSpec {
+  Vector3 min{};                          ///< lower corner [m]
+  Vector3 max{};                          ///< upper corner [m], above min on every axis
+  std::optional<double> interior_margin;  ///< [m]; empty: two mean diameters of the mobile spheres
+  std::size_t orf_ny = 45;                ///< ORF grid points along y (thesis fig. G.2: 45 × 15)
+  std::size_t orf_nz = 15;                ///< ORF grid points along z
+};
+
 /// How the engines' results are compared.
 struct CompareSpec {
   std::vector<std::string> engines;           ///< engines `demwb compare` runs by default
@@ -137,6 +147,7 @@ struct CompareSpec {
   /// compared with the code itself at matched tolerances).
   std::vector<std::string> matched;
   std::map<std::string, Tolerance> matched_tolerances;  ///< per metric, for matched rows
+  std::optional<PackingSpec> packing;  ///< the region of the packing metrics ([compare.packing])
 };
 
 /// Agglomerate formation, run by the core before any engine sees the scene (thesis §5.2.1): the

@@ -16,7 +16,7 @@ namespace {
 /// decelerations, spins and works; absolute for the dimensionless restitutions and amplitude
 /// error, and for the rebound angle (degrees, whose zero is not special); both for end-state
 /// velocity components.
-constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 22> kDefaults{{
+constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 26> kDefaults{{
     {"contact_duration", {1e-3, 0.0}},
     {"restitution", {0.0, 1e-3}},
     {"max_overlap", {1e-3, 0.0}},
@@ -42,6 +42,11 @@ constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 22> kDefault
     {"force_at_rupture", {1e-3, 0.0}},
     {"separation_work", {1e-3, 0.0}},
     {"equilibrium_overlap", {1e-3, 0.0}},
+    // Shares of a region (dimensionless, zero not special): absolute, like the restitutions.
+    {"packing_fraction", {0.0, 1e-3}},
+    {"packing_fraction_interior", {0.0, 1e-3}},
+    {"orf", {0.0, 1e-3}},
+    {"dose_remaining", {0.0, 1e-3}},
 }};
 
 const cases::RunResult* find_run(const std::vector<cases::RunResult>& runs,

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "compare/metrics_breakup_run.hpp"
+#include "compare/metrics_packing.hpp"
 #include "compare/metrics_cohesion.hpp"
 #include "compare/metrics_motion.hpp"
 #include "compare/trace_analysis.hpp"
@@ -287,6 +288,7 @@ double from_trace(const std::string& name, const cases::Scene& scene, const case
   if (const auto e = motion::end_state_metric(name, scene, trace)) return e->value_or_throw<MetricProblem>();
   if (const auto c = cohesion_metric(name, scene, trace)) return c->value ? *c->value : throw MetricProblem(c->problem);
   if (const auto b = breakup_metric(name, scene, run)) return b->value ? *b->value : throw MetricProblem(b->problem);
+  if (const auto p = packing_metric(name, scene, run)) return p->value ? *p->value : throw MetricProblem(p->problem);
   throw MetricProblem(fmt::format("no implementation of metric '{}'", name));
 }
 

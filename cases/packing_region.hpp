@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The packing metrics' region of a scene ([compare.packing]) and what they need of it.
+
+#include <array>
+#include <string_view>
+
+#include "cases/scene.hpp"
+
+namespace cases {
+
+/// The metrics measured in compare.packing's region (docs/metrics.md, "Packing").
+inline constexpr std::array<std::string_view, 4> kPackingMetrics{"packing_fraction", "packing_fraction_interior",
+                                                                 "orf", "dose_remaining"};
+
+/// True when `metric` is one of kPackingMetrics.
+[[nodiscard]] bool is_packing_metric(std::string_view metric) noexcept;
+
+/// The interior margin of the scene's packing region: compare.packing.interior_margin, else two
+/// mean diameters of the mobile spheres (of all spheres when none is mobile).
+[[nodiscard]] double interior_margin(const Scene& scene) noexcept;
+
+}  // namespace cases

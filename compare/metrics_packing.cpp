@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+#include "compare/metrics_packing.hpp"
+
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cases/packing_region.hpp"
+#include "compare/packing_geometry.hpp"
+
+namespace comparison {
+
+std::optional<CohesionMetric> packing_metric(const std::string& name, const cases::Scene& scene,
+                                             const cases::RunResult& run) {
+  if (!cases::is_packing_metric(name)) return std::nullopt;
+  if (!scene.compare.packing) return CohesionMetric{std::nullopt, "the case has no [compare.packing] region"};
+  if (run.snapshots.empty()) {
+    return CohesionMetric{std::nullopt, "the run has no snapshot (output.snapshot_times)"};
+  }
+  const cases::Snapshot& last = run.snapshots.back();
+  if (last.position.size() != scene.particles.size()) {
+    return CohesionMetric{std::nullopt, fmt::format("the last snapshot holds {} spheres, the scene {}",
+                                                    last.position.size(), scene.particles.size())};
+  }
+  std::vector<cases::Vector3> centres;
+  std::vector<double> radii;
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    if (scene.particles[i].fixed) continue;
+    centres.push_back(last.position[i]);
+    radii.push_back(scene.particles[i].radius);
+  }
+  const cases::PackingSpec& spec = *scene.compare.packing;
+  const Box region{spec.min, spec.max};
+  try {
+    if (name == "packing_fraction") return CohesionMetric{packing_fraction(centres, radii, region), ""};
+    if (name == "packing_fraction_interior") {
+      return CohesionMetric{packing_fraction(centres, radii, interior(region, cases::interior_margin(scene))), ""};
+    }
+    if (name == "orf") return CohesionMetric{obscured_fraction(centres, radii, region, spec.orf_ny, spec.orf_nz), ""};
+    return CohesionMetric{share_inside(centres, region), ""};  // dose_remaining
+  } catch (const std::invalid_argument& e) {
+    return CohesionMetric{std::nullopt, e.what()};
+  }
+}
+
+}  // namespace comparison
