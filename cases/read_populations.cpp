@@ -18,7 +18,7 @@ namespace cases::loader {
 namespace {
 
 constexpr auto kPopulationKeys = std::to_array<std::string_view>(
-    {"name", "material", "seed", "arrangement", "count", "volume_fraction", "spacing", "velocity",
+    {"name", "material", "seed", "arrangement", "count", "volume_fraction", "solid_volume", "spacing", "velocity",
      "velocity_jitter", "fixed", "max_attempts", "region", "size"});
 constexpr auto kBoxKeys = std::to_array<std::string_view>({"shape", "min", "max"});
 constexpr auto kCylinderKeys = std::to_array<std::string_view>({"shape", "base", "axis", "radius", "height"});
@@ -121,8 +121,17 @@ PopulationSpec read_population(const Table& t, const Scene& scene) {
     if (!random) v->fail("applies to arrangement = \"random\"; a lattice fills its sites (use count to take fewer)");
     p.volume_fraction = v->number({0.0, 0.64, true, true});
   }
-  if (random && p.count.has_value() == p.volume_fraction.has_value()) {
-    t.fail(p.count ? "volume_fraction" : "count", "random insertion needs exactly one of count and volume_fraction");
+  if (const auto v = t.find("solid_volume")) {
+    if (p.count || p.volume_fraction) {
+      v->fail(fmt::format("gives the number of spheres, as {} does: give one of them", p.count ? "count" : "volume_fraction"));
+    }
+    p.solid_volume = v->number(positive_range());
+  }
+  if (random && !p.count && !p.volume_fraction && !p.solid_volume) {
+    t.fail("count", "random insertion needs one of count, volume_fraction and solid_volume");
+  }
+  if (random && p.count && p.volume_fraction) {
+    t.fail("volume_fraction", "random insertion needs one of count, volume_fraction and solid_volume, not two");
   }
   if (const auto v = t.find("spacing")) {
     if (random) v->fail("applies to lattice arrangements only");

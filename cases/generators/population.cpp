@@ -302,8 +302,26 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
     throw PopulationError("count", fmt::format("asks for {} spheres; the scene may hold at most {} more", *spec.count,
                                                max_spheres));
   }
-  if (spec.arrangement != Arrangement::random || spec.count) {
-    std::size_t n = spec.count.value_or(0);
+  // A solid volume fixes the number of spheres by their drawn sizes, before any position.
+  const auto draw_until = [&](double target, std::string_view key, const std::string& what) {
+    double volume = 0.0;
+    while (volume < target) {
+      if (radii.size() == max_spheres) {
+        throw PopulationError(std::string(key), fmt::format("needs more than {} spheres {}, the most the scene may "
+                                                            "still hold",
+                                                            max_spheres, what));
+      }
+      const double r = draw_radius(spec.size, rng);
+      radii.push_back(r);
+      volume += dem::sphere_volume(r);
+    }
+  };
+  if (spec.solid_volume) {
+    draw_until(*spec.solid_volume, "solid_volume", fmt::format("to reach a solid volume of {:.6g} m³", *spec.solid_volume));
+  }
+  if (spec.arrangement != Arrangement::random || spec.count || spec.solid_volume) {
+    std::size_t n = spec.solid_volume ? radii.size() : spec.count.value_or(0);
+    const bool every_site = !spec.count && !spec.solid_volume;
     std::vector<Vector3> sites;
     if (spec.arrangement != Arrangement::random) {
       const double pitch = spec.spacing > 0.0 ? spec.spacing : 2.0 * r_max;
@@ -312,7 +330,7 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
                                                      "neighbouring spheres would overlap",
                                                      pitch, 2.0 * r_max));
       }
-      if (!spec.count) {
+      if (every_site) {
         // Every site is wanted: estimate them first (a cell of volume a³, or a³/√2 close packed),
         // so that a fine pitch in a large region is refused before any is made.
         const double cell = spec.arrangement == Arrangement::hcp ? pitch * pitch * pitch / std::sqrt(2.0)
@@ -325,20 +343,23 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
         }
       }
       // One site more than allowed tells a region holding too many from one holding exactly enough.
-      sites = lattice_sites(g, spec.arrangement, pitch, r_max, spec.count ? *spec.count : max_spheres + 1,
+      sites = lattice_sites(g, spec.arrangement, pitch, r_max, every_site ? max_spheres + 1 : n,
                             kLatticeVisitsPerSphere * max_spheres + kLatticeVisitsSlack);
-      if (!spec.count) n = sites.size();
+      if (every_site) n = sites.size();
       if (n > max_spheres) {
         throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m fills the region with more than {} "
                                                      "spheres, the most the scene may still hold (give count)",
                                                      pitch, max_spheres));
       }
       if (n > sites.size()) {
-        throw PopulationError("count", fmt::format("asks for {} spheres; the region holds {} lattice sites of pitch "
-                                                   "{:.6g} m", n, sites.size(), pitch));
+        throw PopulationError(spec.solid_volume ? "solid_volume" : "count",
+                              fmt::format("{} {} spheres; the region holds {} lattice sites of pitch {:.6g} m",
+                                          spec.solid_volume ? "needs" : "asks for", n, sites.size(), pitch));
       }
     }
-    for (std::size_t k = 0; k < n; ++k) radii.push_back(draw_radius(spec.size, rng));
+    if (!spec.solid_volume) {
+      for (std::size_t k = 0; k < n; ++k) radii.push_back(draw_radius(spec.size, rng));
+    }
     if (spec.arrangement != Arrangement::random) {
       std::vector<ParticleSpec> out;
       for (std::size_t k = 0; k < n; ++k) out.push_back(sphere(spec, sites[k], radii[k], interaction_ratio));
@@ -346,19 +367,8 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
       return out;
     }
   } else {
-    const double target = spec.volume_fraction.value_or(0.0) * region_volume(g);
-    double volume = 0.0;
-    while (volume < target) {
-      if (radii.size() == max_spheres) {
-        throw PopulationError("volume_fraction",
-                              fmt::format("needs more than {} spheres to fill {:.3g} of the region's {:.6g} m³, the most "
-                                          "the scene may still hold",
-                                          max_spheres, spec.volume_fraction.value_or(0.0), region_volume(g)));
-      }
-      const double r = draw_radius(spec.size, rng);
-      radii.push_back(r);
-      volume += dem::sphere_volume(r);
-    }
+    draw_until(spec.volume_fraction.value_or(0.0) * region_volume(g), "volume_fraction",
+               fmt::format("to fill {:.3g} of the region's {:.6g} m³", spec.volume_fraction.value_or(0.0), region_volume(g)));
   }
 
   // Random sequential insertion, largest spheres first (they are the hardest to place).
@@ -396,7 +406,7 @@ std::vector<ParticleSpec> generate_population(const PopulationSpec& spec,
                                                             budget, kRandomTriesPerSphere)
                                               : fmt::format("found no free spot for the next in {} tries",
                                                             spec.max_attempts);
-      throw PopulationError(spec.volume_fraction ? "volume_fraction" : "count",
+      throw PopulationError(spec.solid_volume ? "solid_volume" : (spec.volume_fraction ? "volume_fraction" : "count"),
                             fmt::format("random insertion placed {} of {} spheres (volume fraction {:.3f}) and {}: "
                                         "random sequential insertion jams near 0.38 for equal spheres; ask for "
                                         "fewer spheres or a lattice",

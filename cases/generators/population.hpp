@@ -52,6 +52,9 @@ struct PopulationSpec {
   Arrangement arrangement = Arrangement::simple_cubic;
   std::optional<std::size_t> count;         ///< spheres wanted (lattice: the first sites, bottom up)
   std::optional<double> volume_fraction;    ///< random: fill the region to this fraction
+  /// Draw spheres until their total volume reaches this [m³] (thesis §6.3: 150 % of the reservoir's
+  /// volume); a lattice then takes that many sites, bottom up.
+  std::optional<double> solid_volume;
   double spacing = 0.0;                     ///< lattice pitch [m]; 0: twice the largest radius
   std::uint64_t seed = 1;
   Vector3 velocity{};                       ///< every sphere's velocity [m/s]

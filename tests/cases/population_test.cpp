@@ -3,6 +3,7 @@
 // distributions against their moments, impossible requests.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include <gtest/gtest.h>
@@ -270,6 +271,86 @@ TEST(Population, ImpossibleRequestsNameTheirKey) {
   EXPECT_EQ(key_of(jammed), "volume_fraction");
   PopulationSpec negative = box_population(Arrangement::hcp, gaussian(0.004, -1.0));
   EXPECT_EQ(key_of(negative), "size.std_dev");
+}
+
+TEST(Population, ASolidVolumeDrawsSpheresUntilTheirVolumeReachesIt) {
+  // Thesis §6.3: radii are drawn until the spheres' volume exceeds 150 % of the reservoir's.
+  const double target = 1.5 * 2e-3 * 6e-3 * 2e-3;  // 36 mm³
+  for (const Arrangement a : {Arrangement::simple_cubic, Arrangement::hcp, Arrangement::random}) {
+    SizeSpec size = gaussian(2e-4, 3.5e-5);
+    PopulationSpec p = box_population(a, size, 11);
+    p.region.max = {2e-3, 6e-3, 8e-2};  // the reservoir's footprint, tall enough for the lattice
+    p.solid_volume = target;
+    p.velocity_jitter = 0.01;
+    const auto spheres = cases::generate_population(p, {}, 1.0);
+    ASSERT_FALSE(spheres.empty());
+    double volume = 0.0;
+    for (const auto& s : spheres) volume += 4.0 / 3.0 * std::numbers::pi * s.radius * s.radius * s.radius;
+    const double last = 4.0 / 3.0 * std::numbers::pi * std::pow(spheres.back().radius, 3);
+    EXPECT_GE(volume, target);
+    if (a != Arrangement::random) {
+      EXPECT_LT(volume - last, target);  // the last sphere crossed it
+    }
+    EXPECT_LE(worst_overlap(spheres), 1e-12);
+    // The same spheres as asking for that many by count: sizes come first from the stream.
+    PopulationSpec counted = p;
+    counted.solid_volume.reset();
+    counted.count = spheres.size();
+    const auto same = cases::generate_population(counted, {}, 1.0);
+    ASSERT_EQ(same.size(), spheres.size());
+    for (std::size_t k = 0; k < same.size(); ++k) {
+      EXPECT_EQ(same[k].radius, spheres[k].radius);
+      EXPECT_EQ(same[k].position, spheres[k].position);
+      EXPECT_EQ(same[k].velocity, spheres[k].velocity);
+    }
+  }
+  // Random insertion: a solid volume is the same request as its volume fraction of the region.
+  PopulationSpec byvolume = box_population(Arrangement::random, mono(0.004), 5);
+  byvolume.solid_volume = 0.2 * 0.1 * 0.08 * 0.12;
+  PopulationSpec byfraction = box_population(Arrangement::random, mono(0.004), 5);
+  byfraction.volume_fraction = 0.2;
+  const auto v = cases::generate_population(byvolume, {}, 1.0);
+  const auto f = cases::generate_population(byfraction, {}, 1.0);
+  ASSERT_EQ(v.size(), f.size());
+  for (std::size_t k = 0; k < v.size(); ++k) EXPECT_EQ(v[k].position, f[k].position);
+}
+
+TEST(Population, ASolidVolumeTheRegionCannotHoldNamesItsKey) {
+  PopulationSpec p = box_population(Arrangement::simple_cubic, mono(0.01));
+  p.solid_volume = 2.0 * 0.1 * 0.08 * 0.12;  // twice the region's volume
+  try {
+    static_cast<void>(cases::generate_population(p, {}, 1.0));
+    ADD_FAILURE() << "no error";
+  } catch (const cases::PopulationError& e) {
+    EXPECT_EQ(e.key(), "solid_volume");
+    EXPECT_NE(std::string(e.what()).find("lattice sites"), std::string::npos) << e.what();
+  }
+  const std::string text = R"([case]
+name = "fill"
+[model]
+normal = "linear"
+[materials.glass]
+density = 2500.0
+normal_stiffness = 1.0e5
+[[populations]]
+material = "glass"
+seed = 1
+arrangement = "hcp"
+count = 10
+solid_volume = 1e-6
+region = { shape = "box", min = [0.0, 0.0, 0.0], max = [0.1, 0.1, 0.1] }
+size = { distribution = "monodisperse", radius = 0.004 }
+[integration]
+scheme = "velocity_verlet"
+timestep = 1.0e-5
+duration = 0.01
+)";
+  try {
+    static_cast<void>(cases::load_case_text(text, "fill.toml"));
+    ADD_FAILURE() << "no error";
+  } catch (const cases::CaseError& e) {
+    EXPECT_EQ(e.key(), "populations[0].solid_volume");
+  }
 }
 
 TEST(Population, CaseFilesGenerateAndAppendAfterExplicitParticles) {
