@@ -10,6 +10,18 @@
 
 namespace case_texts {
 
+/// A case header named `name` with the linear spring and a "glass" material: the start of the
+/// generated-population cases several tests build (append [[populations]] and the rest).
+inline std::string linear_glass_header(const std::string& name) {
+  return "[case]\nname = \"" + name + R"("
+[model]
+normal = "linear"
+[materials.glass]
+density = 2500.0
+normal_stiffness = 1.0e5
+)";
+}
+
 /// Two glass spheres, one moving at 1 m/s towards the other, fixed one; 100 steps of 1e-5 s.
 inline constexpr std::string_view kPair = R"([case]
 name = "pair"

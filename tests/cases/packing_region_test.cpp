@@ -6,19 +6,13 @@
 
 #include "cases/case_loader.hpp"
 #include "cases/packing_region.hpp"
+#include "case_texts.hpp"
 
 namespace packing_region_test {
 
 /// 27 lattice spheres of radius 4 mm in a 0.1 m box, with the given [compare] and [output] lines.
 std::string packing_case(const std::string& compare, const std::string& output = "snapshot_times = [0.01]\n") {
-  return R"([case]
-name = "packing"
-[model]
-normal = "linear"
-[materials.glass]
-density = 2500.0
-normal_stiffness = 1.0e5
-[[populations]]
+  return case_texts::linear_glass_header("packing") + R"([[populations]]
 material = "glass"
 seed = 3
 arrangement = "simple_cubic"

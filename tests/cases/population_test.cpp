@@ -11,6 +11,7 @@
 #include "cases/case_loader.hpp"
 #include "cases/generators/population.hpp"
 #include "cases/generators/random_stream.hpp"
+#include "case_texts.hpp"
 
 namespace population_test {
 
@@ -325,14 +326,7 @@ TEST(Population, ASolidVolumeTheRegionCannotHoldNamesItsKey) {
     EXPECT_EQ(e.key(), "solid_volume");
     EXPECT_NE(std::string(e.what()).find("lattice sites"), std::string::npos) << e.what();
   }
-  const std::string text = R"([case]
-name = "fill"
-[model]
-normal = "linear"
-[materials.glass]
-density = 2500.0
-normal_stiffness = 1.0e5
-[[populations]]
+  const std::string text = case_texts::linear_glass_header("fill") + R"([[populations]]
 material = "glass"
 seed = 1
 arrangement = "hcp"
