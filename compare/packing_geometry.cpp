@@ -6,7 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include <boost/math/quadrature/tanh_sinh.hpp>
+#include <boost/math/quadrature/gauss.hpp>
 
 namespace comparison {
 namespace {
@@ -71,6 +71,10 @@ double sphere_box_volume(const cases::Vector3& c, double r, const Box& box) noex
   }
   const double whole = 4.0 / 3.0 * std::numbers::pi * r * r * r;
   if (inside) return whole;
+  // A box whose farthest corner lies in the sphere is all inside it.
+  double far = 0.0;
+  for (std::size_t k = 0; k < 3; ++k) far += std::max(d0[k] * d0[k], d1[k] * d1[k]);
+  if (far <= r * r) return box.volume();
   // Slices normal to z at height z = r sin θ: radius ρ = r cos θ, thickness dz = r cos θ dθ.
   const double theta_lo = std::asin(std::max(d0[2], -r) / r);
   const double theta_hi = std::asin(std::min(d1[2], r) / r);
@@ -95,14 +99,17 @@ double sphere_box_volume(const cases::Vector3& c, double r, const Box& box) noex
     return disk_rectangle_area(rho, d0[0], d1[0], d0[1], d1[1]) * rho;
   };
   // Where a slice's circle reaches a side line, the clipped area grows like a power 3/2 of the
-  // distance: tanh–sinh quadrature, whose nodes crowd double-exponentially to a piece's ends,
-  // integrates such end points to round-off.
-  boost::math::quadrature::tanh_sinh<double> quadrature;
+  // distance from the piece's end. The smoothstep map θ = θ₀ + w(3s² − 2s³) turns those powers
+  // into odd powers of s (analytic), so Gauss–Legendre in s converges to round-off.
   double volume = 0.0;
   for (std::size_t k = 1; k < cuts.size(); ++k) {
-    if (cuts[k] > cuts[k - 1]) volume += quadrature.integrate(slice, cuts[k - 1], cuts[k], 1e-14);
+    const double t0 = cuts[k - 1];
+    const double w = cuts[k] - t0;
+    if (!(w > 0.0)) continue;
+    const auto mapped = [&](double s) { return slice(t0 + w * s * s * (3.0 - 2.0 * s)) * 6.0 * w * s * (1.0 - s); };
+    volume += boost::math::quadrature::gauss<double, 30>::integrate(mapped, 0.0, 1.0);
   }
-  return std::clamp(volume, 0.0, whole);
+  return std::clamp(volume, 0.0, std::min(whole, box.volume()));
 }
 
 double packing_fraction(std::span<const cases::Vector3> centres, std::span<const double> radii, const Box& box) {
