@@ -70,6 +70,9 @@ constexpr std::array kMetrics{
     MetricInfo{"dose_remaining", "-",
                "share of the mobile spheres whose centres lie in the compare.packing region, at the last snapshot",
                false, false},
+    MetricInfo{"coordination_number", "-",
+               "mean body contacts (overlap > 0) with other mobile spheres of the mobile spheres whose centres lie "
+               "in the compare.packing region, at the last snapshot", false, false},
     MetricInfo{"cohesive_work", "J",
                "work to separate two mean-size spheres from their force-free contact until cohesion ends (thesis fig. 5.15)", false, false},
 };

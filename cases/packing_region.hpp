@@ -10,8 +10,8 @@
 namespace cases {
 
 /// The metrics measured in compare.packing's region (docs/metrics.md, "Packing").
-inline constexpr std::array<std::string_view, 4> kPackingMetrics{"packing_fraction", "packing_fraction_interior",
-                                                                 "orf", "dose_remaining"};
+inline constexpr std::array<std::string_view, 5> kPackingMetrics{"packing_fraction", "packing_fraction_interior",
+                                                                 "orf", "dose_remaining", "coordination_number"};
 
 /// True when `metric` is one of kPackingMetrics.
 [[nodiscard]] bool is_packing_metric(std::string_view metric) noexcept;

@@ -12,7 +12,8 @@
 
 namespace comparison {
 
-/// The metric `name` (packing_fraction, packing_fraction_interior, orf, dose_remaining) of `run`
+/// The metric `name` (packing_fraction, packing_fraction_interior, orf, dose_remaining,
+/// coordination_number) of `run`
 /// at its last snapshot, counting the mobile spheres only; empty when `name` is not a packing
 /// metric. A value is missing, with the reason, when the scene has no packing region or the run
 /// no snapshot of every sphere.

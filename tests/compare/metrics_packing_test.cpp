@@ -96,3 +96,57 @@ TEST(PackingMetrics, AreMissingWithTheReasonWhenTheRunHasNoSnapshotOrTheCaseNoRe
 }
 
 }  // namespace
+
+namespace coordination_test {
+
+/// An n³ simple cubic lattice of unit pitch whose spheres overlap their six neighbours slightly
+/// (r = 0.5001), as the last snapshot of a run, with a fixed sphere overlapping the corner one.
+struct Bed {
+  cases::Scene scene;
+  cases::RunResult run;
+};
+
+Bed bed(int n) {
+  Bed b;
+  cases::Snapshot last;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) {
+        cases::ParticleSpec p;
+        p.radius = 0.5001;
+        p.position = {static_cast<double>(i), static_cast<double>(j), static_cast<double>(k)};
+        b.scene.particles.push_back(p);
+        last.position.push_back(p.position);
+      }
+    }
+  }
+  cases::ParticleSpec base;  // fixed: its contacts are not counted
+  base.radius = 0.6;
+  base.fixed = true;
+  base.position = {-1.0, 0.0, 0.0};
+  b.scene.particles.push_back(base);
+  last.position.push_back(base.position);
+  b.scene.compare.metrics = {"coordination_number"};
+  b.run.status = cases::RunStatus::ok;
+  b.run.snapshots = {last};
+  return b;
+}
+
+TEST(PackingMetrics, CoordinationCountsBodyContactsOfTheSpheresInTheRegion) {
+  Bed b = bed(6);
+  // Spheres 1…4 on every axis have all six neighbours.
+  b.scene.compare.packing = cases::PackingSpec{{0.5, 0.5, 0.5}, {4.5, 4.5, 4.5}, std::nullopt, 45, 15};
+  EXPECT_DOUBLE_EQ(*comparison::compute_metrics(b.scene, b.run, nullptr).at("coordination_number").value, 6.0);
+  // The whole lattice: 3·6·6·5 contacts over 216 spheres, 2·540/216 = 5.
+  b.scene.compare.packing = cases::PackingSpec{{-0.5, -0.5, -0.5}, {5.5, 5.5, 5.5}, std::nullopt, 45, 15};
+  EXPECT_DOUBLE_EQ(*comparison::compute_metrics(b.scene, b.run, nullptr).at("coordination_number").value, 5.0);
+  // Spheres exactly touching (δ = 0) are not in contact.
+  for (auto& p : b.scene.particles) p.radius = p.fixed ? p.radius : 0.5;
+  EXPECT_DOUBLE_EQ(*comparison::compute_metrics(b.scene, b.run, nullptr).at("coordination_number").value, 0.0);
+  // A region holding no centre has no coordination number.
+  b.scene.compare.packing = cases::PackingSpec{{10, 10, 10}, {11, 11, 11}, std::nullopt, 45, 15};
+  EXPECT_NE(comparison::compute_metrics(b.scene, b.run, nullptr).at("coordination_number").problem.find("no mobile"),
+            std::string::npos);
+}
+
+}  // namespace coordination_test
