@@ -40,7 +40,7 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
         vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())
                                  : std::filesystem::path("out") / ("gate-" + cases::resolve_suite(target).filename().string());
     const SuiteRun run = run_suite(target, out, *vm, inv);
-    std::cout << run.summary << "\nwrote " << (out / "report.md").string() << "\n";
+    std::cout << suite_summary(run) << "\nwrote " << (out / "report.md").string() << "\n";
     found = suite_results(run);
   }
   results::GateOptions options;

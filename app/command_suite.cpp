@@ -24,7 +24,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::path("out") / cases::resolve_suite(suite_name).filename();
   const SuiteRun run = run_suite(suite_name, out, *vm, inv);
-  std::cout << run.summary << "\nwrote " << (out / "report.md").string() << "\n";
+  std::cout << suite_summary(run) << "\nwrote " << (out / "report.md").string() << "\n";
   return comparison::is_green(run.worst) ? kExitOk : kExitFailed;
 }
 

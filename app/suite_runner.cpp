@@ -225,9 +225,10 @@ SuiteRun run_suite(const std::string& suite_name, const std::filesystem::path& o
   run.entries = std::move(entries);
   run.ensembles = std::move(ensembles);
   run.worst = worst;
-  run.summary = summary_table(run.entries);
   return run;
 }
+
+std::string suite_summary(const SuiteRun& run) { return summary_table(run.entries); }
 
 results::SuiteResults suite_results(const SuiteRun& run) {
   results::SuiteResults r;

@@ -33,7 +33,6 @@ struct SuiteRun {
   std::vector<SuiteEntry> entries;  ///< one per case file, in the suite's order
   std::vector<sweeps::StoredEnsemble> ensembles;
   comparison::Status worst = comparison::Status::not_applicable;
-  std::string summary;             ///< the summary table (markdown)
 };
 
 /// Runs every case of suite `suite_name` (canonical, or a directory) with the run, tier and jobs
@@ -41,6 +40,9 @@ struct SuiteRun {
 /// returns the typed outcome. Throws std::runtime_error when the suite holds no case.
 SuiteRun run_suite(const std::string& suite_name, const std::filesystem::path& out,
                    const boost::program_options::variables_map& vm, const Invocation& inv);
+
+/// The summary table of a suite run (markdown: one row per case), as report.md opens with it.
+[[nodiscard]] std::string suite_summary(const SuiteRun& run);
 
 /// The suite run's typed results, as the gate judges them.
 [[nodiscard]] results::SuiteResults suite_results(const SuiteRun& run);

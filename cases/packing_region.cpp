@@ -9,8 +9,8 @@ bool is_packing_metric(std::string_view metric) noexcept {
   return std::find(kPackingMetrics.begin(), kPackingMetrics.end(), metric) != kPackingMetrics.end();
 }
 
-double interior_margin(const Scene& scene) noexcept {
-  if (scene.compare.packing && scene.compare.packing->interior_margin) return *scene.compare.packing->interior_margin;
+double interior_margin(const Scene& scene, const PackingSpec& packing) noexcept {
+  if (packing.interior_margin) return *packing.interior_margin;
   double sum = 0.0;
   std::size_t n = 0;
   for (const bool mobile_only : {true, false}) {

@@ -16,8 +16,8 @@ inline constexpr std::array<std::string_view, 5> kPackingMetrics{"packing_fracti
 /// True when `metric` is one of kPackingMetrics.
 [[nodiscard]] bool is_packing_metric(std::string_view metric) noexcept;
 
-/// The interior margin of the scene's packing region: compare.packing.interior_margin, else two
-/// mean diameters of the mobile spheres (of all spheres when none is mobile).
-[[nodiscard]] double interior_margin(const Scene& scene) noexcept;
+/// The interior margin of the packing region `packing` of `scene`: its interior_margin, else two
+/// mean diameters of the scene's mobile spheres (of all spheres when none is mobile).
+[[nodiscard]] double interior_margin(const Scene& scene, const PackingSpec& packing) noexcept;
 
 }  // namespace cases

@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # cmake -DFOLDER=<dir> -DNAME=<folder name> -DALLOWED=<a,b> [-DSTAMP=<file>] -P CheckLayerIncludes.cmake
-# Fails, naming the file, its line and the header, when a .cpp or .hpp in FOLDER includes a header
+# Fails, naming the file and the header, when a .cpp or .hpp in FOLDER includes a header
 # "reference/<x>/…" or "reference/<file>" whose <x> is neither NAME nor one of ALLOWED. Touches
 # STAMP when every include is allowed (docs/architecture.md, "Layers").
 cmake_minimum_required(VERSION 3.25)

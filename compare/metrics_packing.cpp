@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "cases/packing_region.hpp"
-#include "compare/metrics_breakup.hpp"
 #include "compare/packing_geometry.hpp"
 
 namespace comparison {
@@ -36,31 +35,10 @@ std::optional<CohesionMetric> packing_metric(const std::string& name, const case
   try {
     if (name == "packing_fraction") return CohesionMetric{packing_fraction(centres, radii, region), ""};
     if (name == "packing_fraction_interior") {
-      return CohesionMetric{packing_fraction(centres, radii, interior(region, cases::interior_margin(scene))), ""};
+      return CohesionMetric{packing_fraction(centres, radii, interior(region, cases::interior_margin(scene, spec))), ""};
     }
     if (name == "orf") return CohesionMetric{obscured_fraction(centres, radii, region, spec.orf_ny, spec.orf_nz), ""};
-    if (name == "coordination_number") {
-      // Body contacts among the mobile spheres (the breakup metrics' cell search), averaged over
-      // the spheres whose centres lie in the region.
-      std::vector<breakup::SnapshotSphere> spheres;
-      for (std::size_t k = 0; k < centres.size(); ++k) {
-        spheres.push_back({dem::Vec3(centres[k][0], centres[k][1], centres[k][2]), radii[k]});
-      }
-      std::vector<std::uint32_t> contacts(spheres.size(), 0);
-      for (const auto& [i, j] : breakup::bonded_pairs(spheres, breakup::body_contact(spheres))) {
-        ++contacts[i];
-        ++contacts[j];
-      }
-      std::size_t inside = 0;
-      std::size_t sum = 0;
-      for (std::size_t k = 0; k < centres.size(); ++k) {
-        if (!region.contains(centres[k])) continue;
-        ++inside;
-        sum += contacts[k];
-      }
-      if (inside == 0) return CohesionMetric{std::nullopt, "no mobile sphere has its centre in the region"};
-      return CohesionMetric{static_cast<double>(sum) / static_cast<double>(inside), ""};
-    }
+    if (name == "coordination_number") return CohesionMetric{coordination_number(centres, radii, region), ""};
     return CohesionMetric{share_inside(centres, region), ""};  // dose_remaining
   } catch (const std::invalid_argument& e) {
     return CohesionMetric{std::nullopt, e.what()};

@@ -8,6 +8,9 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "compare/metrics_breakup.hpp"
+#include "dem/particles/particles.hpp"
+
 namespace comparison {
 namespace {
 
@@ -69,7 +72,7 @@ double sphere_box_volume(const cases::Vector3& c, double r, const Box& box) noex
     if (d0[k] >= r || d1[k] <= -r || !(d1[k] > d0[k])) return 0.0;  // apart, or an empty box
     inside = inside && d0[k] <= -r && d1[k] >= r;
   }
-  const double whole = 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const double whole = dem::sphere_volume(r);
   if (inside) return whole;
   // A box whose farthest corner lies in the sphere is all inside it.
   double far = 0.0;
@@ -164,6 +167,30 @@ double obscured_fraction(std::span<const cases::Vector3> centres, std::span<cons
     }
   }
   return static_cast<double>(obscured) / static_cast<double>(ny * nz);
+}
+
+double coordination_number(std::span<const cases::Vector3> centres, std::span<const double> radii, const Box& box) {
+  if (centres.size() != radii.size()) {
+    throw std::invalid_argument("coordination_number: the centres and radii differ in number");
+  }
+  std::vector<breakup::SnapshotSphere> spheres;
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    spheres.push_back({dem::Vec3(centres[k][0], centres[k][1], centres[k][2]), radii[k]});
+  }
+  std::vector<std::uint32_t> contacts(spheres.size(), 0);
+  for (const auto& [i, j] : breakup::bonded_pairs(spheres, breakup::body_contact(spheres))) {
+    ++contacts[i];
+    ++contacts[j];
+  }
+  std::size_t inside = 0;
+  std::size_t sum = 0;
+  for (std::size_t k = 0; k < centres.size(); ++k) {
+    if (!box.contains(centres[k])) continue;
+    ++inside;
+    sum += contacts[k];
+  }
+  if (inside == 0) throw std::invalid_argument("no mobile sphere has its centre in the region");
+  return static_cast<double>(sum) / static_cast<double>(inside);
 }
 
 double share_inside(std::span<const cases::Vector3> centres, const Box& box) noexcept {

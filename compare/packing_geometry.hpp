@@ -50,6 +50,12 @@ struct Box {
 [[nodiscard]] double obscured_fraction(std::span<const cases::Vector3> centres, std::span<const double> radii,
                                        const Box& box, std::size_t ny, std::size_t nz);
 
+/// Mean number of body contacts (overlap > 0) with any of the given spheres, over the spheres
+/// whose centres lie in `box` (the breakup metrics' cell search finds the contacts). Throws
+/// std::invalid_argument when no centre lies in the box or the sizes differ.
+[[nodiscard]] double coordination_number(std::span<const cases::Vector3> centres, std::span<const double> radii,
+                                         const Box& box);
+
 /// Share of the spheres whose centres lie in `box` (the dose remaining in a reservoir), by count.
 [[nodiscard]] double share_inside(std::span<const cases::Vector3> centres, const Box& box) noexcept;
 

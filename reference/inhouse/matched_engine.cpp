@@ -11,7 +11,7 @@
 namespace reference {
 
 MatchedInhouseEngine::MatchedInhouseEngine(const CodeConventions& conventions)
-    : conventions_(conventions), code_(conventions.code), name_(cases::matched_engine_name(code_)) {}
+    : conventions_(conventions), name_(cases::matched_engine_name(conventions.code)) {}
 
 std::optional<std::string> MatchedInhouseEngine::version() const {
   return InhouseEngine().version();
@@ -21,7 +21,7 @@ Support MatchedInhouseEngine::supports(const PreparedScene& prepared) const {
   try {
     static_cast<void>(conventions_.matched_scene(prepared));
   } catch (const std::exception& e) {
-    return Support{{std::string("no matched numerics for ") + code_ + ": " + e.what()}};
+    return Support{{std::string("no matched numerics for ") + std::string(conventions_.code) + ": " + e.what()}};
   }
   return {};
 }
@@ -49,7 +49,7 @@ bool nudge_start(cases::Scene& scene) {
 cases::RunResult MatchedInhouseEngine::run(const PreparedScene& prepared, const RunOptions& options) const {
   const cases::Scene matched = conventions_.matched_scene(prepared);
   cases::RunResult result = InhouseEngine().run(matched, options);
-  result.conventions["matched to"] = code_ + " (reference::matched_scene: its integrator, velocity "
+  result.conventions["matched to"] = std::string(conventions_.code) + " (reference::matched_scene: its integrator, velocity "
                                              "convention, damping formula, friction-limit basis and "
                                              "tangential-history rule)";
   // The round-off twin: how far one ulp at the start carries in this scene bounds how long two

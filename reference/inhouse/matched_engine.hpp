@@ -25,7 +25,6 @@ class MatchedInhouseEngine final : public Engine {
 
  private:
   CodeConventions conventions_;
-  std::string code_;
   std::string name_;
 };
 

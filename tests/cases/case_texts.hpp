@@ -22,6 +22,19 @@ normal_stiffness = 1.0e5
 )";
 }
 
+/// linear_glass_header(name) with one glass population in a 0.1 m box (radius 4 mm) whose other
+/// keys are `population` (seed, arrangement, count, …), run for 0.01 s at Δt = 1e-5 s; append
+/// [compare] or [output] tables.
+inline std::string glass_population_case(const std::string& name, const std::string& population) {
+  return linear_glass_header(name) + "[[populations]]\nmaterial = \"glass\"\n" + population + R"(region = { shape = "box", min = [0.0, 0.0, 0.0], max = [0.1, 0.1, 0.1] }
+size = { distribution = "monodisperse", radius = 0.004 }
+[integration]
+scheme = "velocity_verlet"
+timestep = 1.0e-5
+duration = 0.01
+)";
+}
+
 /// Two glass spheres, one moving at 1 m/s towards the other, fixed one; 100 steps of 1e-5 s.
 inline constexpr std::string_view kPair = R"([case]
 name = "pair"

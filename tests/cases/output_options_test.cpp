@@ -4,31 +4,15 @@
 
 #include "cases/case_loader.hpp"
 #include "cases/trace.hpp"
+#include "case_texts.hpp"
 
 namespace output_options_test {
 
 /// A case of `count` lattice spheres with the given [output] lines.
 std::string population_case(int count, const std::string& output) {
-  return R"([case]
-name = "outputs"
-[model]
-normal = "linear"
-[materials.glass]
-density = 2500.0
-normal_stiffness = 1.0e5
-[[populations]]
-material = "glass"
-seed = 3
-arrangement = "simple_cubic"
-count = )" + std::to_string(count) + R"(
-region = { shape = "box", min = [0.0, 0.0, 0.0], max = [0.1, 0.1, 0.1] }
-size = { distribution = "monodisperse", radius = 0.004 }
-[integration]
-scheme = "velocity_verlet"
-timestep = 1.0e-5
-duration = 0.01
-[output]
-)" + output;
+  return case_texts::glass_population_case(
+             "outputs", "seed = 3\narrangement = \"simple_cubic\"\ncount = " + std::to_string(count) + "\n") +
+         "[output]\n" + output;
 }
 
 TEST(OutputOptions, ManyParticlesTraceNoneByDefaultAndFewTraceAll) {

@@ -12,19 +12,8 @@ namespace packing_region_test {
 
 /// 27 lattice spheres of radius 4 mm in a 0.1 m box, with the given [compare] and [output] lines.
 std::string packing_case(const std::string& compare, const std::string& output = "snapshot_times = [0.01]\n") {
-  return case_texts::linear_glass_header("packing") + R"([[populations]]
-material = "glass"
-seed = 3
-arrangement = "simple_cubic"
-count = 27
-region = { shape = "box", min = [0.0, 0.0, 0.0], max = [0.1, 0.1, 0.1] }
-size = { distribution = "monodisperse", radius = 0.004 }
-[integration]
-scheme = "velocity_verlet"
-timestep = 1.0e-5
-duration = 0.01
-[compare]
-)" + compare + "[output]\n" + output;
+  return case_texts::glass_population_case("packing", "seed = 3\narrangement = \"simple_cubic\"\ncount = 27\n") +
+         "[compare]\n" + compare + "[output]\n" + output;
 }
 
 /// The dotted key a case error names, or "(no error)".
@@ -46,14 +35,14 @@ TEST(PackingRegion, IsReadWithItsDefaults) {
   EXPECT_FALSE(s.compare.packing->interior_margin.has_value());
   EXPECT_EQ(s.compare.packing->orf_ny, 45U);
   EXPECT_EQ(s.compare.packing->orf_nz, 15U);
-  EXPECT_DOUBLE_EQ(cases::interior_margin(s), 4 * 0.004);  // two mean diameters
+  EXPECT_DOUBLE_EQ(cases::interior_margin(s, *s.compare.packing), 4 * 0.004);  // two mean diameters
   const cases::Scene t = cases::load_case_text(
       packing_case("metrics = [\"packing_fraction_interior\"]\n"
                    "packing = { min = [0, 0, 0], max = [0.1, 0.1, 0.1], interior_margin = 0.01, orf_grid = [30, 10] }\n"),
       "p.toml");
   EXPECT_EQ(*t.compare.packing->interior_margin, 0.01);
   EXPECT_EQ(t.compare.packing->orf_ny, 30U);
-  EXPECT_DOUBLE_EQ(cases::interior_margin(t), 0.01);
+  EXPECT_DOUBLE_EQ(cases::interior_margin(t, *t.compare.packing), 0.01);
 }
 
 TEST(PackingRegion, BadRegionsAndMissingPiecesNameTheirKey) {

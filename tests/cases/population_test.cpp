@@ -326,19 +326,8 @@ TEST(Population, ASolidVolumeTheRegionCannotHoldNamesItsKey) {
     EXPECT_EQ(e.key(), "solid_volume");
     EXPECT_NE(std::string(e.what()).find("lattice sites"), std::string::npos) << e.what();
   }
-  const std::string text = case_texts::linear_glass_header("fill") + R"([[populations]]
-material = "glass"
-seed = 1
-arrangement = "hcp"
-count = 10
-solid_volume = 1e-6
-region = { shape = "box", min = [0.0, 0.0, 0.0], max = [0.1, 0.1, 0.1] }
-size = { distribution = "monodisperse", radius = 0.004 }
-[integration]
-scheme = "velocity_verlet"
-timestep = 1.0e-5
-duration = 0.01
-)";
+  const std::string text = case_texts::glass_population_case(
+      "fill", "seed = 1\narrangement = \"hcp\"\ncount = 10\nsolid_volume = 1e-6\n");
   try {
     static_cast<void>(cases::load_case_text(text, "fill.toml"));
     ADD_FAILURE() << "no error";
