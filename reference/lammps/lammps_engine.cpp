@@ -77,12 +77,6 @@ Support LammpsEngine::supports(const PreparedScene& prepared) const {
         "LAMMPS driver: the lever arm 'yade_incident' and the tangential_history 'yade_rotate' are "
         "YADE's conventions (α-scaled shear increment, first-order shear rotation), not LAMMPS'");
   }
-  if (scene.model.mindlin_form == dem::MindlinForm::incremental &&
-      (scene.model.tangential == "mindlin" || scene.model.tangential == "mindlin_8g")) {
-    s.reasons.emplace_back(
-        "LAMMPS driver: mindlin_form = 'incremental' is not mapped (the driver writes `tangential "
-        "mindlin`, which loads the whole slip at today's k_t; `mindlin/force` is not written yet)");
-  }
   if (scene.model.adhesive_dashpot == dem::AdhesiveDashpot::pulloff_cap &&
       (scene.model.cohesion == "jkr" || scene.model.cohesion == "dmt") && scene.model.damping != "none") {
     s.reasons.emplace_back(

@@ -29,8 +29,8 @@ cases::Scene matched_scene(const PreparedScene& prepared) {
   // pair granular has no cap of the dashpot at the pull-off force (YADE's rule): limit_damping
   // (the case's clamp_tensile) is its only limit.
   matched.model.adhesive_dashpot = dem::AdhesiveDashpot::clamp;
-  // pair granular `mindlin` keeps the slip and multiplies it by today's k_t.
-  matched.model.mindlin_form = dem::MindlinForm::total;
+  // mindlin_form stays the case's: the driver writes `mindlin` (the whole slip at today's k_t)
+  // for 'total' and `mindlin/force` (each increment at its step's k_t) for 'incremental'.
   return matched;
 }
 

@@ -227,8 +227,8 @@ SlotProblem map_damping(const dem::PairLaw& law, const PairContext& c, GranularC
       law.damping);
 }
 
-/// Tangential slot → linear_nohistory 0 0 (none), linear_history (spring_coulomb) or mindlin
-/// with the stiffness prefactor written explicitly (NULL is wrong for walls, B4,
+/// Tangential slot → linear_nohistory 0 0 (none), linear_history (spring_coulomb), or mindlin
+/// (mindlin_form 'total') / mindlin/force ('incremental') with the stiffness prefactor written explicitly (NULL is wrong for walls, B4,
 /// docs/engines.md).
 SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
   const bool adhesive = adhesive_normal(law.cohesion);
@@ -254,6 +254,11 @@ SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
         "'contact_radius' to compare)",
         keyword);
   };
+  // `mindlin` keeps the slip and loads all of it at today's k_t (mindlin_form 'total');
+  // `mindlin/force` keeps the spring force and adds −k_t(a) v_t Δt each step (pg 449–481, the
+  // force branch), then caps it as the slip (pg 510–527): mindlin_form 'incremental'.
+  const std::string_view mindlin_keyword =
+      law.policies.mindlin_form == dem::MindlinForm::incremental ? "mindlin/force" : "mindlin";
   return std::visit(
       Overloaded{
           [&](const dem::NoTangential&) -> SlotProblem {
@@ -268,13 +273,13 @@ SlotProblem map_tangential(const dem::PairLaw& law, GranularCoeff& out) {
             return std::nullopt;
           },
           [&](const dem::MindlinTangential& m) -> SlotProblem {
-            out.tangential = fmt::format("mindlin {:.17g} {:.17g} {:.17g}",
+            out.tangential = fmt::format("{} {:.17g} {:.17g} {:.17g}", mindlin_keyword,
                                          16.0 / 3.0 * m.p.shear_modulus, m.p.damping_ratio,
                                          m.p.friction);
             return jkr_radius(m.kKeyword);
           },
           [&](const dem::Mindlin8GTangential& m) -> SlotProblem {
-            out.tangential = fmt::format("mindlin {:.17g} {:.17g} {:.17g}",
+            out.tangential = fmt::format("{} {:.17g} {:.17g} {:.17g}", mindlin_keyword,
                                          8.0 * m.p.shear_modulus, m.p.damping_ratio, m.p.friction);
             return jkr_radius(m.kKeyword);
           }},

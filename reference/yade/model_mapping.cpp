@@ -268,6 +268,21 @@ void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
   }
 }
 
+/// True when wall `w` can carry a tangential force: the model has a tangential law and some
+/// mobile material meeting the wall mixes with the wall's material to μ > 0. With μ = 0 the
+/// Coulomb cap is zero in YADE's Mindlin law and in the core alike, so the wall is frictionless in
+/// both and YADE's lever-arm convention (r − δ) never applies a torque.
+bool wall_has_friction(const cases::Scene& scene, const dem::PairTable& table, const std::vector<bool>& meets_walls,
+                       const cases::WallSpec& w) {
+  if (scene.model.tangential == "none") return false;
+  for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+    if (!meets_walls[m]) continue;
+    const auto& friction = table.properties(m, w.material).friction;
+    if (!friction || *friction != 0.0) return true;
+  }
+  return false;
+}
+
 /// Hertz–Mindlin walls: one compensated YADE material per wall (compensated_wall_material), the
 /// same for every particle material that meets it, and MatchMaker rows copied from the wall's
 /// scene material. Adds a reason when a wall cannot be expressed.
@@ -285,7 +300,7 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
                                           "4πRγ with the wall's R = r/2)", w.name));
       continue;
     }
-    if (scene.model.tangential != "none") {
+    if (wall_has_friction(scene, table, meets_walls, w)) {
       // Measured on a 30° Hertz–Mindlin impact (stick, then slip): v_t after 1.1 % and ω after
       // 0.4 % away from the core, natively and in matched numerics alike.
       add_reason(out.reasons, fmt::format(
@@ -294,7 +309,7 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
           "(applyForceAtContactPoint) turns the sphere with lever arm r − δ, a convention the core "
           "has no policy for (wall_lever_arm is r − δ/2 or r), and scales the shear increment's "
           "translational part by α = 2r/(2r − δ) (ScGeom noRatch); the normal contact maps exactly "
-          "(tangential = 'none')", w.name));
+          "(tangential = 'none', or a wall material whose friction mixes to μ = 0)", w.name));
       continue;
     }
     std::optional<YadeWallMaterial> chosen;

@@ -3,6 +3,7 @@
 // now agrees at round-off between the code and the core with its numerics, or is n/a with the
 // reason its mapping gives.
 #include <filesystem>
+#include <iostream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -58,6 +59,22 @@ TEST(MatchedRegression, FrictionalSpinningPairsAgreeWithLammps) {
             1e-8);
   EXPECT_LE(matched_deviation(regression("lammps_hertz_mindlin_falling_onto_floor"), reference::LammpsEngine{}, "lammps"),
             1e-8);
+}
+
+TEST(MatchedRegression, IncrementalMindlinAgreesWithLammpsMindlinForce) {
+  // mindlin_form 'incremental' is written as `tangential mindlin/force` (pairs and the floor).
+  // The core on the other form must miss LAMMPS by far more than round-off, or this scene would
+  // not tell the two histories apart.
+  if (!demwb_lammps_test::lammps_installed()) GTEST_SKIP() << "LAMMPS not installed";
+  cases::Scene scene = regression("lammps_hertz_mindlin_falling_onto_floor");
+  scene.model.mindlin_form = dem::MindlinForm::incremental;
+  const double same_form = matched_deviation(scene, reference::LammpsEngine{}, "lammps");
+  EXPECT_LE(same_form, 1e-8);
+  const double other_form = whole_deviation(
+      scene, reference::LammpsEngine{}, "lammps",
+      [](cases::Scene& matched) { matched.model.mindlin_form = dem::MindlinForm::total; }, 0.0);
+  EXPECT_GT(other_form, 1e-6);
+  std::cout << "incremental Mindlin against mindlin/force: " << same_form << "; the total form: " << other_form << "\n";
 }
 
 TEST(MatchedRegression, JkrWithMindlinOnTheOverlapIsNotApplicableForLammps) {

@@ -148,4 +148,33 @@ TEST(RigidWallEngines, YadeRunsClippedTsujiAgainstACompliantWallAsTheCoreDoes) {
   EXPECT_LT(metric(scene, core, 0, 0, "restitution"), 0.75);  // damped: the dashpot acted
 }
 
+TEST(RigidWallEngines, YadeRunsAFrictionlessWallInAFrictionalScene) {
+  DEMWB_REQUIRE_YADE();
+  // The compliant-wall scene with Hertz–Mindlin friction on the sphere (μ = 0.4, incremental form)
+  // and none on the wall (μ = 0): μ mixes to 0 at the wall, so YADE's law applies no tangential
+  // force or torque there, exactly as the core, and the wall is mapped. With μ = 0.3 on the wall
+  // YADE's lever arm r − δ would matter, and the driver refuses it.
+  cases::Scene scene = cases::load_case(std::string(DEMWB_TEST_DATA_DIR) + "/walls/hertz_wall_tsuji.toml");
+  scene.model.tangential = "mindlin_8g";
+  scene.model.mindlin_form = dem::MindlinForm::incremental;
+  scene.integration.rotation = true;
+  for (auto& m : scene.materials) {
+    m.friction = m.name == "steel" ? 0.0 : 0.4;
+    m.tangential_damping_ratio = 0.0;
+  }
+  const auto core = reference::run_engine(reference::InhouseEngine{}, scene, {});
+  const auto yade = reference::run_engine(reference::YadeEngine{}, scene, {demwb_yade_test::scratch("wall-frictionless"), 120.0});
+  ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
+  for (const char* name : {"contact_duration", "max_overlap", "restitution", "tangential_restitution"}) {
+    const double a = metric(scene, core, 0, 0, name), b = metric(scene, yade, 0, 0, name);
+    EXPECT_NEAR(b, a, 1e-12 * std::abs(a)) << name;
+  }
+  EXPECT_DOUBLE_EQ(metric(scene, core, 0, 0, "tangential_restitution"), -1.0);  // no tangential force
+  EXPECT_EQ(metric(scene, yade, 0, 0, "spin_after"), 0.0);
+  for (auto& m : scene.materials) m.friction = 0.3;
+  const auto refused = reference::run_engine(reference::YadeEngine{}, scene, {demwb_yade_test::scratch("wall-friction"), 120.0});
+  EXPECT_EQ(refused.status, cases::RunStatus::not_applicable);
+  EXPECT_NE(refused.reason.find("lever arm r − δ"), std::string::npos) << refused.reason;
+}
+
 }  // namespace wall_options_engines_test

@@ -66,8 +66,8 @@ TEST(LammpsEngineSupport, RefusesYadesConventionsAndPoliciesPairGranularDoesNotH
   EXPECT_TRUE(mentions(LammpsEngine{}.supports(scene), "'yade_rotate'"));
   scene.model.tangential_history = dem::TangentialHistory::project_rescale;
   scene.model.tangential = "mindlin_8g";
-  scene.model.mindlin_form = dem::MindlinForm::incremental;
-  EXPECT_TRUE(mentions(LammpsEngine{}.supports(scene), "mindlin_form = 'incremental'"));
+  scene.model.mindlin_form = dem::MindlinForm::incremental;  // written as `mindlin/force`
+  EXPECT_FALSE(mentions(LammpsEngine{}.supports(scene), "mindlin_form"));
   scene.model = {};
   scene.model.normal = "hertz";
   scene.model.cohesion = "jkr";

@@ -49,6 +49,31 @@ TEST(LammpsPairCoeff, ClampTensileAddsLimitDamping) {
   EXPECT_NE(pair_coeff_arguments(c).find(" limit_damping "), std::string::npos);
 }
 
+TEST(LammpsPairCoeff, MindlinFormPicksTheSlipOrTheForceHistory) {
+  // 'total' loads the whole slip at today's k_t (`mindlin`); 'incremental' adds each step's
+  // −k_t(a) v_t Δt to a stored force (`mindlin/force`). Both pass k_t = 8 G* explicitly.
+  dem::ModelChoice choice;
+  choice.normal = "hertz";
+  choice.damping = "tsuji";
+  choice.tangential = "mindlin_8g";
+  dem::PairProperties p;
+  p.effective_modulus = 3.0e10;
+  p.effective_shear_modulus = 7.0e9;
+  p.restitution = 0.8;
+  p.friction = 0.4;
+  p.tangential_damping_ratio = 0.0;
+  const auto args = [&](dem::MindlinForm form) {
+    choice.mindlin_form = form;
+    return pair_coeff_arguments(map_pair_law(dem::make_pair_law(choice, p), 1e-6));
+  };
+  EXPECT_NE(args(dem::MindlinForm::total).find(" tangential mindlin 56000000000 0 0.40000000000000002"),
+            std::string::npos)
+      << args(dem::MindlinForm::total);
+  EXPECT_NE(args(dem::MindlinForm::incremental).find(" tangential mindlin/force 56000000000 0 0.40000000000000002"),
+            std::string::npos)
+      << args(dem::MindlinForm::incremental);
+}
+
 TEST(LammpsPairCoeff, EveryCurrentSubModelIsMapped) {
   EXPECT_TRUE(reference::lammps::unmapped_sub_models(law("none")).empty());
   EXPECT_TRUE(reference::lammps::unmapped_sub_models(law("restitution")).empty());

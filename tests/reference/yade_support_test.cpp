@@ -128,6 +128,14 @@ TEST(YadeSupport, HertzAgainstAWallIsMappedWithoutFrictionAndRefusedWithIt) {
   scene.materials[0].tangential_damping_ratio = 0.0;
   const auto s = offline_engine().supports(scene);
   EXPECT_TRUE(mentions(s, "lever arm r − δ")) << s.explain();
+  // A wall of its own frictionless material: μ mixes to 0 there, no torque, mapped.
+  cases::Scene smooth_wall = scene;
+  dem::MaterialProperties smooth = scene.materials[0];
+  smooth.name = "smooth";
+  smooth.friction = 0.0;
+  smooth_wall.materials.push_back(smooth);
+  smooth_wall.walls.back().material = smooth_wall.materials.size() - 1;
+  EXPECT_TRUE(offline_engine().supports(smooth_wall).supported()) << offline_engine().supports(smooth_wall).explain();
 }
 
 TEST(YadeSupport, TsujiMapsOnlyWhenTheNormalForceIsClipped) {

@@ -82,7 +82,8 @@ struct MindlinTangential {
   static constexpr std::array<std::string_view, 3> kProperties{"effective_shear_modulus", kFrictionKey,
                                                                kTangentialDampingKey};
   static constexpr std::string_view kLammps =
-      "`tangential mindlin k_t x_γt μ` with k_t = 16/3 G* passed explicitly (LAMMPS' NULL means 8 G*)";
+      "`tangential mindlin k_t x_γt μ` (`mindlin/force` under mindlin_form 'incremental') with k_t = "
+      "16/3 G* passed explicitly (LAMMPS' NULL means 8 G*)";
   static constexpr std::string_view kYade =
       "none: YADE's Mindlin uses 8 G* and an incremental force history (use mindlin_8g)";
 
@@ -114,8 +115,8 @@ struct Mindlin8GTangential {
   static constexpr std::array<std::string_view, 3> kProperties{"effective_shear_modulus", kFrictionKey,
                                                                kTangentialDampingKey};
   static constexpr std::string_view kLammps =
-      "`tangential mindlin NULL x_γt μ` for pairs; walls need k_t = 8 G* explicitly (NULL is wrong "
-      "for fix wall/gran in this build)";
+      "`tangential mindlin 8G* x_γt μ` (`mindlin/force` under mindlin_form 'incremental'), k_t "
+      "passed explicitly: NULL is wrong for fix wall/gran in this build";
   static constexpr std::string_view kYade =
       "Ip2_FrictMat_FrictMat_MindlinPhys + Law2_ScGeom_MindlinPhys_Mindlin (incremental force "
       "history: differs while δ changes at constant slip)";
