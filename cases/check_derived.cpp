@@ -150,6 +150,31 @@ void check_run_timestep(const Table& root, const Scene& scene, const dem::PairTa
                                            kind, dt, duration, steps));
 }
 
+/// Checks the time step and the largest number of steps of every settle stage.
+void check_settle_steps(const Table& root, const Scene& scene) {
+  for (std::size_t k = 0; k < scene.stages.size(); ++k) {
+    const auto* settle = std::get_if<SettleStageSpec>(&scene.stages[k].action);
+    if (settle == nullptr) continue;
+    const Table stage = root.require("stages").elements()[k].table();
+    double dt = kInf;
+    try {
+      dt = settle_timestep(scene, *settle);
+    } catch (const dem::ModelError& e) {
+      stage.fail(fmt::format("the contact model of the settle stage cannot be built: {}", e.what()));
+    }
+    if (!in_window(dt)) {
+      stage.fail("max_duration", fmt::format("the settle stage's time step {:.6g} s must be finite and within {} s",
+                                             dt, window()));
+    }
+    const double steps = settle->max_duration / dt;
+    if (steps > kMaxSteps) {
+      stage.fail("max_duration", fmt::format("{} s at the time step {:.6g} s is {:.3g} steps, more than the limit "
+                                             "of 1e9",
+                                             settle->max_duration, dt, steps));
+    }
+  }
+}
+
 /// Checks the time step and the largest number of steps of every formation stage.
 void check_formation_steps(const Table& root, const Scene& scene) {
   for (std::size_t k = 0; k < scene.stages.size(); ++k) {
@@ -203,6 +228,7 @@ void check_time_scales(const Table& root, const Scene& scene, const dem::PairTab
   check_pairs(root, scene, table);
   check_run_timestep(root, scene, table);
   check_formation_steps(root, scene);
+  check_settle_steps(root, scene);
 }
 
 }  // namespace cases::loader

@@ -9,6 +9,13 @@ std::vector<dem::MaterialProperties> formation_materials(std::vector<dem::Materi
   return materials;
 }
 
+std::vector<dem::MaterialProperties> settle_materials(std::vector<dem::MaterialProperties> materials,
+                                                      const SettleStageSpec& stage) {
+  if (!stage.restitution) return materials;
+  for (dem::MaterialProperties& m : materials) m.restitution = *stage.restitution;
+  return materials;
+}
+
 dem::ModelChoice formation_model(dem::ModelChoice model, const FormationStageSpec& stage) {
   if (!stage.friction) {
     model.tangential = "none";

@@ -15,4 +15,9 @@ namespace cases {
 /// resistance) unless the stage keeps friction.
 [[nodiscard]] dem::ModelChoice formation_model(dem::ModelChoice model, const FormationStageSpec& stage);
 
+/// The materials as a settle stage runs them: every restitution replaced by the stage's, when it
+/// sets one.
+[[nodiscard]] std::vector<dem::MaterialProperties> settle_materials(std::vector<dem::MaterialProperties> materials,
+                                                                    const SettleStageSpec& stage);
+
 }  // namespace cases

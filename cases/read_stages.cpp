@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Section reader for [[stages]]: preparation stages the core runs before any engine (agglomerate
-// formation, thesis §5.2.1; launch at a wall, §5.2.2).
+// formation, thesis §5.2.1; launch at a wall, §5.2.2; a pour settled and skimmed, §6.3).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,12 +17,16 @@
 namespace cases::loader {
 namespace {
 
-constexpr std::array<std::string_view, 2> kKinds{"formation", "launch"};
+constexpr std::array<std::string_view, 3> kKinds{"formation", "launch", "settle"};
 constexpr auto kFormationKeys = std::to_array<std::string_view>(
     {"kind", "name", "pull", "pull_time", "restitution", "friction", "walls", "gravity", "kinetic_energy",
      "max_duration"});
+constexpr auto kSettleKeys = std::to_array<std::string_view>(
+    {"kind", "name", "restitution", "kinetic_energy", "min_duration", "max_duration", "remove_above"});
 constexpr auto kLaunchKeys =
     std::to_array<std::string_view>({"kind", "name", "wall", "speed", "angle", "direction", "height"});
+
+void require_restitution_damping(const Value& value, const Scene& scene, std::string_view stage);
 
 FormationStageSpec read_formation(const Table& t, const Scene& scene) {
   t.allow_only(kFormationKeys);
@@ -31,12 +35,7 @@ FormationStageSpec read_formation(const Table& t, const Scene& scene) {
   f.pull_time = t.require("pull_time").number(positive_range());
   const Value restitution = t.require("restitution");
   f.restitution = restitution.number(dem::ValueRange{0.0, 1.0, true, false});
-  if (!used_properties(scene.model).contains("restitution")) {
-    restitution.fail(fmt::format("the model's damping ('{}') does not read a restitution, so the formation "
-                                 "cannot raise the damping; choose damping = \"restitution\" (or another law set "
-                                 "by a restitution)",
-                                 scene.model.damping));
-  }
+  require_restitution_damping(restitution, scene, "formation");
   if (const auto v = t.find("friction")) f.friction = v->boolean();
   if (const auto v = t.find("walls")) f.walls = v->boolean();
   if (const auto v = t.find("gravity")) f.gravity = v->vector3();
@@ -48,6 +47,37 @@ FormationStageSpec read_formation(const Table& t, const Scene& scene) {
                                        f.pull_time, f.max_duration));
   }
   return f;
+}
+
+/// Throws on `value` (a stage's restitution) when the model's damping reads no restitution: the
+/// stage could not change the damping. `stage` names the stage kind in the message.
+void require_restitution_damping(const Value& value, const Scene& scene, std::string_view stage) {
+  if (used_properties(scene.model).contains("restitution")) return;
+  value.fail(fmt::format("the model's damping ('{}') does not read a restitution, so the {} cannot raise the "
+                         "damping; choose damping = \"restitution\" (or another law set by a restitution)",
+                         scene.model.damping, stage));
+}
+
+SettleStageSpec read_settle(const Table& t, const Scene& scene) {
+  t.allow_only(kSettleKeys);
+  SettleStageSpec s;
+  if (const auto v = t.find("restitution")) {
+    s.restitution = v->number(dem::ValueRange{0.0, 1.0, true, false});
+    require_restitution_damping(*v, scene, "settle stage");
+  }
+  s.kinetic_energy = t.require("kinetic_energy").number(positive_range());
+  if (const auto v = t.find("min_duration")) {
+    s.min_duration = v->number(dem::ValueRange{0.0, std::numeric_limits<double>::infinity(), false, true});
+  }
+  s.max_duration = t.require("max_duration").number(positive_range());
+  if (s.max_duration <= s.min_duration) {
+    t.fail("max_duration", fmt::format("must exceed min_duration ({} s), got {} s", s.min_duration, s.max_duration));
+  }
+  if (const auto v = t.find("remove_above")) s.remove_above = v->number();
+  bool gravity = false;
+  for (const double g : scene.gravity) gravity = gravity || g != 0.0;
+  if (!gravity) t.fail("kind", "a settle stage needs gravity ([fields] gravity): without it nothing settles");
+  return s;
 }
 
 LaunchStageSpec read_launch(const Table& t, const Scene& scene) {
@@ -83,6 +113,9 @@ void read_stages(const Table& root, Scene& scene) {
     if (kind == "formation") {
       if (launches > 0) t.fail("kind", "a formation stage must come before the launch stage");
       stage.action = read_formation(t, scene);
+    } else if (kind == "settle") {
+      if (launches > 0) t.fail("kind", "a settle stage must come before the launch stage");
+      stage.action = read_settle(t, scene);
     } else {
       if (++launches > 1) t.fail("kind", "a case has at most one launch stage");
       stage.action = read_launch(t, scene);

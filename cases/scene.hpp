@@ -177,18 +177,32 @@ struct LaunchStageSpec {
   double height = 1.0;     ///< centre-of-mass distance from the wall in units of L_A, > 0.5
 };
 
+/// A pour settled by the core before any engine sees the scene (thesis §6.3): the case's
+/// spheres, walls and gravity run, optionally with every restitution lowered (the thesis' extra
+/// damping while settling), until at least `min_duration` has passed and the kinetic energy of
+/// the mobile spheres (translation and spin) is below `kinetic_energy`; then every mobile sphere
+/// whose centre lies above `remove_above` is removed (the skim of an overfilled reservoir). The
+/// engines run the case from that state: the skimmed bed settling again.
+struct SettleStageSpec {
+  std::optional<double> restitution;  ///< replaces every material's restitution while settling, in (0, 1]
+  double kinetic_energy = 0.0;        ///< settled once E_kin < this [J], > 0
+  double min_duration = 0.0;          ///< never settled before this time [s], ≥ 0
+  double max_duration = 0.0;          ///< the stage fails when not settled by then [s], > min_duration
+  std::optional<double> remove_above;  ///< z [m]: mobile spheres with centres above it are removed
+};
+
 /// One preparation stage of a case (docs/case-format.md, [[stages]]). Stages run in order in
 /// the core, before any engine; each turns the scene's particle list into a new explicit one.
 struct StageSpec {
   std::string name;  ///< label in messages and reports
-  std::variant<FormationStageSpec, LaunchStageSpec> action;
+  std::variant<FormationStageSpec, LaunchStageSpec, SettleStageSpec> action;
 };
 
 /// What a preparation stage did, for reports: named figures (formation time, L_A, …) and
 /// whether the result came from the stage cache.
 struct StageRecord {
   std::string name;
-  std::string kind;  ///< "formation" or "launch"
+  std::string kind;  ///< "formation", "launch" or "settle"
   std::vector<std::pair<std::string, double>> figures;
   bool cached = false;
 };

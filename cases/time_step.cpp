@@ -85,6 +85,14 @@ double formation_timestep(const Scene& scene, const FormationStageSpec& stage) {
                                            stage.gravity, scene.integration, table));
 }
 
+double settle_timestep(const Scene& scene, const SettleStageSpec& stage) {
+  if (scene.integration.timestep) return *scene.integration.timestep;
+  const std::vector<dem::MaterialProperties> materials = settle_materials(scene.materials, stage);
+  const dem::PairTable table(materials, scene.mixing, scene.pair_overrides, scene.model);
+  return dem::automatic_timestep(
+      limits_of(scene.particles, materials, scene.walls, scene.gravity, scene.integration, table));
+}
+
 std::uint64_t step_count(double duration, double dt) noexcept {
   const double n = std::ceil(duration / dt * (1.0 - 1e-12));
   if (std::isnan(n)) return 1;

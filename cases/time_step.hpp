@@ -44,6 +44,8 @@ struct SphereCensus {
 /// automatic step of the scene as the stage runs it (formation_materials, formation_model, its own
 /// gravity, walls only when it keeps them; see prepare/formation.cpp). +∞ when no contact can occur.
 [[nodiscard]] double formation_timestep(const Scene& scene, const FormationStageSpec& stage);
+/// Δt of a settle stage's run: the case's, or the automatic one with the stage's materials.
+[[nodiscard]] double settle_timestep(const Scene& scene, const SettleStageSpec& stage);
 
 /// The simulated time of a run of the scene [s]: integration.duration, or, when a launch stage
 /// sets it ("launch"), eq 5.1's t_max = 4 L_A / (u sin θ) with L_A taken from the mobile spheres

@@ -12,6 +12,7 @@
 #include "cases/case_loader.hpp"
 #include "prepare/formation.hpp"
 #include "prepare/launch.hpp"
+#include "prepare/settle.hpp"
 #include "prepare/stage_cache.hpp"
 #include "store/scene_json.hpp"
 #include "support/sha256.hpp"
@@ -44,11 +45,13 @@ void check_clear_of_walls(const cases::Scene& scene, std::size_t index) {
   }
 }
 
-/// Runs one formation stage (or reads it from the cache) and records it.
-void run_formation(cases::Scene& scene, std::size_t index, const cases::FormationStageSpec& stage,
-                   const PrepareOptions& options) {
+/// The result of stage `index`: read from the cache when it holds one for the stage's inputs
+/// (and the run does not refresh), else computed by `run` and stored. Particle positions,
+/// velocities and spins of `scene` are replaced by the result; `record` gets its figures.
+template <class Run>
+void run_cached_stage(cases::Scene& scene, std::size_t index, const PrepareOptions& options, cases::StageRecord& record,
+                      Run run) {
   const std::string key = stage_key(scene, index, options.core_revision);
-  cases::StageRecord record{scene.stages[index].name, "formation", {}, false};
   if (options.cache_dir && !options.refresh) {
     if (auto hit = find_stage(*options.cache_dir, key, scene.particles.size())) {
       for (std::size_t i = 0; i < scene.particles.size(); ++i) {
@@ -58,25 +61,56 @@ void run_formation(cases::Scene& scene, std::size_t index, const cases::Formatio
       }
       record.figures = hit->figures;
       record.cached = true;
-      scene.stage_log.push_back(record);
       return;
     }
   }
-  Formation formed;
+  StoredStage result;
   try {
-    formed = form_agglomerate(scene, stage, options.threads);
+    result = run();
   } catch (const std::runtime_error& e) {
     throw cases::CaseError(scene.source_path, stage_key_name(index),
-                           fmt::format("formation stage '{}': {}", scene.stages[index].name, e.what()));
+                           fmt::format("{} stage '{}': {}", record.kind, scene.stages[index].name, e.what()));
   }
-  scene.particles = formed.particles;
-  record.figures = {{"time", formed.time},
-                    {"steps", static_cast<double>(formed.steps)},
-                    {"timestep", formed.timestep},
-                    {"kinetic_energy", formed.kinetic_energy},
-                    {"drift_speed", formed.drift_speed},
-                    {"turn_rate", formed.turn_rate}};
-  if (options.cache_dir) store_stage(*options.cache_dir, key, {formed.particles, record.figures});
+  scene.particles = result.particles;
+  record.figures = result.figures;
+  if (options.cache_dir) store_stage(*options.cache_dir, key, result);
+}
+
+/// Runs one formation stage (or reads it from the cache) and records it.
+void run_formation(cases::Scene& scene, std::size_t index, const cases::FormationStageSpec& stage,
+                   const PrepareOptions& options) {
+  cases::StageRecord record{scene.stages[index].name, "formation", {}, false};
+  run_cached_stage(scene, index, options, record, [&] {
+    const Formation formed = form_agglomerate(scene, stage, options.threads);
+    return StoredStage{formed.particles,
+                       {{"time", formed.time},
+                        {"steps", static_cast<double>(formed.steps)},
+                        {"timestep", formed.timestep},
+                        {"kinetic_energy", formed.kinetic_energy},
+                        {"drift_speed", formed.drift_speed},
+                        {"turn_rate", formed.turn_rate}}};
+  });
+  scene.stage_log.push_back(record);
+}
+
+/// Runs one settle stage (or reads the settled pour from the cache), removes the spheres above
+/// its height, and records both.
+void run_settle(cases::Scene& scene, std::size_t index, const cases::SettleStageSpec& stage,
+                const PrepareOptions& options) {
+  cases::StageRecord record{scene.stages[index].name, "settle", {}, false};
+  run_cached_stage(scene, index, options, record, [&] {
+    const Settled settled = settle(scene, stage, options.threads);
+    return StoredStage{settled.particles,
+                       {{"time", settled.time},
+                        {"steps", static_cast<double>(settled.steps)},
+                        {"timestep", settled.timestep},
+                        {"kinetic_energy", settled.kinetic_energy}}};
+  });
+  if (stage.remove_above) {
+    const std::size_t removed = remove_above(scene, *stage.remove_above, stage_key_name(index));
+    record.figures.emplace_back("removed", static_cast<double>(removed));
+    record.figures.emplace_back("remaining", static_cast<double>(scene.particles.size()));
+  }
   scene.stage_log.push_back(record);
 }
 
@@ -140,6 +174,8 @@ cases::Scene prepare_scene(const cases::Scene& scene, const PrepareOptions& opti
   for (std::size_t k = 0; k < scene.stages.size(); ++k) {
     if (const auto* f = std::get_if<cases::FormationStageSpec>(&scene.stages[k].action)) {
       run_formation(out, k, *f, options);
+    } else if (const auto* settle = std::get_if<cases::SettleStageSpec>(&scene.stages[k].action)) {
+      run_settle(out, k, *settle, options);
     } else {
       run_launch(out, k, std::get<cases::LaunchStageSpec>(scene.stages[k].action));
     }

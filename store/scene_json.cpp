@@ -80,6 +80,15 @@ Json stage_json(const cases::StageSpec& st) {
             {"gravity", f->gravity},       {"kinetic_energy", f->kinetic_energy},
             {"max_duration", f->max_duration}};
   }
+  if (const auto* settle = std::get_if<cases::SettleStageSpec>(&st.action)) {
+    Json j = {{"kind", "settle"},
+              {"kinetic_energy", settle->kinetic_energy},
+              {"min_duration", settle->min_duration},
+              {"max_duration", settle->max_duration}};
+    if (settle->restitution) j["restitution"] = *settle->restitution;
+    if (settle->remove_above) j["remove_above"] = *settle->remove_above;
+    return j;
+  }
   const auto& l = std::get<cases::LaunchStageSpec>(st.action);
   return {{"kind", "launch"}, {"wall", l.wall},           {"speed", l.speed},
           {"angle", l.angle}, {"direction", l.direction}, {"height", l.height}};
