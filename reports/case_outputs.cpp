@@ -64,9 +64,14 @@ void write_case_outputs(const comparison::CaseOutcome& outcome, const std::files
       if (!run.energy.empty()) {
         support::write_file(dir / ("energy_" + run.engine + ".csv"), trace_csv(run.energy));
       }
+      std::vector<std::pair<std::string, double>> series;
       for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
-        support::write_file(dir / "snapshots" / fmt::format("{}_{:04d}.vtk", run.engine, k),
-                            snapshot_vtk(outcome.scene, run.snapshots[k], run.engine));
+        const std::string name = fmt::format("{}_{:04d}.vtk", run.engine, k);
+        support::write_file(dir / "snapshots" / name, snapshot_vtk(outcome.scene, run.snapshots[k], run.engine));
+        series.emplace_back(name, run.snapshots[k].time);
+      }
+      if (!series.empty()) {
+        support::write_file(dir / "snapshots" / (run.engine + ".vtk.series"), vtk_series(series));
       }
     }
   }

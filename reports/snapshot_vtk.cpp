@@ -2,6 +2,9 @@
 #include "reports/snapshot_vtk.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "compare/metrics_breakup.hpp"
 
 namespace reports {
 namespace {
@@ -11,7 +14,45 @@ void append_vectors(std::string& out, const char* name, const std::vector<cases:
   for (const auto& x : v) out += fmt::format("{:.17g} {:.17g} {:.17g}\n", x[0], x[1], x[2]);
 }
 
+void append_ints(std::string& out, const char* name, const std::vector<int>& v) {
+  out += fmt::format("SCALARS {} int 1\nLOOKUP_TABLE default\n", name);
+  for (const int x : v) out += fmt::format("{}\n", x);
+}
+
 }  // namespace
+
+std::vector<int> snapshot_contacts(const cases::Scene& scene, const cases::Snapshot& snap) {
+  const std::size_t n = snap.position.size();
+  std::vector<comparison::breakup::SnapshotSphere> spheres;
+  spheres.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& x = snap.position[i];
+    spheres.push_back({dem::Vec3(x[0], x[1], x[2]), scene.particles.at(i).radius});
+  }
+  std::vector<int> count(n, 0);
+  for (const auto& [i, j] :
+       comparison::breakup::bonded_pairs(spheres, comparison::breakup::body_contact(spheres))) {
+    ++count[i];
+    ++count[j];
+  }
+  for (const cases::WallSpec& w : scene.walls) {
+    const dem::Vec3 normal(w.normal[0], w.normal[1], w.normal[2]);
+    const dem::Vec3 point = dem::Vec3(w.point[0], w.point[1], w.point[2]) +
+                            snap.time * dem::Vec3(w.velocity[0], w.velocity[1], w.velocity[2]);
+    for (std::size_t i = 0; i < n; ++i) {
+      if ((spheres[i].position - point).dot(normal) < spheres[i].radius) ++count[i];
+    }
+  }
+  return count;
+}
+
+std::string vtk_series(const std::vector<std::pair<std::string, double>>& files) {
+  nlohmann::ordered_json j;
+  j["file-series-version"] = "1.0";
+  j["files"] = nlohmann::ordered_json::array();
+  for (const auto& [name, time] : files) j["files"].push_back({{"name", name}, {"time", time}});
+  return j.dump(2) + "\n";
+}
 
 std::string snapshot_vtk(const cases::Scene& scene, const cases::Snapshot& snap,
                          const std::string& engine) {
@@ -29,6 +70,10 @@ std::string snapshot_vtk(const cases::Scene& scene, const cases::Snapshot& snap,
   for (std::size_t i = 0; i < n; ++i) out += fmt::format("{:.17g}\n", scene.particles.at(i).effect_radius);
   out += "SCALARS fixed int 1\nLOOKUP_TABLE default\n";
   for (std::size_t i = 0; i < n; ++i) out += scene.particles.at(i).fixed ? "1\n" : "0\n";
+  std::vector<int> material(n);
+  for (std::size_t i = 0; i < n; ++i) material[i] = static_cast<int>(scene.particles.at(i).material);
+  append_ints(out, "material", material);
+  append_ints(out, "contacts", snapshot_contacts(scene, snap));
   append_vectors(out, "velocity", snap.velocity);
   append_vectors(out, "angular_velocity", snap.angular_velocity);
   return out;

@@ -100,6 +100,35 @@ TEST(SnapshotVtk, WritesPointsRadiiAndVelocities) {
   EXPECT_NE(vtk.find("SCALARS radius double 1\nLOOKUP_TABLE default\n0.01\n0.10000000000000001\n"), std::string::npos);
   EXPECT_NE(vtk.find("SCALARS fixed int 1\nLOOKUP_TABLE default\n0\n1\n"), std::string::npos);
   EXPECT_NE(vtk.find("VECTORS velocity double\n4 0 0\n"), std::string::npos);
+  EXPECT_NE(vtk.find("SCALARS material int 1\nLOOKUP_TABLE default\n0\n0\n"), std::string::npos) << vtk;
+  EXPECT_NE(vtk.find("SCALARS contacts int 1\nLOOKUP_TABLE default\n"), std::string::npos) << vtk;
+}
+
+TEST(SnapshotVtk, CountsEachSpheresContactsWithSpheresAndWalls) {
+  // Three spheres of radius 10 mm over a floor that rises at 1 mm/s: 0 and 1 overlap (15.6 mm
+  // apart), 2 is 30 mm from both; at t = 1 s the floor is at z = 1 mm and 0 and 2 (centres 9 and
+  // 9.5 mm above it) overlap it, while 1 (19 mm above) does not.
+  cases::Scene scene;
+  scene.particles.resize(3);
+  for (auto& p : scene.particles) p.radius = 0.01;
+  cases::WallSpec floor;
+  floor.normal = {0.0, 0.0, 1.0};
+  floor.velocity = {0.0, 0.0, 0.001};  // at t = 1 s the floor is at z = 1 mm
+  scene.walls.push_back(floor);
+  cases::Snapshot snap;
+  snap.time = 1.0;
+  snap.position = {{0.0, 0.0, 0.010}, {0.012, 0.0, 0.02}, {0.0, 0.03, 0.0105}};
+  EXPECT_EQ(reports::snapshot_contacts(scene, snap), (std::vector<int>{2, 1, 1}));
+  snap.time = 0.0;  // the floor at z = 0: spheres 0 (10 mm up) and 2 (10.5 mm) no longer overlap it
+  EXPECT_EQ(reports::snapshot_contacts(scene, snap), (std::vector<int>{1, 1, 0}));
+}
+
+TEST(SnapshotVtk, TheSeriesFileListsEachSnapshotWithItsTime) {
+  const auto j = nlohmann::json::parse(reports::vtk_series({{"inhouse_0000.vtk", 0.0}, {"inhouse_0001.vtk", 0.045}}));
+  EXPECT_EQ(j.at("file-series-version"), "1.0");
+  ASSERT_EQ(j.at("files").size(), 2U);
+  EXPECT_EQ(j.at("files")[1].at("name"), "inhouse_0001.vtk");
+  EXPECT_EQ(j.at("files")[1].at("time"), 0.045);
 }
 
 TEST(Gnuplot, RendersAPngAndKeepsItsDataAndScript) {
