@@ -150,54 +150,42 @@ void check_run_timestep(const Table& root, const Scene& scene, const dem::PairTa
                                            kind, dt, duration, steps));
 }
 
-/// Checks the time step and the largest number of steps of every settle stage.
-void check_settle_steps(const Table& root, const Scene& scene) {
-  for (std::size_t k = 0; k < scene.stages.size(); ++k) {
-    const auto* settle = std::get_if<SettleStageSpec>(&scene.stages[k].action);
-    if (settle == nullptr) continue;
-    const Table stage = root.require("stages").elements()[k].table();
-    double dt = kInf;
-    try {
-      dt = settle_timestep(scene, *settle);
-    } catch (const dem::ModelError& e) {
-      stage.fail(fmt::format("the contact model of the settle stage cannot be built: {}", e.what()));
-    }
-    if (!in_window(dt)) {
-      stage.fail("max_duration", fmt::format("the settle stage's time step {:.6g} s must be finite and within {} s",
-                                             dt, window()));
-    }
-    const double steps = settle->max_duration / dt;
-    if (steps > kMaxSteps) {
-      stage.fail("max_duration", fmt::format("{} s at the time step {:.6g} s is {:.3g} steps, more than the limit "
-                                             "of 1e9",
-                                             settle->max_duration, dt, steps));
-    }
+/// Checks one stage's time step (`timestep()`, the stage's own run) and its largest number of
+/// steps. `what` names the stage in messages, `dt_key` is the key blamed for a time step outside
+/// the window. A stage whose spheres can never touch (Δt = ∞ without a case time step) passes: it
+/// says so when it runs.
+template <class Timestep>
+void check_stage_steps(const Table& stage, const Scene& scene, std::string_view what, std::string_view dt_key,
+                       double max_duration, Timestep timestep) {
+  double dt = kInf;
+  try {
+    dt = timestep();
+  } catch (const dem::ModelError& e) {
+    stage.fail(fmt::format("the contact model of the {} cannot be built: {}", what, e.what()));
+  }
+  if (std::isinf(dt) && !scene.integration.timestep) return;
+  if (!in_window(dt)) {
+    stage.fail(dt_key, fmt::format("the {}'s automatic time step {:.6g} s must be finite and within {} s", what, dt,
+                                   window()));
+  }
+  const double steps = max_duration / dt;
+  if (steps > kMaxSteps) {
+    stage.fail("max_duration", fmt::format("{} s at the time step {:.6g} s is {:.3g} steps, more than the limit "
+                                           "of 1e9",
+                                           max_duration, dt, steps));
   }
 }
 
-/// Checks the time step and the largest number of steps of every formation stage.
-void check_formation_steps(const Table& root, const Scene& scene) {
+/// Checks the time step and the largest number of steps of every formation and settle stage.
+void check_stage_steps(const Table& root, const Scene& scene) {
   for (std::size_t k = 0; k < scene.stages.size(); ++k) {
-    const auto* formation = std::get_if<FormationStageSpec>(&scene.stages[k].action);
-    if (formation == nullptr) continue;
-    const Table stage = root.require("stages").elements()[k].table();
-    double dt = kInf;
-    try {
-      dt = formation_timestep(scene, *formation);
-    } catch (const dem::ModelError& e) {
-      stage.fail(fmt::format("the contact model of the formation cannot be built: {}", e.what()));
-    }
-    if (std::isinf(dt) && !scene.integration.timestep) continue;  // no contact: the stage says so
-    if (!in_window(dt)) {
-      stage.fail("restitution", fmt::format("the formation's automatic time step {:.6g} s must be finite and within "
-                                            "{} s",
-                                            dt, window()));
-    }
-    const double steps = formation->max_duration / dt;
-    if (steps > kMaxSteps) {
-      stage.fail("max_duration", fmt::format("{} s at the time step {:.6g} s is {:.3g} steps, more than the limit "
-                                             "of 1e9",
-                                             formation->max_duration, dt, steps));
+    const auto& action = scene.stages[k].action;
+    if (const auto* formation = std::get_if<FormationStageSpec>(&action)) {
+      check_stage_steps(root.require("stages").elements()[k].table(), scene, "formation", "restitution",
+                        formation->max_duration, [&] { return formation_timestep(scene, *formation); });
+    } else if (const auto* settle = std::get_if<SettleStageSpec>(&action)) {
+      check_stage_steps(root.require("stages").elements()[k].table(), scene, "settle stage", "max_duration",
+                        settle->max_duration, [&] { return settle_timestep(scene, *settle); });
     }
   }
 }
@@ -227,8 +215,7 @@ void check_sphere_masses(const Table& root, const Scene& scene) {
 void check_time_scales(const Table& root, const Scene& scene, const dem::PairTable& table) {
   check_pairs(root, scene, table);
   check_run_timestep(root, scene, table);
-  check_formation_steps(root, scene);
-  check_settle_steps(root, scene);
+  check_stage_steps(root, scene);
 }
 
 }  // namespace cases::loader

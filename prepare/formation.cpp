@@ -12,6 +12,7 @@
 #include "cases/formation_model.hpp"
 #include "dem/fields/central_pull.hpp"
 #include "dem/simulation/simulation.hpp"
+#include "prepare/core_run.hpp"
 #include "reference/common/core_setup.hpp"
 
 namespace prepare {
@@ -114,43 +115,18 @@ Formation form_agglomerate(const cases::Scene& scene, const cases::FormationStag
 
   dem::Simulation sim(setup);
   const double dt = sim.timestep();
-  const auto max_steps = static_cast<std::uint64_t>(std::ceil(stage.max_duration / dt));
-  const auto pull_steps = static_cast<std::uint64_t>(std::ceil(stage.pull_time / dt));
-  double energy = internal_kinetic_energy(sim);
-  bool settled = false;
-  while (sim.steps() < max_steps) {
-    sim.step();
-    if (sim.steps() < pull_steps) continue;
-    energy = internal_kinetic_energy(sim);
-    if (!std::isfinite(energy)) {
-      throw std::runtime_error(fmt::format("the formation run blew up at t = {:.6g} s (kinetic energy {})",
-                                           sim.time(), energy));
-    }
-    if (energy < stage.kinetic_energy) {
-      settled = true;
-      break;
-    }
-  }
-  if (!settled) {
-    throw std::runtime_error(fmt::format(
-        "the spheres had not settled after max_duration = {} s: kinetic energy {:.6g} J, threshold "
-        "kinetic_energy = {:.6g} J (raise max_duration, lower restitution, or raise the threshold)",
-        stage.max_duration, energy, stage.kinetic_energy));
-  }
+  const SettleCriterion criterion{static_cast<std::uint64_t>(std::ceil(stage.pull_time / dt)),
+                                  static_cast<std::uint64_t>(std::ceil(stage.max_duration / dt)), stage.kinetic_energy,
+                                  stage.max_duration};
+  const double energy = run_until_settled(sim, criterion, internal_kinetic_energy, "formation");
 
   // The formed agglomerate at rest as a whole: its rigid motion is taken out of every mobile sphere.
   const RigidMotion rigid = rigid_motion(sim);
   Formation out;
-  out.particles = scene.particles;
+  out.particles = particles_at(sim, scene.particles);
   for (std::uint32_t id = 0; id < out.particles.size(); ++id) {
     const auto c = static_cast<Eigen::Index>(sim.slot(id));
     cases::ParticleSpec& p = out.particles[id];
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto a = static_cast<Eigen::Index>(k);
-      p.position[k] = sim.state().position(a, c);
-      p.velocity[k] = sim.state().velocity(a, c);
-      p.angular_velocity[k] = sim.state().angular_velocity(a, c);
-    }
     if (!p.fixed) {
       const dem::Vec3 v = sim.state().velocity.col(c) - rigid.at(sim.state().position.col(c));
       p.velocity = {v[0], v[1], v[2]};

@@ -11,6 +11,7 @@
 #include "cases/case_loader.hpp"
 #include "cases/formation_model.hpp"
 #include "dem/simulation/simulation.hpp"
+#include "prepare/core_run.hpp"
 #include "reference/common/core_setup.hpp"
 
 namespace prepare {
@@ -62,45 +63,15 @@ Settled settle(const cases::Scene& scene, const cases::SettleStageSpec& stage, i
   core.simulation.track_energy = false;
   dem::Simulation sim(core.simulation);
   const double dt = sim.timestep();
-  const auto max_steps = static_cast<std::uint64_t>(std::ceil(stage.max_duration / dt));
-  const auto min_steps = static_cast<std::uint64_t>(std::ceil(stage.min_duration / dt));
-  double energy = mobile_kinetic_energy(sim);
-  bool settled = false;
-  while (sim.steps() < max_steps) {
-    sim.step();
-    if (sim.steps() < min_steps) continue;
-    energy = mobile_kinetic_energy(sim);
-    if (!std::isfinite(energy)) {
-      throw std::runtime_error(
-          fmt::format("the settle run blew up at t = {:.6g} s (kinetic energy {})", sim.time(), energy));
-    }
-    if (energy < stage.kinetic_energy) {
-      settled = true;
-      break;
-    }
-  }
-  if (!settled) {
-    throw std::runtime_error(fmt::format(
-        "the spheres had not settled after max_duration = {} s: kinetic energy {:.6g} J, threshold "
-        "kinetic_energy = {:.6g} J (raise max_duration, lower restitution, or raise the threshold)",
-        stage.max_duration, energy, stage.kinetic_energy));
-  }
+  const SettleCriterion criterion{static_cast<std::uint64_t>(std::ceil(stage.min_duration / dt)),
+                                  static_cast<std::uint64_t>(std::ceil(stage.max_duration / dt)), stage.kinetic_energy,
+                                  stage.max_duration};
   Settled out;
-  out.particles = scene.particles;
-  for (std::uint32_t id = 0; id < out.particles.size(); ++id) {
-    const auto c = static_cast<Eigen::Index>(sim.slot(id));
-    cases::ParticleSpec& p = out.particles[id];
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto a = static_cast<Eigen::Index>(k);
-      p.position[k] = sim.state().position(a, c);
-      p.velocity[k] = sim.state().velocity(a, c);
-      p.angular_velocity[k] = sim.state().angular_velocity(a, c);
-    }
-  }
+  out.kinetic_energy = run_until_settled(sim, criterion, mobile_kinetic_energy, "settle");
+  out.particles = particles_at(sim, scene.particles);
   out.time = sim.time();
   out.steps = sim.steps();
   out.timestep = dt;
-  out.kinetic_energy = energy;
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include "cases/case_loader.hpp"
 #include "compare/metrics_breakup_run.hpp"
 #include "prepare/prepare_scene.hpp"
+#include "same_particles.hpp"
 #include "../small_agglomerate.hpp"
 
 namespace prepare_scene_test {
@@ -26,16 +27,7 @@ std::filesystem::path scratch(const std::string& name) {
   return dir;
 }
 
-bool same_particles(const cases::Scene& a, const cases::Scene& b) {
-  if (a.particles.size() != b.particles.size()) return false;
-  for (std::size_t i = 0; i < a.particles.size(); ++i) {
-    if (a.particles[i].position != b.particles[i].position || a.particles[i].velocity != b.particles[i].velocity ||
-        a.particles[i].angular_velocity != b.particles[i].angular_velocity) {
-      return false;
-    }
-  }
-  return true;
-}
+using test_support::same_particles;
 
 /// Fragments of the prepared scene's spheres under its own bond rule.
 std::uint32_t fragments_of(const cases::Scene& s) {

@@ -11,6 +11,7 @@
 #include "cases/case_loader.hpp"
 #include "prepare/prepare_scene.hpp"
 #include "prepare/settle.hpp"
+#include "same_particles.hpp"
 
 namespace settle_test {
 
@@ -58,16 +59,7 @@ constexpr const char* kSettle = "kinetic_energy = 1.0e-8\nmin_duration = 0.05\nm
 
 cases::Scene load(const std::string& text) { return cases::load_case_text(text, "small_pour.toml"); }
 
-bool same_particles(const cases::Scene& a, const cases::Scene& b) {
-  if (a.particles.size() != b.particles.size()) return false;
-  for (std::size_t i = 0; i < a.particles.size(); ++i) {
-    if (a.particles[i].position != b.particles[i].position || a.particles[i].velocity != b.particles[i].velocity ||
-        a.particles[i].angular_velocity != b.particles[i].angular_velocity) {
-      return false;
-    }
-  }
-  return true;
-}
+using test_support::same_particles;
 
 /// The figure `name` of a stage record.
 double figure(const cases::StageRecord& r, const std::string& name) {

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+#include "prepare/core_run.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace prepare {
+
+double run_until_settled(dem::Simulation& sim, const SettleCriterion& criterion,
+                         const std::function<double(const dem::Simulation&)>& energy, std::string_view run) {
+  double e = energy(sim);
+  while (sim.steps() < criterion.max_steps) {
+    sim.step();
+    if (sim.steps() < criterion.first_step) continue;
+    e = energy(sim);
+    if (!std::isfinite(e)) {
+      throw std::runtime_error(fmt::format("the {} run blew up at t = {:.6g} s (kinetic energy {})", run, sim.time(), e));
+    }
+    if (e < criterion.threshold) return e;
+  }
+  throw std::runtime_error(fmt::format(
+      "the spheres had not settled after max_duration = {} s: kinetic energy {:.6g} J, threshold "
+      "kinetic_energy = {:.6g} J (raise max_duration, lower restitution, or raise the threshold)",
+      criterion.max_duration, e, criterion.threshold));
+}
+
+std::vector<cases::ParticleSpec> particles_at(const dem::Simulation& sim, std::vector<cases::ParticleSpec> particles) {
+  for (std::uint32_t id = 0; id < particles.size(); ++id) {
+    const auto c = static_cast<Eigen::Index>(sim.slot(id));
+    cases::ParticleSpec& p = particles[id];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto a = static_cast<Eigen::Index>(k);
+      p.position[k] = sim.state().position(a, c);
+      p.velocity[k] = sim.state().velocity(a, c);
+      p.angular_velocity[k] = sim.state().angular_velocity(a, c);
+    }
+  }
+  return particles;
+}
+
+}  // namespace prepare

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+#include "cases/scene.hpp"
+#include "dem/simulation/simulation.hpp"
+
+namespace prepare {
+
+/// When a preparation run counts as settled: not before `first_step`, at the first step whose
+/// energy is below `threshold`, failing at `max_steps`.
+struct SettleCriterion {
+  std::uint64_t first_step = 0;  ///< no check before this step
+  std::uint64_t max_steps = 0;   ///< the run fails when not settled by then
+  double threshold = 0.0;        ///< settled below this energy [J]
+  double max_duration = 0.0;     ///< max_steps as a time, for the message [s]
+};
+
+/// Steps `sim` until `energy(sim)` (checked after every step from `criterion.first_step`) falls
+/// below the threshold; returns that energy. Throws std::runtime_error, naming `run` ("formation",
+/// "settle"), when the energy is not finite (the run blew up) or the threshold is not reached by
+/// `criterion.max_steps`.
+double run_until_settled(dem::Simulation& sim, const SettleCriterion& criterion,
+                         const std::function<double(const dem::Simulation&)>& energy, std::string_view run);
+
+/// `particles` (the scene's, in scene order) with the positions, velocities and spins `sim` has
+/// reached.
+std::vector<cases::ParticleSpec> particles_at(const dem::Simulation& sim, std::vector<cases::ParticleSpec> particles);
+
+}  // namespace prepare
