@@ -169,11 +169,12 @@ double obscured_fraction(std::span<const cases::Vector3> centres, std::span<cons
   return static_cast<double>(obscured) / static_cast<double>(ny * nz);
 }
 
-double coordination_number(std::span<const cases::Vector3> centres, std::span<const double> radii, const Box& box) {
+std::vector<std::uint32_t> contact_counts(std::span<const cases::Vector3> centres, std::span<const double> radii) {
   if (centres.size() != radii.size()) {
-    throw std::invalid_argument("coordination_number: the centres and radii differ in number");
+    throw std::invalid_argument("contact_counts: the centres and radii differ in number");
   }
   std::vector<breakup::SnapshotSphere> spheres;
+  spheres.reserve(centres.size());
   for (std::size_t k = 0; k < centres.size(); ++k) {
     spheres.push_back({dem::Vec3(centres[k][0], centres[k][1], centres[k][2]), radii[k]});
   }
@@ -182,6 +183,11 @@ double coordination_number(std::span<const cases::Vector3> centres, std::span<co
     ++contacts[i];
     ++contacts[j];
   }
+  return contacts;
+}
+
+double coordination_number(std::span<const cases::Vector3> centres, std::span<const double> radii, const Box& box) {
+  const std::vector<std::uint32_t> contacts = contact_counts(centres, radii);
   std::size_t inside = 0;
   std::size_t sum = 0;
   for (std::size_t k = 0; k < centres.size(); ++k) {

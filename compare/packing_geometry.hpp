@@ -4,7 +4,9 @@
 // obscured reservoir fraction of thesis appendix G (docs/metrics.md, "Packing").
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 #include <stdexcept>
 
 #include "cases/scene.hpp"
@@ -50,9 +52,14 @@ struct Box {
 [[nodiscard]] double obscured_fraction(std::span<const cases::Vector3> centres, std::span<const double> radii,
                                        const Box& box, std::size_t ny, std::size_t nz);
 
+/// Body contacts (overlap > 0) of each of the given spheres with the others, found by the
+/// breakup metrics' cell search. Throws std::invalid_argument when the sizes differ.
+[[nodiscard]] std::vector<std::uint32_t> contact_counts(std::span<const cases::Vector3> centres,
+                                                        std::span<const double> radii);
+
 /// Mean number of body contacts (overlap > 0) with any of the given spheres, over the spheres
-/// whose centres lie in `box` (the breakup metrics' cell search finds the contacts). Throws
-/// std::invalid_argument when no centre lies in the box or the sizes differ.
+/// whose centres lie in `box` (contact_counts). Throws std::invalid_argument when no centre lies
+/// in the box or the sizes differ.
 [[nodiscard]] double coordination_number(std::span<const cases::Vector3> centres, std::span<const double> radii,
                                          const Box& box);
 

@@ -8,6 +8,13 @@
 
 namespace prepare {
 
+cases::Scene stage_run_scene(cases::Scene scene) {
+  scene.fluid.reset();
+  scene.stages.clear();
+  scene.output = cases::OutputSpec{};
+  return scene;
+}
+
 double run_until_settled(dem::Simulation& sim, const SettleCriterion& criterion,
                          const std::function<double(const dem::Simulation&)>& energy, std::string_view run) {
   double e = energy(sim);

@@ -11,6 +11,10 @@
 
 namespace prepare {
 
+/// `scene` as a preparation stage runs it in the core: no fluid, no stages of its own and no output
+/// (the stage reads the simulation's state, not a trace).
+cases::Scene stage_run_scene(cases::Scene scene);
+
 /// When a preparation run counts as settled: not before `first_step`, at the first step whose
 /// energy is below `threshold`, failing at `max_steps`.
 struct SettleCriterion {

@@ -80,14 +80,11 @@ double internal_kinetic_energy(const dem::Simulation& sim) {
 }  // namespace
 
 cases::Scene formation_scene(const cases::Scene& scene, const cases::FormationStageSpec& stage) {
-  cases::Scene s = scene;
+  cases::Scene s = stage_run_scene(scene);
   s.materials = cases::formation_materials(std::move(s.materials), stage);
   s.model = cases::formation_model(std::move(s.model), stage);
   if (!stage.walls) s.walls.clear();
   s.gravity = stage.gravity;
-  s.fluid.reset();
-  s.stages.clear();
-  s.output = cases::OutputSpec{};
   return s;
 }
 

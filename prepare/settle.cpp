@@ -49,11 +49,8 @@ std::size_t renumbered(const std::vector<std::size_t>& renumber, std::size_t i, 
 }  // namespace
 
 cases::Scene settle_scene(const cases::Scene& scene, const cases::SettleStageSpec& stage) {
-  cases::Scene s = scene;
+  cases::Scene s = stage_run_scene(scene);
   s.materials = cases::settle_materials(std::move(s.materials), stage);
-  s.fluid.reset();
-  s.stages.clear();
-  s.output = cases::OutputSpec{};
   return s;
 }
 

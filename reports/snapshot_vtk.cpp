@@ -4,7 +4,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "compare/metrics_breakup.hpp"
+#include "compare/packing_geometry.hpp"
+#include "dem/core/vector.hpp"
 
 namespace reports {
 namespace {
@@ -23,24 +24,17 @@ void append_ints(std::string& out, const char* name, const std::vector<int>& v) 
 
 std::vector<int> snapshot_contacts(const cases::Scene& scene, const cases::Snapshot& snap) {
   const std::size_t n = snap.position.size();
-  std::vector<comparison::breakup::SnapshotSphere> spheres;
-  spheres.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& x = snap.position[i];
-    spheres.push_back({dem::Vec3(x[0], x[1], x[2]), scene.particles.at(i).radius});
-  }
-  std::vector<int> count(n, 0);
-  for (const auto& [i, j] :
-       comparison::breakup::bonded_pairs(spheres, comparison::breakup::body_contact(spheres))) {
-    ++count[i];
-    ++count[j];
-  }
+  std::vector<double> radii(n);
+  for (std::size_t i = 0; i < n; ++i) radii[i] = scene.particles.at(i).radius;
+  const std::vector<std::uint32_t> spheres = comparison::contact_counts(snap.position, radii);
+  std::vector<int> count(spheres.begin(), spheres.end());
   for (const cases::WallSpec& w : scene.walls) {
     const dem::Vec3 normal(w.normal[0], w.normal[1], w.normal[2]);
     const dem::Vec3 point = dem::Vec3(w.point[0], w.point[1], w.point[2]) +
                             snap.time * dem::Vec3(w.velocity[0], w.velocity[1], w.velocity[2]);
     for (std::size_t i = 0; i < n; ++i) {
-      if ((spheres[i].position - point).dot(normal) < spheres[i].radius) ++count[i];
+      const auto& x = snap.position[i];
+      if ((dem::Vec3(x[0], x[1], x[2]) - point).dot(normal) < radii[i]) ++count[i];
     }
   }
   return count;

@@ -3,6 +3,7 @@
 // wall, a velocity aimed at a wall and Hertz walls on YADE, each checked against closed forms written out here, not
 // taken from the analytic engine or the core's mixing.
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -30,6 +31,16 @@ double metric(cases::Scene scene, const cases::RunResult& run, std::size_t parti
   const comparison::MetricValue& v = set.at(name);
   EXPECT_TRUE(v.value.has_value()) << run.engine << " " << name << ": " << v.problem;
   return v.value.value_or(NAN);
+}
+
+/// Expects each metric of sphere 0's contact with wall 0 to agree between two runs within 1e-12
+/// relative: the same law in both codes, so round-off, not a tolerance.
+void expect_round_off_agreement(const cases::Scene& scene, const cases::RunResult& a, const cases::RunResult& b,
+                                std::initializer_list<const char*> names) {
+  for (const char* name : names) {
+    const double x = metric(scene, a, 0, 0, name), y = metric(scene, b, 0, 0, name);
+    EXPECT_NEAR(y, x, 1e-12 * std::abs(x)) << name;
+  }
 }
 
 /// Hertz impact on a rigid plane (cases/canonical/rigid_wall_hertz.toml), from the inputs alone:
@@ -141,10 +152,7 @@ TEST(RigidWallEngines, YadeRunsClippedTsujiAgainstACompliantWallAsTheCoreDoes) {
   const auto core = reference::run_engine(reference::InhouseEngine{}, scene, {});
   const auto yade = reference::run_engine(reference::YadeEngine{}, scene, {demwb_yade_test::scratch("wall-tsuji"), 120.0});
   ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
-  for (const char* name : {"contact_duration", "max_overlap", "max_force", "restitution"}) {
-    const double a = metric(scene, core, 0, 0, name), b = metric(scene, yade, 0, 0, name);
-    EXPECT_NEAR(b, a, 1e-12 * std::abs(a)) << name;
-  }
+  expect_round_off_agreement(scene, core, yade, {"contact_duration", "max_overlap", "max_force", "restitution"});
   EXPECT_LT(metric(scene, core, 0, 0, "restitution"), 0.75);  // damped: the dashpot acted
 }
 
@@ -165,10 +173,8 @@ TEST(RigidWallEngines, YadeRunsAFrictionlessWallInAFrictionalScene) {
   const auto core = reference::run_engine(reference::InhouseEngine{}, scene, {});
   const auto yade = reference::run_engine(reference::YadeEngine{}, scene, {demwb_yade_test::scratch("wall-frictionless"), 120.0});
   ASSERT_EQ(yade.status, cases::RunStatus::ok) << yade.reason << "\n" << yade.log_tail;
-  for (const char* name : {"contact_duration", "max_overlap", "restitution", "tangential_restitution"}) {
-    const double a = metric(scene, core, 0, 0, name), b = metric(scene, yade, 0, 0, name);
-    EXPECT_NEAR(b, a, 1e-12 * std::abs(a)) << name;
-  }
+  expect_round_off_agreement(scene, core, yade,
+                             {"contact_duration", "max_overlap", "restitution", "tangential_restitution"});
   EXPECT_DOUBLE_EQ(metric(scene, core, 0, 0, "tangential_restitution"), -1.0);  // no tangential force
   EXPECT_EQ(metric(scene, yade, 0, 0, "spin_after"), 0.0);
   for (auto& m : scene.materials) m.friction = 0.3;
