@@ -43,8 +43,7 @@ sweeps::SweepRun run_job(const sweeps::SweepSpec& spec, const sweeps::SweepPoint
   sweeps::SweepRun run{job, {}, 0.0};
   const auto start = std::chrono::steady_clock::now();
   try {
-    std::vector<std::pair<std::string, double>> values;
-    for (std::size_t a = 0; a < spec.axes.size(); ++a) values.emplace_back(spec.axes[a].key, point.values[a]);
+    const std::vector<std::pair<std::string, double>> values = sweeps::point_overrides(spec, point);
     const std::string text = sweeps::override_case(case_text, spec.case_file.string(), values, seed);
     cases::Scene scene = cases::load_case_text(text, spec.case_file.string(), ctx.load);
     scene.compare.metrics = metrics;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "cases/case_loader.hpp"
+#include "cases/core_wall.hpp"
 
 #include <algorithm>
 #include <array>
@@ -112,11 +113,10 @@ void check_wall_overlaps(const loader::Table& root, const Scene& scene) {
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const ParticleSpec& p = scene.particles[i];
     if (p.fixed) continue;
+    const dem::Vec3 x(p.position[0], p.position[1], p.position[2]);
     for (std::size_t w = 0; w < scene.walls.size(); ++w) {
       const WallSpec& wall = scene.walls[w];
-      double distance = 0.0;
-      for (std::size_t k = 0; k < 3; ++k) distance += (p.position[k] - wall.point[k]) * wall.normal[k];
-      const double overlap = p.radius - distance;
+      const double overlap = p.radius - dem::wall_frame(core_wall(wall), x, 0.0).distance;
       if (overlap <= kMaxInitialOverlap * p.radius) continue;
       loader::fail_at_particle(root, scene, i,
                        fmt::format("particle {} overlaps wall '{}' by {:.6g} m at the start, more than 1% "

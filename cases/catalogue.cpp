@@ -73,6 +73,11 @@ constexpr std::array kMetrics{
     MetricInfo{"coordination_number", "-",
                "mean body contacts (overlap > 0) with other mobile spheres of the mobile spheres whose centres lie "
                "in the compare.packing region, at the last snapshot", false, false},
+    MetricInfo{"mass_flow_rate", "kg/s",
+               "steady discharge rate: least-squares slope of the mobile mass past the compare.discharge outlet "
+               "against time, over the snapshots at which the share past it lies in compare.discharge.fit", false, false},
+    MetricInfo{"discharged_fraction", "-",
+               "share of the mobile mass past the compare.discharge outlet at the last snapshot", false, false},
     MetricInfo{"cohesive_work", "J",
                "work to separate two mean-size spheres from their force-free contact until cohesion ends (thesis fig. 5.15)", false, false},
 };

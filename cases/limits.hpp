@@ -36,8 +36,8 @@ inline constexpr std::size_t kMaxParticles = 10'000'000;
 /// Most materials a case may define: the contact model holds a law for every pair (n²).
 inline constexpr std::size_t kMaxMaterials = 256;
 
-/// Most plane walls a scene may hold, boxes counted as their faces: every wall is an infinite
-/// plane met by every sphere at every step.
+/// Most walls a scene may hold, boxes counted as their faces: the core checks every wall against
+/// every sphere at each neighbour-list build.
 inline constexpr std::size_t kMaxWalls = 256;
 
 /// Farthest a sphere may start from a periodic box, in box lengths along a periodic axis: the

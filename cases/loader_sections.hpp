@@ -68,8 +68,8 @@ Value origin_entry(const Table& root, const Scene& scene, std::size_t i, std::st
 [[noreturn]] void fail_at_particle(const Table& root, const Scene& scene, std::size_t i, const std::string& problem,
                                    std::string_view listed_key = {}, std::string_view generated_key = {});
 
-/// Index of the wall a value names (a wall name, or an index into the walls); throws naming the
-/// value when there is none.
+/// Index of the plane wall a value names (a wall name, or an index into the walls); throws naming
+/// the value when there is none or the wall is bounded (aiming needs one fixed normal).
 std::size_t wall_index(const Value& v, const Scene& scene);
 /// The unit in-plane part of a direction value relative to `wall` (its component along the
 /// normal removed); throws naming the value when it has none.

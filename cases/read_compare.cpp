@@ -12,6 +12,7 @@
 #include "cases/catalogue.hpp"
 #include "cases/excerpt.hpp"
 #include "cases/loader_sections.hpp"
+#include "cases/discharge_metrics.hpp"
 #include "cases/packing_region.hpp"
 #include "cases/suggestion.hpp"
 #include "cases/trace.hpp"
@@ -21,9 +22,12 @@ namespace {
 
 constexpr auto kCompareKeys = std::to_array<std::string_view>(
     {"engines", "reference", "subject", "pair", "wall_contact", "metrics", "tolerances", "matched",
-     "matched_tolerances", "packing"});
+     "matched_tolerances", "packing", "discharge"});
 
-constexpr auto kPackingKeys = std::to_array<std::string_view>({"min", "max", "interior_margin", "orf_grid"});
+constexpr auto kDischargeKeys = std::to_array<std::string_view>({"point", "direction", "fit"});
+
+constexpr auto kPackingKeys = std::to_array<std::string_view>({"min", "max", "interior_margin", "orf_grid", "at"});
+constexpr auto kPackingMoments = std::to_array<std::string_view>({"start", "end"});
 
 /// Most ORF grid points along one axis (the thesis uses 45 × 15).
 constexpr std::int64_t kMaxOrfPoints = 10000;
@@ -298,6 +302,7 @@ std::optional<PackingSpec> read_packing(const Table& table, const Scene& scene, 
     p.orf_ny = static_cast<std::size_t>(items[0].integer(1, kMaxOrfPoints));
     p.orf_nz = static_cast<std::size_t>(items[1].integer(1, kMaxOrfPoints));
   }
+  if (const auto a = t.find("at")) p.at_start = a->keyword(kPackingMoments, "moment") == "start";
   if (std::find(metrics.begin(), metrics.end(), "packing_fraction_interior") != metrics.end()) {
     const double margin = interior_margin(scene, p);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -311,6 +316,38 @@ std::optional<PackingSpec> read_packing(const Table& table, const Scene& scene, 
     }
   }
   return p;
+}
+
+/// [compare.discharge]: the outlet plane of the discharge metrics, required when one is listed.
+std::optional<DischargeSpec> read_discharge(const Table& table, const std::vector<std::string>& metrics) {
+  const auto value = table.find("discharge");
+  const auto listed =
+      std::find_if(metrics.begin(), metrics.end(), [](const std::string& m) { return is_discharge_metric(m); });
+  if (!value) {
+    if (listed != metrics.end()) {
+      table.fail("metrics", fmt::format("metric '{}' counts the spheres past an outlet: add [compare.discharge] with "
+                                        "point (on the outlet plane, m) and direction (out of the hopper)",
+                                        *listed));
+    }
+    return std::nullopt;
+  }
+  const Table t = value->table();
+  t.allow_only(kDischargeKeys);
+  DischargeSpec d;
+  d.point = t.require("point").vector3();
+  const Value direction = t.require("direction");
+  const Vector3 v = direction.vector3();
+  const double n = length(v);
+  if (!(n > 0.0) || !std::isfinite(n)) direction.fail("must be a nonzero, finite vector");
+  d.direction = {v[0] / n, v[1] / n, v[2] / n};
+  if (const auto f = t.find("fit")) {
+    const std::vector<Value> items = f->elements();
+    if (items.size() != 2) f->fail(fmt::format("expected [from, to] shares of the mobile mass, got {} values", items.size()));
+    d.fit_from = items[0].number(dem::ValueRange{0.0, 1.0, false, false});
+    d.fit_to = items[1].number(dem::ValueRange{0.0, 1.0, false, false});
+    if (!(d.fit_to > d.fit_from)) f->fail(fmt::format("must rise: to = {} is not above from = {}", d.fit_to, d.fit_from));
+  }
+  return d;
 }
 
 }  // namespace
@@ -327,6 +364,12 @@ void read_compare(const Table& root, Scene& scene) {
   if (const auto v = table.find("wall_contact")) {
     if (spec.pair) v->fail("give either compare.pair or compare.wall_contact, not both");
     spec.wall_contact = read_wall_contact(*v, scene);
+    const WallSpec& wall = scene.walls[spec.wall_contact->second];
+    if (wall.shape != dem::WallShape::plane) {
+      v->fail(fmt::format("wall '{}' is a {}; the collision metrics of a wall contact need a plane wall "
+                          "(one fixed normal)",
+                          wall.name, wall_shape_name(wall)));
+    }
   }
   if (const auto v = table.find("metrics")) {
     spec.metrics = read_keyword_list(*v, metric_names(), "metric");
@@ -336,6 +379,7 @@ void read_compare(const Table& root, Scene& scene) {
   spec.matched = read_matched(table, spec.engines);
   spec.matched_tolerances = read_tolerances(table, spec.metrics, "matched_tolerances");
   spec.packing = read_packing(table, scene, spec.metrics);
+  spec.discharge = read_discharge(table, spec.metrics);
 }
 
 void read_output(const Table& root, Scene& scene) {
@@ -369,12 +413,23 @@ void read_output(const Table& root, Scene& scene) {
     spec.snapshot_times.erase(std::unique(spec.snapshot_times.begin(), spec.snapshot_times.end()),
                               spec.snapshot_times.end());
   }
-  // The packing metrics read the last snapshot.
+  // The packing metrics read the last snapshot (the first, at = "start", which must be at t = 0).
   for (const std::string& m : scene.compare.metrics) {
     if (is_packing_metric(m) && spec.snapshot_times.empty()) {
       table.fail("snapshot_times", fmt::format("metric '{}' reads the last snapshot: list output.snapshot_times "
                                                "(e.g. the end of the run) or give output.snapshot_every",
                                                m));
+    }
+    if (is_packing_metric(m) && scene.compare.packing && scene.compare.packing->at_start &&
+        spec.snapshot_times.front() != 0.0) {
+      table.fail("snapshot_times", fmt::format("metric '{}' is measured at the start (compare.packing.at): the "
+                                               "first snapshot must be at t = 0, not {}",
+                                               m, spec.snapshot_times.front()));
+    }
+    if (is_discharge_metric(m) && spec.snapshot_times.size() < kMinDischargeSnapshots) {
+      table.fail("snapshot_every", fmt::format("metric '{}' follows the discharge over the snapshots: give "
+                                               "output.snapshot_every (or at least {} snapshot_times)",
+                                               m, kMinDischargeSnapshots));
     }
   }
   if (const auto v = table.find("trace_aggregates")) {

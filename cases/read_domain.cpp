@@ -40,6 +40,11 @@ void read_domain(const Table& root, Scene& scene) {
   // A plane wall across a periodic axis would cut the ring; one along it is fine.
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     for (std::size_t k = 0; k < 3; ++k) {
+      if (d.periodic[k] && scene.walls[w].shape != dem::WallShape::plane) {
+        t.fail("periodic", fmt::format("axis {} is periodic, but wall {} ('{}') is a {}; bounded walls have no "
+                                       "periodic images, so a periodic domain takes plane walls only",
+                                       kAxes[k], w, scene.walls[w].name, wall_shape_name(scene.walls[w])));
+      }
       if (d.periodic[k] && scene.walls[w].normal[k] != 0.0) {
         t.fail("periodic", fmt::format("axis {} is periodic, but wall {} ('{}') has a normal component along it; "
                                        "a plane wall must be parallel to every periodic axis",

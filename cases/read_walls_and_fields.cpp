@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
+#include <span>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -16,11 +18,20 @@
 namespace cases::loader {
 namespace {
 
-constexpr auto kPlaneKeys =
-    std::to_array<std::string_view>({"type", "name", "point", "normal", "material", "velocity", "rigid"});
-constexpr auto kBoxWallKeys =
-    std::to_array<std::string_view>({"type", "name", "min", "max", "material", "open_faces", "rigid"});
-constexpr auto kWallTypes = std::to_array<std::string_view>({"plane", "box"});
+constexpr auto kPlaneKeys = std::to_array<std::string_view>(
+    {"type", "name", "point", "normal", "material", "velocity", "rigid", "remove_at"});
+constexpr auto kBoxWallKeys = std::to_array<std::string_view>(
+    {"type", "name", "min", "max", "material", "open_faces", "rigid", "remove_at"});
+constexpr auto kRectangleWallKeys = std::to_array<std::string_view>(
+    {"type", "name", "centre", "normal", "axis", "size", "material", "velocity", "rigid", "remove_at"});
+constexpr auto kDiscWallKeys = std::to_array<std::string_view>(
+    {"type", "name", "centre", "normal", "radius", "hole_radius", "material", "velocity", "rigid", "remove_at"});
+constexpr auto kCylinderWallKeys = std::to_array<std::string_view>(
+    {"type", "name", "base", "axis", "height", "radius", "material", "velocity", "rigid", "remove_at"});
+constexpr auto kConeWallKeys = std::to_array<std::string_view>({"type", "name", "base", "axis", "height", "base_radius",
+                                                            "top_radius", "material", "velocity", "rigid",
+                                                            "remove_at"});
+constexpr auto kWallTypes = std::to_array<std::string_view>({"plane", "box", "rectangle", "disc", "cylinder", "cone"});
 constexpr auto kBoxFaces = std::to_array<std::string_view>({"x-", "x+", "y-", "y+", "z-", "z+"});
 constexpr auto kFieldKeys = std::to_array<std::string_view>({"gravity", "fluid"});
 constexpr auto kFluidKeys = std::to_array<std::string_view>(
@@ -42,15 +53,86 @@ Vector3 unit_vector(const Value& value) {
   return u;
 }
 
-WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
-  t.allow_only(kPlaneKeys);
+/// `remove_at`: the time the wall is taken away, ≥ 0 [s].
+std::optional<double> read_removal(const Table& t) {
+  const auto v = t.find("remove_at");
+  if (!v) return std::nullopt;
+  return v->number(non_negative_range());
+}
+
+/// The keys every wall type shares: name, material, velocity, rigid, remove_at.
+WallSpec read_common(const Table& t, const Scene& scene, std::size_t index) {
   WallSpec w;
   w.name = t.has("name") ? read_name(t.require("name")) : fmt::format("wall{}", index);
-  w.point = t.require("point").vector3();
-  w.normal = unit_vector(t.require("normal"));
   w.material = material_index(t.require("material"), scene);
   if (const auto v = t.find("velocity")) w.velocity = read_velocity(*v);
   if (const auto v = t.find("rigid")) w.rigid = v->boolean();
+  w.removed_at = read_removal(t);
+  return w;
+}
+
+WallSpec read_plane(const Table& t, const Scene& scene, std::size_t index) {
+  t.allow_only(kPlaneKeys);
+  WallSpec w = read_common(t, scene, index);
+  w.point = t.require("point").vector3();
+  w.normal = unit_vector(t.require("normal"));
+  return w;
+}
+
+/// A bounded rectangle: centre, normal, the direction of its first side and its two side lengths.
+WallSpec read_rectangle(const Table& t, const Scene& scene, std::size_t index) {
+  t.allow_only(kRectangleWallKeys);
+  WallSpec w = read_common(t, scene, index);
+  w.shape = dem::WallShape::rectangle;
+  w.point = t.require("centre").vector3();
+  w.normal = unit_vector(t.require("normal"));
+  const Value axis = t.require("axis");
+  w.axis_u = unit_vector(axis);
+  const double cosine = w.axis_u[0] * w.normal[0] + w.axis_u[1] * w.normal[1] + w.axis_u[2] * w.normal[2];
+  if (!(std::fabs(cosine) < 1e-9)) {
+    axis.fail(fmt::format("must lie in the rectangle's plane (orthogonal to its normal); the cosine between them is {:.6g}",
+                          cosine));
+  }
+  const Value size = t.require("size");
+  const std::vector<Value> sides = size.elements();
+  if (sides.size() != 2) size.fail(fmt::format("must list two side lengths [along axis, across], got {}", sides.size()));
+  w.size_u = 0.5 * sides[0].number(positive_range());
+  w.size_v = 0.5 * sides[1].number(positive_range());
+  return w;
+}
+
+/// A disc, or a ring when hole_radius > 0 (a floor with a round orifice).
+WallSpec read_disc(const Table& t, const Scene& scene, std::size_t index) {
+  t.allow_only(kDiscWallKeys);
+  WallSpec w = read_common(t, scene, index);
+  w.shape = dem::WallShape::annulus;
+  w.point = t.require("centre").vector3();
+  w.normal = unit_vector(t.require("normal"));
+  w.size_v = t.require("radius").number(positive_range());
+  if (const auto v = t.find("hole_radius")) {
+    w.size_u = v->number(non_negative_range());
+    if (!(w.size_u < w.size_v)) v->fail(fmt::format("must be smaller than radius {:.6g} m", w.size_v));
+  }
+  return w;
+}
+
+/// The open lateral surface of a cylinder or cone frustum: base point on the axis, axis
+/// direction, height along it, and the radii at the base and at the top.
+WallSpec read_frustum(const Table& t, const Scene& scene, std::size_t index, bool cylinder) {
+  t.allow_only(cylinder ? std::span<const std::string_view>(kCylinderWallKeys) : std::span<const std::string_view>(kConeWallKeys));
+  WallSpec w = read_common(t, scene, index);
+  w.shape = dem::WallShape::frustum;
+  w.point = t.require("base").vector3();
+  w.normal = unit_vector(t.require("axis"));
+  w.length = t.require("height").number(positive_range());
+  if (cylinder) {
+    w.size_u = w.size_v = t.require("radius").number(positive_range());
+  } else {
+    w.size_u = t.require("base_radius").number(non_negative_range());
+    const Value top = t.require("top_radius");
+    w.size_v = top.number(non_negative_range());
+    if (!(w.size_u > 0.0 || w.size_v > 0.0)) top.fail("base_radius and top_radius cannot both be 0");
+  }
   return w;
 }
 
@@ -66,6 +148,7 @@ std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t i
   const std::size_t material = material_index(t.require("material"), scene);
   bool rigid = false;
   if (const auto v = t.find("rigid")) rigid = v->boolean();
+  const std::optional<double> removed_at = read_removal(t);
   std::vector<std::string> open;
   if (const auto v = t.find("open_faces")) {
     for (const Value& f : v->elements()) open.push_back(f.keyword(kBoxFaces, "box face"));
@@ -82,6 +165,7 @@ std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t i
       w.normal[static_cast<std::size_t>(axis)] = side < 0 ? 1.0 : -1.0;
       w.material = material;
       w.rigid = rigid;
+      w.removed_at = removed_at;
       walls.push_back(w);
     }
   }
@@ -138,11 +222,17 @@ void read_walls(const Table& root, Scene& scene) {
     const std::string type = t.require("type").keyword(kWallTypes, "wall type");
     if (type == "plane") {
       scene.walls.push_back(read_plane(t, scene, index));
-    } else {
+    } else if (type == "box") {
       for (auto& w : read_box(t, scene, index)) scene.walls.push_back(std::move(w));
+    } else if (type == "rectangle") {
+      scene.walls.push_back(read_rectangle(t, scene, index));
+    } else if (type == "disc") {
+      scene.walls.push_back(read_disc(t, scene, index));
+    } else {
+      scene.walls.push_back(read_frustum(t, scene, index, type == "cylinder"));
     }
     if (scene.walls.size() > kMaxWalls) {
-      entry.fail(fmt::format("makes {} plane walls (a box counts its faces), more than the limit of {}",
+      entry.fail(fmt::format("makes {} walls (a box counts its faces), more than the limit of {}",
                              scene.walls.size(), kMaxWalls));
     }
     ++index;

@@ -7,12 +7,14 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
 
 #include "cases/tier.hpp"
 #include "dem/contact/model_choice.hpp"
+#include "dem/contact/wall.hpp"
 #include "dem/integrators/scheme_id.hpp"
 #include "dem/materials/material_properties.hpp"
 #include "dem/materials/mixing.hpp"
@@ -44,17 +46,28 @@ struct ParticleSpec {
   std::vector<MotionSegmentSpec> motion;  ///< prescribed motion of a fixed sphere (may be empty)
 };
 
-/// A plane wall: a point on it at t = 0, its unit normal pointing into the domain, a constant
-/// velocity, and its material. A box in a case file becomes up to six of these.
+/// A wall (docs/walls.md): a plane (a point on it at t = 0 and its unit normal pointing into
+/// the domain) or a bounded, two-sided shape — rectangle, annulus (disc), frustum (cylinder,
+/// cone) — with a constant velocity, its material and an optional removal time. A box in a case
+/// file becomes up to six planes.
 struct WallSpec {
   std::string name;
-  Vector3 point{};
-  Vector3 normal{};
+  Vector3 point{};   ///< plane: a point on it; rectangle, disc: centre; cylinder, cone: axis point of the base
+  Vector3 normal{};  ///< plane, rectangle, disc: unit normal; cylinder, cone: unit axis
   Vector3 velocity{};
   std::size_t material = 0;
   /// No compliance (`rigid = true`): its material is a rigid one (dem::MaterialProperties::rigid).
   bool rigid = false;
+  dem::WallShape shape = dem::WallShape::plane;
+  Vector3 axis_u{};     ///< rectangle: unit in-plane axis of its first side
+  double size_u = 0.0;  ///< rectangle: half size along axis_u; disc: hole radius; cylinder, cone: base radius [m]
+  double size_v = 0.0;  ///< rectangle: half size along normal × axis_u; disc: radius; cylinder, cone: top radius [m]
+  double length = 0.0;  ///< cylinder, cone: axial length [m]
+  std::optional<double> removed_at{};  ///< the wall is removed at this time [s] (an orifice that opens)
 };
+
+/// The case-file name of a wall's shape: "plane", "rectangle", "disc", "cylinder" or "cone".
+[[nodiscard]] std::string_view wall_shape_name(const WallSpec& wall) noexcept;
 
 /// One rectangular zone of plug flow (thesis §6.5).
 struct FlowZoneSpec {
@@ -132,6 +145,16 @@ struct PackingSpec {
   std::optional<double> interior_margin;  ///< [m]; empty: two mean diameters of the mobile spheres
   std::size_t orf_ny = 45;                ///< ORF grid points along y (thesis fig. G.2: 45 × 15)
   std::size_t orf_nz = 15;                ///< ORF grid points along z
+  bool at_start = false;                  ///< measure at the first snapshot instead of the last (`at = "start"`)
+};
+
+/// How a hopper's discharge is measured ([compare.discharge], docs/metrics.md "Discharge"): a
+/// sphere has left once its centre lies beyond the outlet plane, (x − point)·direction > 0.
+struct DischargeSpec {
+  Vector3 point{};        ///< a point on the outlet plane [m]
+  Vector3 direction{};    ///< unit vector pointing out of the hopper through that plane
+  double fit_from = 0.2;  ///< the flow rate is fitted over the snapshots at which the share of the
+  double fit_to = 0.6;    ///< mobile mass that has left lies in [fit_from, fit_to]
 };
 
 /// How the engines' results are compared.
@@ -148,6 +171,7 @@ struct CompareSpec {
   std::vector<std::string> matched;
   std::map<std::string, Tolerance> matched_tolerances;  ///< per metric, for matched rows
   std::optional<PackingSpec> packing;  ///< the region of the packing metrics ([compare.packing])
+  std::optional<DischargeSpec> discharge;  ///< the outlet of the discharge metrics ([compare.discharge])
 };
 
 /// Agglomerate formation, run by the core before any engine sees the scene (thesis §5.2.1): the

@@ -24,13 +24,23 @@ std::size_t wall_index(const Value& v, const Scene& scene) {
   if (v.node().is_string()) {
     const std::string name = v.string();
     for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-      if (scene.walls[w].name == name) return w;
+      if (scene.walls[w].name != name) continue;
+      if (scene.walls[w].shape != dem::WallShape::plane) {
+        v.fail(fmt::format("wall '{}' is a {}; aiming at a wall needs a plane wall (one fixed normal)",
+                           excerpt(name), wall_shape_name(scene.walls[w])));
+      }
+      return w;
     }
     std::string known;
     for (const WallSpec& w : scene.walls) known += (known.empty() ? "'" : ", '") + w.name + "'";
     v.fail(fmt::format("no wall is named '{}' (walls: {})", excerpt(name), known));
   }
-  return v.index(scene.walls.size(), "walls");
+  const std::size_t w = v.index(scene.walls.size(), "walls");
+  if (scene.walls[w].shape != dem::WallShape::plane) {
+    v.fail(fmt::format("wall '{}' is a {}; aiming at a wall needs a plane wall (one fixed normal)",
+                       scene.walls[w].name, wall_shape_name(scene.walls[w])));
+  }
+  return w;
 }
 
 Vector3 in_plane_direction(const Value& direction, const WallSpec& wall) {

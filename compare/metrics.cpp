@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "compare/metrics_breakup_run.hpp"
+#include "compare/metrics_discharge.hpp"
 #include "compare/metrics_packing.hpp"
 #include "compare/metrics_cohesion.hpp"
 #include "compare/metrics_motion.hpp"
@@ -289,6 +290,7 @@ double from_trace(const std::string& name, const cases::Scene& scene, const case
   if (const auto c = cohesion_metric(name, scene, trace)) return c->value ? *c->value : throw MetricProblem(c->problem);
   if (const auto b = breakup_metric(name, scene, run)) return b->value ? *b->value : throw MetricProblem(b->problem);
   if (const auto p = packing_metric(name, scene, run)) return p->value ? *p->value : throw MetricProblem(p->problem);
+  if (const auto d = discharge_metric(name, scene, run)) return d->value ? *d->value : throw MetricProblem(d->problem);
   throw MetricProblem(fmt::format("no implementation of metric '{}'", name));
 }
 

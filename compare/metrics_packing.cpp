@@ -18,10 +18,12 @@ std::optional<CohesionMetric> packing_metric(const std::string& name, const case
   if (run.snapshots.empty()) {
     return CohesionMetric{std::nullopt, "the run has no snapshot (output.snapshot_times)"};
   }
-  const cases::Snapshot& last = run.snapshots.back();
+  const bool at_start = scene.compare.packing->at_start;
+  const cases::Snapshot& last = at_start ? run.snapshots.front() : run.snapshots.back();
   if (last.position.size() != scene.particles.size()) {
-    return CohesionMetric{std::nullopt, fmt::format("the last snapshot holds {} spheres, the scene {}",
-                                                    last.position.size(), scene.particles.size())};
+    return CohesionMetric{std::nullopt, fmt::format("the {} snapshot holds {} spheres, the scene {}",
+                                                    at_start ? "first" : "last", last.position.size(),
+                                                    scene.particles.size())};
   }
   std::vector<cases::Vector3> centres;
   std::vector<double> radii;

@@ -14,7 +14,7 @@ namespace comparison {
 
 /// The metric `name` (packing_fraction, packing_fraction_interior, orf, dose_remaining,
 /// coordination_number) of `run`
-/// at its last snapshot, counting the mobile spheres only; empty when `name` is not a packing
+/// at its last snapshot (its first with compare.packing.at = "start"), counting the mobile spheres only; empty when `name` is not a packing
 /// metric. A value is missing, with the reason, when the scene has no packing region or the run
 /// no snapshot of every sphere.
 std::optional<CohesionMetric> packing_metric(const std::string& name, const cases::Scene& scene,

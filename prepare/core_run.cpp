@@ -12,6 +12,9 @@ cases::Scene stage_run_scene(cases::Scene scene) {
   scene.fluid.reset();
   scene.stages.clear();
   scene.output = cases::OutputSpec{};
+  // remove_at counts in the run's time: through the preparation a wall removed later stands (a
+  // shutter closed while the spheres are poured and settled).
+  for (cases::WallSpec& w : scene.walls) w.removed_at.reset();
   return scene;
 }
 

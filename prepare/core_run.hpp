@@ -11,8 +11,9 @@
 
 namespace prepare {
 
-/// `scene` as a preparation stage runs it in the core: no fluid, no stages of its own and no output
-/// (the stage reads the simulation's state, not a trace).
+/// `scene` as a preparation stage runs it in the core: no fluid, no stages of its own, no output
+/// (the stage reads the simulation's state, not a trace), and every wall standing (remove_at
+/// counts in the run's time).
 cases::Scene stage_run_scene(cases::Scene scene);
 
 /// When a preparation run counts as settled: not before `first_step`, at the first step whose

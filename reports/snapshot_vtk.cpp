@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cases/core_wall.hpp"
 #include "compare/packing_geometry.hpp"
 #include "dem/core/vector.hpp"
 
@@ -28,13 +29,12 @@ std::vector<int> snapshot_contacts(const cases::Scene& scene, const cases::Snaps
   for (std::size_t i = 0; i < n; ++i) radii[i] = scene.particles.at(i).radius;
   const std::vector<std::uint32_t> spheres = comparison::contact_counts(snap.position, radii);
   std::vector<int> count(spheres.begin(), spheres.end());
-  for (const cases::WallSpec& w : scene.walls) {
-    const dem::Vec3 normal(w.normal[0], w.normal[1], w.normal[2]);
-    const dem::Vec3 point = dem::Vec3(w.point[0], w.point[1], w.point[2]) +
-                            snap.time * dem::Vec3(w.velocity[0], w.velocity[1], w.velocity[2]);
+  for (const cases::WallSpec& spec : scene.walls) {
+    const dem::Wall w = cases::core_wall(spec);
+    if (!w.present(snap.time)) continue;
     for (std::size_t i = 0; i < n; ++i) {
       const auto& x = snap.position[i];
-      if ((dem::Vec3(x[0], x[1], x[2]) - point).dot(normal) < radii[i]) ++count[i];
+      if (dem::wall_frame(w, dem::Vec3(x[0], x[1], x[2]), snap.time).distance < radii[i]) ++count[i];
     }
   }
   return count;

@@ -131,6 +131,14 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
   for (const auto& w : s.walls) {
     Json wall = {{"point", w.point}, {"normal", w.normal}, {"velocity", w.velocity}, {"material", w.material}};
     if (w.rigid) wall["rigid"] = true;  // only when set: older scenes keep their fingerprints
+    if (w.shape != dem::WallShape::plane) {
+      wall["shape"] = std::string(cases::wall_shape_name(w));
+      wall["axis_u"] = w.axis_u;
+      wall["size_u"] = w.size_u;
+      wall["size_v"] = w.size_v;
+      wall["length"] = w.length;
+    }
+    if (w.removed_at) wall["removed_at"] = *w.removed_at;
     walls.push_back(std::move(wall));
   }
   j["walls"] = walls;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "reports/gnuplot.hpp"
+#include "sweeps/beverloo_fit.hpp"
 #include "reports/markdown.hpp"
 #include "support/text_file.hpp"
 
@@ -133,6 +134,105 @@ std::string damage_work_figure(const SweepResults& r, std::size_t damage, std::s
   return figure(plot, dir, "kappa_damage_vs_cohesive_work");
 }
 
+}  // namespace
+
+std::vector<EngineBeverloo> beverloo_fits(const SweepResults& r) {
+  std::vector<EngineBeverloo> out;
+  if (!r.spec.beverloo) return out;
+  const BeverlooSpec& b = *r.spec.beverloo;
+  const auto rate = metric_index(r.metrics, b.flow_rate);
+  const auto phi = metric_index(r.metrics, b.packing_fraction);
+  const SweepAxis& axis = r.spec.axes.at(b.axis);
+  std::vector<std::size_t> held;
+  for (const auto& a : r.spec.axes) held.push_back(a.values.size() / 2);
+  for (const auto& engine : r.engines) {
+    EngineBeverloo e;
+    e.engine = engine;
+    if (!rate || !phi) {
+      e.problem = fmt::format("the sweep does not measure '{}' and '{}'", b.flow_rate, b.packing_fraction);
+      out.push_back(e);
+      continue;
+    }
+    double phi_sum = 0.0;
+    std::size_t phi_count = 0;
+    for (std::size_t v = 0; v < axis.values.size(); ++v) {
+      std::vector<std::size_t> at = held;
+      at[b.axis] = v;
+      const std::size_t point = point_at(r.spec, at);
+      const SeedStatistics w = point_statistics(r.rows, point, engine, *rate);
+      const SeedStatistics f = point_statistics(r.rows, point, engine, *phi);
+      if (f.count > 0) {
+        phi_sum += f.mean * static_cast<double>(f.count);
+        phi_count += f.count;
+      }
+      if (w.count == 0) continue;
+      e.orifice.push_back(b.orifice_scale * axis.values[v]);
+      e.rate.push_back(w.mean);
+      e.rate_error.push_back(w.standard_error.value_or(0.0));
+    }
+    if (phi_count == 0) {
+      e.problem = fmt::format("no run gave '{}'", b.packing_fraction);
+      out.push_back(e);
+      continue;
+    }
+    e.bulk_density = phi_sum / static_cast<double>(phi_count) * b.grain_density;
+    e.fit = fit_beverloo(e.orifice, e.rate, e.bulk_density, b.gravity, b.grain_diameter);
+    if (!e.fit) e.problem = "the flow rates do not rise with the orifice (or fewer than two orifices gave one)";
+    out.push_back(e);
+  }
+  return out;
+}
+
+namespace {
+
+/// Beverloo's law fitted per engine: a table of C and k and the flow rate against D with the fits.
+std::string beverloo_section(const SweepResults& r, const std::filesystem::path& dir) {
+  const std::vector<EngineBeverloo> fits = beverloo_fits(r);
+  if (fits.empty()) return "";
+  const BeverlooSpec& b = *r.spec.beverloo;
+  std::string md = fmt::format(
+      "## Beverloo's law\n\nW = C ρ_b √g (D − k d)^5/2 fitted by least squares to the mean flow rate "
+      "(`{}`) against the orifice diameter D = {} × `{}`, as the straight line W^2/5 = (C ρ_b √g)^2/5 (D − k d); "
+      "d = {:.4g} m, g = {:.4g} m/s², ρ_b = the mean `{}` of the settled bed × {:.4g} kg/m³.\n\n",
+      b.flow_rate, b.orifice_scale, r.spec.axes.at(b.axis).key, b.grain_diameter, b.gravity, b.packing_fraction,
+      b.grain_density);
+  reports::MarkdownTable t({"engine", "ρ_b (kg/m³)", "C", "k", "orifices", "largest misfit", "note"});
+  reports::Plot plot;
+  plot.title = "Mass flow rate against the orifice diameter, with Beverloo's law fitted";
+  plot.xlabel = "orifice diameter D (m)";
+  plot.ylabel = "mass flow rate W (kg/s)";
+  for (const EngineBeverloo& e : fits) {
+    if (!e.fit) {
+      t.add_row({e.engine, e.bulk_density > 0.0 ? fmt::format("{:.1f}", e.bulk_density) : "—", "—", "—",
+                 fmt::format("{}", e.orifice.size()), "—", e.problem});
+      continue;
+    }
+    t.add_row({e.engine, fmt::format("{:.1f}", e.bulk_density), fmt::format("{:.3f}", e.fit->c),
+               fmt::format("{:.2f}", e.fit->k), fmt::format("{}", e.fit->points),
+               fmt::format("{:.1f} %", 100.0 * e.fit->largest_misfit), ""});
+    reports::Series measured;
+    measured.title = e.engine + " (mean ± s.e.)";
+    measured.style = "points";
+    measured.x = e.orifice;
+    measured.y = e.rate;
+    measured.y_error = e.rate_error;
+    plot.series.push_back(std::move(measured));
+    reports::Series law;
+    law.title = fmt::format("{}: C = {:.3f}, k = {:.2f}", e.engine, e.fit->c, e.fit->k);
+    const double lo = *std::min_element(e.orifice.begin(), e.orifice.end());
+    const double hi = *std::max_element(e.orifice.begin(), e.orifice.end());
+    for (int i = 0; i <= 40; ++i) {
+      const double d = lo + (hi - lo) * (1.1 * i / 40.0 - 0.05);
+      law.x.push_back(d);
+      law.y.push_back(beverloo_rate(e.fit->c, e.fit->k, e.bulk_density, b.gravity, d, b.grain_diameter));
+    }
+    plot.series.push_back(std::move(law));
+  }
+  md += t.render() + "\n";
+  md += figure(plot, dir, "beverloo");
+  return md;
+}
+
 /// Per point and metric, each engine against the first: |Δ mean| / combined standard error.
 std::string cross_code_table(const SweepResults& r) {
   std::string md = fmt::format(
@@ -222,6 +322,7 @@ void write_sweep_report(const SweepResults& r, const std::filesystem::path& dir)
     md += t.render() + "\n";
   }
   if (r.engines.size() > 1) md += cross_code_table(r);
+  md += beverloo_section(r, dir);
 
   std::string figures;
   for (const CurveFamily& f : curve_families(r.spec)) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sweeps/beverloo_fit.hpp"
 #include "sweeps/sweep_rows.hpp"
 #include "sweeps/sweep_spec.hpp"
 
@@ -37,6 +38,21 @@ std::vector<CurveFamily> curve_families(const SweepSpec& spec);
 
 /// The point holding these value indices (one per axis; the first axis varies slowest).
 std::size_t point_at(const SweepSpec& spec, const std::vector<std::size_t>& value_indices);
+
+/// Beverloo's law fitted to one engine's flow rates (SweepSpec::beverloo).
+struct EngineBeverloo {
+  std::string engine;
+  std::vector<double> orifice;     ///< D [m] of each orifice with a flow rate
+  std::vector<double> rate;        ///< mean W over the seeds [kg/s]
+  std::vector<double> rate_error;  ///< its standard error (0 with one seed)
+  double bulk_density = 0.0;       ///< ρ_b [kg/m³]: the mean packing fraction × the grain density
+  std::optional<BeverlooFit> fit;  ///< empty with `problem` set when it cannot be fitted
+  std::string problem;
+};
+
+/// Beverloo fits per engine of a sweep with a [beverloo] table (empty without one), over the
+/// orifice axis with every other axis held at its middle value.
+std::vector<EngineBeverloo> beverloo_fits(const SweepResults& results);
 
 /// Writes `dir`/report.md (means ± standard errors per point and engine; engines compared by the
 /// difference of their means over the combined standard error) and its figures under

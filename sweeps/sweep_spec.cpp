@@ -20,9 +20,12 @@ namespace {
 using cases::loader::Table;
 using cases::loader::Value;
 
-constexpr auto kTopKeys = std::to_array<std::string_view>({"sweep", "parameters"});
+constexpr auto kTopKeys = std::to_array<std::string_view>({"sweep", "parameters", "beverloo"});
+constexpr auto kBeverlooKeys = std::to_array<std::string_view>(
+    {"orifice", "orifice_scale", "grain_diameter", "grain_density", "flow_rate", "packing_fraction", "gravity"});
 constexpr auto kSweepKeys = std::to_array<std::string_view>({"name", "description", "case", "seeds", "engines", "metrics"});
-constexpr auto kAxisKeys = std::to_array<std::string_view>({"key", "label", "values", "scale"});
+constexpr auto kAxisKeys = std::to_array<std::string_view>({"key", "label", "values", "scale", "with"});
+constexpr auto kLinkedKeys = std::to_array<std::string_view>({"key", "values"});
 constexpr std::array<std::string_view, 2> kScales{"linear", "log"};
 
 /// The keys of a sweep axis must name a value of the case file, not a table or a label.
@@ -34,6 +37,34 @@ void check_axis_key(const Value& v, const std::string& key) {
                        "\"stages[0].pull\"",
                        key));
   }
+}
+
+/// [beverloo]: the orifice axis, the grains, and the metrics the fit reads.
+BeverlooSpec read_beverloo(const Table& t, const SweepSpec& spec) {
+  t.allow_only(kBeverlooKeys);
+  BeverlooSpec b;
+  const Value orifice = t.require("orifice");
+  const std::string key = orifice.string();
+  const auto axis = std::find_if(spec.axes.begin(), spec.axes.end(), [&](const SweepAxis& a) { return a.key == key; });
+  if (axis == spec.axes.end()) orifice.fail(fmt::format("'{}' is not one of the sweep's parameters", key));
+  b.axis = static_cast<std::size_t>(axis - spec.axes.begin());
+  if (axis->values.size() < 2) orifice.fail("the orifice axis needs at least two values to fit C and k");
+  const dem::ValueRange positive{0.0, std::numeric_limits<double>::infinity(), true, true};
+  if (const auto v = t.find("orifice_scale")) b.orifice_scale = v->number(positive);
+  b.grain_diameter = t.require("grain_diameter").number(positive);
+  b.grain_density = t.require("grain_density").number(positive);
+  if (const auto v = t.find("gravity")) b.gravity = v->number(positive);
+  const auto metric = [&](const char* name, std::string& out) {
+    const auto v = t.find(name);
+    if (v) out = v->string();
+    if (!spec.metrics.empty() && std::find(spec.metrics.begin(), spec.metrics.end(), out) == spec.metrics.end()) {
+      if (v) v->fail(fmt::format("'{}' is not among sweep.metrics", out));
+      t.fail(name, fmt::format("the default '{}' is not among sweep.metrics; list it or name the metric", out));
+    }
+  };
+  metric("flow_rate", b.flow_rate);
+  metric("packing_fraction", b.packing_fraction);
+  return b;
 }
 
 }  // namespace
@@ -108,9 +139,43 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
         if (!(x > 0.0)) t.fail("values", fmt::format("a log-scale axis needs values > 0, got {}", x));
       }
     }
+    if (const auto with = t.find("with")) {
+      for (const Value& item : with->elements()) {
+        const Table w = item.table();
+        w.allow_only(kLinkedKeys);
+        LinkedKey linked;
+        const Value linked_key = w.require("key");
+        linked.key = linked_key.string();
+        check_axis_key(linked_key, linked.key);
+        for (const Value& x : w.require("values").elements()) linked.values.push_back(x.number());
+        if (linked.values.size() != axis.values.size()) {
+          w.fail("values", fmt::format("must list one value per value of '{}' ({}), got {}", axis.key,
+                                       axis.values.size(), linked.values.size()));
+        }
+        axis.linked.push_back(std::move(linked));
+      }
+    }
+    for (const SweepAxis& other : spec.axes) {
+      for (const LinkedKey& m : other.linked) {
+        if (m.key == axis.key) key.fail(fmt::format("'{}' is already linked to the axis '{}'", m.key, other.key));
+      }
+      for (const LinkedKey& l : axis.linked) {
+        if (other.key == l.key) t.fail("with", fmt::format("'{}' is swept as an axis of its own", l.key));
+        for (const LinkedKey& m : other.linked) {
+          if (m.key == l.key) t.fail("with", fmt::format("'{}' is set by two axes", m.key));
+        }
+      }
+    }
+    for (std::size_t i = 0; i < axis.linked.size(); ++i) {
+      if (axis.linked[i].key == axis.key) t.fail("with", fmt::format("'{}' is the axis' own key", axis.key));
+      for (std::size_t j = 0; j < i; ++j) {
+        if (axis.linked[i].key == axis.linked[j].key) t.fail("with", fmt::format("'{}' is linked twice", axis.key));
+      }
+    }
     spec.axes.push_back(axis);
   }
   if (spec.axes.empty()) parameters.fail("must list at least one parameter");
+  if (const auto v = root.find("beverloo")) spec.beverloo = read_beverloo(v->table(), spec);
   std::size_t points = 1;
   for (const SweepAxis& a : spec.axes) points *= a.values.size();
   if (points * spec.seeds.size() > 1000000) {
@@ -125,14 +190,24 @@ std::vector<SweepPoint> expand(const SweepSpec& spec) {
   std::vector<SweepPoint> out;
   out.reserve(total);
   for (std::size_t k = 0; k < total; ++k) {
-    SweepPoint p{k, std::vector<double>(spec.axes.size())};
+    SweepPoint p{k, std::vector<double>(spec.axes.size()), std::vector<std::size_t>(spec.axes.size())};
     std::size_t rest = k;
     for (std::size_t a = spec.axes.size(); a-- > 0;) {
       const std::size_t n = spec.axes[a].values.size();
+      p.positions[a] = rest % n;
       p.values[a] = spec.axes[a].values[rest % n];
       rest /= n;
     }
     out.push_back(p);
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, double>> point_overrides(const SweepSpec& spec, const SweepPoint& point) {
+  std::vector<std::pair<std::string, double>> out;
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    out.emplace_back(spec.axes[a].key, point.values[a]);
+    for (const LinkedKey& l : spec.axes[a].linked) out.emplace_back(l.key, l.values.at(point.positions.at(a)));
   }
   return out;
 }

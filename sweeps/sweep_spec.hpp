@@ -3,10 +3,19 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sweeps {
+
+/// A case-file key that moves with an axis: it takes its own value at each of the axis' values
+/// (e.g. the run's duration with an orifice's size).
+struct LinkedKey {
+  std::string key;
+  std::vector<double> values;  ///< one per value of the axis
+};
 
 /// One swept parameter: a dotted key of the case file and the values it takes.
 struct SweepAxis {
@@ -14,6 +23,19 @@ struct SweepAxis {
   std::string label;           ///< short name in tables and plots (default: the key's last part)
   std::vector<double> values;  ///< at least one, in the order given
   bool log_scale = false;      ///< plot this axis on a logarithmic scale
+  std::vector<LinkedKey> linked{};  ///< keys set together with this one (parameters[i].with)
+};
+
+/// The Beverloo fit of a hopper sweep ([beverloo], docs/hopper.md): which axis holds the orifice
+/// and what the law needs besides the measured flow rates.
+struct BeverlooSpec {
+  std::size_t axis = 0;            ///< the axis holding the orifice (`orifice`, one of the axes' keys)
+  double orifice_scale = 1.0;      ///< D = this × the axis value (2 when the axis holds a radius)
+  double grain_diameter = 0.0;     ///< d [m]
+  double grain_density = 0.0;      ///< ρ_p [kg/m³]; ρ_b = φ ρ_p
+  std::string flow_rate = "mass_flow_rate";         ///< metric holding W
+  std::string packing_fraction = "packing_fraction";  ///< metric holding the bed's φ
+  double gravity = 9.81;           ///< g [m/s²]
 };
 
 /// A sweep file (docs/sweeps.md): a case, the parameters varied over it, the seeds of each point.
@@ -27,13 +49,19 @@ struct SweepSpec {
   std::vector<std::string> engines;   ///< empty: the case's compare.engines
   std::vector<std::string> metrics;   ///< empty: the case's compare.metrics
   std::vector<SweepAxis> axes;        ///< the matrix is their Cartesian product
+  std::optional<BeverlooSpec> beverloo;  ///< fit Beverloo's law to the flow rates ([beverloo])
 };
 
 /// One point of the matrix: its index and one value per axis.
 struct SweepPoint {
   std::size_t index = 0;
   std::vector<double> values;
+  std::vector<std::size_t> positions;  ///< the index of each value in its axis
 };
+
+/// Every (key, value) the point sets in the case: each axis' key and its linked keys.
+[[nodiscard]] std::vector<std::pair<std::string, double>> point_overrides(const SweepSpec& spec,
+                                                                         const SweepPoint& point);
 
 /// Reads a sweep file. Throws cases::CaseError naming the file and key on any problem (unknown
 /// key, empty axis, repeated seed, missing case file).

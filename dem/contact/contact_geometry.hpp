@@ -5,6 +5,7 @@
 
 #include "dem/contact/laws/linear_dashpot.hpp"
 #include "dem/contact/model_choice.hpp"
+#include "dem/contact/wall.hpp"
 #include "dem/core/vector.hpp"
 
 namespace dem {
@@ -28,7 +29,7 @@ struct ContactGeometry {
   double contact_distance;  ///< r_p + r_q [m] (r for a wall): centre distance at first touch
   double effect_distance;   ///< r̂_p + r̂_q [m] (r̂ for a wall)
   double charge_product;    ///< q_p q_q [C²] (0 for a wall)
-  bool against_wall = false;  ///< q is a plane wall (wall_geometry), not a sphere
+  bool against_wall = false;  ///< q is a wall (wall_geometry), not a sphere
 };
 
 /// The extent of a pair that sets how far its law reaches (for neighbour search).
@@ -100,28 +101,20 @@ struct SphereState {
   return g;
 }
 
-/// A plane wall: a point on it at t = 0, its unit normal pointing into the domain, a constant
-/// velocity (moving walls), and its material.
-struct PlaneWall {
-  Vec3 point;
-  Vec3 normal;
-  Vec3 velocity = Vec3::Zero();
-  std::uint32_t material = 0;
-};
-
-/// Kinematics of sphere p against a plane wall at time t (the wall acts as an infinite-mass
-/// partner: m* = m, R* = r). The normal is the wall's; the lever arm is r − δ/2 (common normal,
+/// Kinematics of sphere p against a wall at time t (the wall acts as an infinite-mass
+/// partner: m* = m, R* = r). The normal and distance are wall_frame's (a plane's own normal);
+/// the lever arm is r − δ/2 (common normal,
 /// and WallLeverArm::yade_incident) or r (WallLeverArm::radius, LAMMPS fix wall/gran); the
 /// contact-point velocity uses the same arm, except under yade_incident (see WallLeverArm).
-[[nodiscard]] inline ContactGeometry wall_geometry(const SphereState& p, const PlaneWall& w,
+[[nodiscard]] inline ContactGeometry wall_geometry(const SphereState& p, const Wall& w,
                                                    double t, WallLeverArm arm) noexcept {
   const bool lever_arm_is_radius = arm == WallLeverArm::radius;
   ContactGeometry g;
-  const double distance = (p.position - (w.point + t * w.velocity)).dot(w.normal);
-  g.normal = w.normal;
-  g.distance = distance;
-  g.overlap = p.radius - distance;
-  g.effect_overlap = p.effect_radius - distance;
+  const WallFrame frame = wall_frame(w, p.position, t);
+  g.normal = frame.normal;
+  g.distance = frame.distance;
+  g.overlap = p.radius - frame.distance;
+  g.effect_overlap = p.effect_radius - frame.distance;
   g.branch_p = -(lever_arm_is_radius ? p.radius : p.radius - 0.5 * g.overlap) * g.normal;
   g.branch_q = Vec3::Zero();
   if (arm == WallLeverArm::yade_incident) {

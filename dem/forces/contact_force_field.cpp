@@ -102,6 +102,11 @@ ContactForceField::ContactForceField(const ParticleProperties& props, const Pair
                                    length, kAxis[k], cutoff, 2.0 * largest, setup_.neighbors.skin));
     }
     for (std::size_t w = 0; w < setup_.walls.size(); ++w) {
+      if (setup_.walls[w].shape != WallShape::plane) {
+        throw ModelError("walls", fmt::format("wall {} is bounded; bounded walls have no periodic images, "
+                                              "so a periodic domain takes plane walls only",
+                                              w));
+      }
       if (setup_.walls[w].normal[k] != 0.0) {
         throw ModelError("walls", fmt::format("wall {} has a normal component along the periodic axis {}; "
                                               "a plane wall must be parallel to every periodic axis",
@@ -226,7 +231,7 @@ void ContactForceField::evaluate(const KinematicState& state, double elapsed, Ac
   }
   const double half_skin = 0.5 * setup_.neighbors.skin;
   double wall_travel = 0.0;
-  for (const PlaneWall& w : setup_.walls) {
+  for (const Wall& w : setup_.walls) {
     wall_travel = std::max(wall_travel, w.velocity.norm() * std::abs(state.time - built_time_));
   }
   // Verlet criterion (thesis B.2): rebuild once some sphere or wall has moved half the skin.
@@ -259,6 +264,9 @@ void ContactForceField::evaluate(const KinematicState& state, double elapsed, Ac
   std::swap(torque_, committed_torque_);
   ledger_.elastic = totals_.elastic;
   ledger_.cohesive = totals_.cohesive;
+  // Energy a removed wall took away is work of the boundary, not an integration error.
+  ledger_.boundary_work -= totals_.removed;
+  potential_booked_ -= totals_.removed;
   ledger_.dissipated_friction += totals_.friction;
   ledger_.dissipated_adhesion += totals_.adhesion;
   ledger_.dissipated_plastic += totals_.plastic;
@@ -430,8 +438,18 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
         const SphereState p = sphere(state, i);
         for (std::uint32_t k = wall_list_.begin(i); k < wall_end; ++k) {
           WallEntry& e = wall_entries[k];
-          const PlaneWall& wall = setup_.walls[e.wall];
+          const Wall& wall = setup_.walls[e.wall];
           const ContactGeometry g = wall_geometry(p, wall, t_now, lever);
+          if (!wall.present(t_now)) {
+            if (commit && track && e.active != 0) {
+              // The wall was removed under this contact: what its springs held leaves with it.
+              const ContactOutcome o = evaluate_contact(table_.law(props_.material[i], wall.material), g,
+                                                        assemble(e.slip, e.active, wall_ext, k), elapsed);
+              if (o.interacting) sums.removed += o.elastic_energy + o.cohesive_energy;
+            }
+            if (commit) e.active = 0;
+            continue;
+          }
           if (g.distance > wall_reach_of(i, e.wall)) {
             if (commit && track && e.active != 0) {
               // A contact of the last commit that ends here: the ledger books what its springs
@@ -504,10 +522,10 @@ void ContactForceField::observe(const KinematicState& state, double elapsed) {
     o.normal_force = 0.0;
     o.interacting = false;
     if (o.wall) {
-      const PlaneWall& wall = setup_.walls[o.q];
+      const Wall& wall = setup_.walls[o.q];
       const ContactGeometry g = wall_geometry(sphere(state, o.p), wall, state.time, setup_.wall_lever_arm);
       o.overlap = g.overlap;
-      if (props_.fixed[o.p] != 0 || g.distance > wall_reach_of(o.p, o.q)) continue;
+      if (props_.fixed[o.p] != 0 || !wall.present(state.time) || g.distance > wall_reach_of(o.p, o.q)) continue;
       const std::int64_t k = wall_list_.find(o.p, o.q);
       const ContactHistory h = k >= 0 ? wall_list_.history(static_cast<std::size_t>(k)) : ContactHistory{};
       const ContactOutcome c = evaluate_contact(table_.law(props_.material[o.p], wall.material), g, h, elapsed);

@@ -36,7 +36,7 @@ struct ContactObservation {
 
 /// What the force field acts on, beyond the particles and pair laws.
 struct ForceFieldSetup {
-  std::vector<PlaneWall> walls;
+  std::vector<Wall> walls;
   ExternalFields fields;
   std::vector<PrescribedMotion> motions;  ///< for fixed spheres that move
   WallLeverArm wall_lever_arm = WallLeverArm::contact_point;
@@ -110,7 +110,7 @@ class ContactForceField final : public ForceEvaluator {
   /// Prescribed motions (for fixed spheres that move).
   [[nodiscard]] const std::vector<PrescribedMotion>& motions() const noexcept { return setup_.motions; }
   /// Walls.
-  [[nodiscard]] const std::vector<PlaneWall>& walls() const noexcept { return setup_.walls; }
+  [[nodiscard]] const std::vector<Wall>& walls() const noexcept { return setup_.walls; }
   /// The periodic box.
   [[nodiscard]] const PeriodicBox& box() const noexcept { return setup_.box; }
   /// Neighbour-list settings (skin resolved).

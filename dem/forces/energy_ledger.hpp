@@ -37,6 +37,7 @@ struct EnergyTotals {
   double plastic = 0.0;      ///< plastic work since the last commit [J]
   double wall_power = 0.0;   ///< Σ F·v_wall over wall contacts: power the walls put in [W]
   double wall_damping_power = 0.0;  ///< Σ F_d·v_wall: the walls' share of the dashpot power [W]
+  double removed = 0.0;      ///< spring and cohesive energy of contacts whose wall was removed at this commit [J]
 
   /// Adds another partial sum.
   EnergyTotals& operator+=(const EnergyTotals& o) noexcept {
@@ -47,6 +48,7 @@ struct EnergyTotals {
     plastic += o.plastic;
     wall_power += o.wall_power;
     wall_damping_power += o.wall_damping_power;
+    removed += o.removed;
     return *this;
   }
 };

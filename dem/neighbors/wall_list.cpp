@@ -4,7 +4,7 @@
 namespace dem {
 
 void WallList::build(std::span<const PackedSphere> spheres, std::span<const std::uint8_t> still,
-                     const std::vector<PlaneWall>& walls, double t, double skin,
+                     const std::vector<Wall>& walls, double t, double skin,
                      const std::function<double(std::uint32_t, std::uint32_t)>& reach,
                      bool extended_history, std::span<const std::uint32_t> new_of_old) {
   carried_.clear();
@@ -25,9 +25,9 @@ void WallList::build(std::span<const PackedSphere> spheres, std::span<const std:
     if (still[i] == 0) {
       const Vec3 x(spheres[i].x, spheres[i].y, spheres[i].z);
       for (std::uint32_t w = 0; w < walls.size(); ++w) {
-        const PlaneWall& wall = walls[w];
-        const double distance = (x - (wall.point + t * wall.velocity)).dot(wall.normal);
-        if (distance < reach(i, w) + skin) entries_.push_back({w, 0, Vec3::Zero()});
+        const Wall& wall = walls[w];
+        if (!wall.present(t)) continue;
+        if (wall_frame(wall, x, t).distance < reach(i, w) + skin) entries_.push_back({w, 0, Vec3::Zero()});
       }
     }
     offsets_[i + 1] = static_cast<std::uint32_t>(entries_.size());

@@ -25,11 +25,11 @@ struct WallEntry {
 /// history. Rebuilt with the sphere list; the history of every interacting contact carries over.
 class WallList {
  public:
-  /// Lists, for every sphere that is not `still`, the walls whose plane lies within
+  /// Lists, for every sphere that is not `still`, the walls present at t whose surface lies within
   /// reach(i, w) + skin of its centre at time t. `new_of_old` maps the previous build's sphere
   /// indices to the current ones (empty: unchanged).
   void build(std::span<const PackedSphere> spheres, std::span<const std::uint8_t> still,
-             const std::vector<PlaneWall>& walls, double t, double skin,
+             const std::vector<Wall>& walls, double t, double skin,
              const std::function<double(std::uint32_t, std::uint32_t)>& reach,
              bool extended_history, std::span<const std::uint32_t> new_of_old = {});
 

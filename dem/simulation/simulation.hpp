@@ -20,7 +20,7 @@ struct SimulationSetup {
   std::vector<PairOverride> pair_overrides;
   ModelChoice model;
   ExternalFields fields;                  ///< gravity and fluid
-  std::vector<PlaneWall> walls;
+  std::vector<Wall> walls;
   std::vector<PrescribedMotion> motions;  ///< for fixed spheres that move
   SchemeId scheme = SchemeId::velocity_verlet;
   SchemeSettings scheme_settings;

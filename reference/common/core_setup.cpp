@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "dem/contact/pair_table.hpp"
+#include "cases/core_wall.hpp"
 #include "cases/time_step.hpp"
 
 namespace reference {
@@ -55,8 +56,7 @@ CoreSetup core_setup(const PreparedScene& prepared, int threads) {
     s.motions.push_back(std::move(m));
   }
   for (const auto& w : scene.walls) {
-    s.walls.push_back(dem::PlaneWall{to_vec(w.point), to_vec(w.normal), to_vec(w.velocity),
-                                     static_cast<std::uint32_t>(w.material)});
+    s.walls.push_back(cases::core_wall(w));
   }
   s.fields.gravity = to_vec(scene.gravity);
   for (std::size_t k = 0; k < 3; ++k) {

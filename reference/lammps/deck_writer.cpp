@@ -170,19 +170,35 @@ void write_pairs(std::string& deck, const cases::Scene& scene, const dem::PairTa
   line(deck, "neigh_modify", "delay 0 every 1 check yes");
 }
 
-/// One `fix wall/gran granular` per (wall, mobile atom type): η depends on the type's mass.
+/// One `fix wall/gran granular` (planes) or `fix wall/gran/region granular` (cylinders and cones,
+/// on a `region … open 1 open 2`) per (wall, mobile atom type): η depends on the type's mass. A wall
+/// removed at t ≤ 0 stood only through the preparation and is left out.
 void write_walls(std::string& deck, const cases::Scene& scene, const dem::PairTable& table, const AtomTypes& types) {
   if (scene.walls.empty()) return;
   deck += "# walls: parameters belong to the particle-wall interaction (E_in = 2(1-nu) E*, "
           "explicit k_t; lever arm r; delta = 0 counts as contact)\n";
+  for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+    const cases::WallSpec& wall = scene.walls[w];
+    if (!wall_in_run(wall)) {
+      deck += fmt::format("# wall {} ('{}') is removed at t <= 0: only the preparation met it\n", w, ascii(wall.name));
+      continue;
+    }
+    if (const auto region = wall_region_arguments(wall)) {
+      deck += fmt::format("# wall {} ('{}'): open at both ends, two-sided; R* uses the region's curvature (-2 rho)\n",
+                          w, ascii(wall.name));
+      line(deck, "region", fmt::format("{} {}", wall_region_id(w), *region));
+    }
+  }
   for (std::size_t t = 0; t < types.types.size(); ++t) {
     const AtomType& type = types.types[t];
     if (type.fixed) continue;
     line(deck, "group", fmt::format("tr_type_{0} type {0}", t + 1));
     for (std::size_t w = 0; w < scene.walls.size(); ++w) {
       const cases::WallSpec& wall = scene.walls[w];
+      if (!wall_in_run(wall)) continue;
       const std::optional<WallPlane> plane = wall_plane(wall);
-      if (!plane) continue;  // supports() reports it
+      const std::optional<std::string> region = wall_region_arguments(wall);
+      if (!plane && !region) continue;  // supports() reports it
       PairContext context;
       context.reduced_mass = type.mass;
       context.per_atom_masses = types.per_atom_diameter;
@@ -192,9 +208,15 @@ void write_walls(std::string& deck, const cases::Scene& scene, const dem::PairTa
           map_pair_law(table.law(type.material, wall.material), context);
       deck += fmt::format("# wall {} ('{}') x type {}: {}; {}\n", w, ascii(wall.name), t + 1,
                           ascii(coeff.normal_note), ascii(coeff.damping_note));
-      line(deck, "fix",
-           fmt::format("{} tr_type_{} wall/gran granular {} {}", wall_fix_id(w, t + 1), t + 1,
-                       pair_coeff_arguments(coeff), wall_plane_arguments(*plane)));
+      if (plane) {
+        line(deck, "fix",
+             fmt::format("{} tr_type_{} wall/gran granular {} {}", wall_fix_id(w, t + 1), t + 1,
+                         pair_coeff_arguments(coeff), wall_plane_arguments(*plane)));
+      } else {
+        line(deck, "fix",
+             fmt::format("{} tr_type_{} wall/gran/region granular {} region {}", wall_fix_id(w, t + 1), t + 1,
+                         pair_coeff_arguments(coeff), wall_region_id(w)));
+      }
     }
   }
 }
@@ -288,6 +310,8 @@ PairContext pair_context(const cases::Scene& scene, const AtomTypes& types, std:
   c.poisson_ratio = written_poisson(scene, types.types[a].material, types.types[b].material);
   return c;
 }
+
+std::string wall_region_id(std::size_t wall) { return fmt::format("tr_wall_region_{}", wall); }
 
 std::string wall_fix_id(std::size_t wall, std::size_t lammps_type) {
   return fmt::format("tr_wall_{}_{}", wall, lammps_type);

@@ -31,8 +31,11 @@ double written_poisson(const cases::Scene& scene, std::size_t material_a, std::s
 PairContext pair_context(const cases::Scene& scene, const AtomTypes& types, std::size_t a,
                          std::size_t b);
 
-/// ID of the `fix wall/gran` of wall `wall` acting on LAMMPS type `lammps_type`.
+/// ID of the `fix wall/gran` (or wall/gran/region) of wall `wall` acting on LAMMPS type `lammps_type`.
 std::string wall_fix_id(std::size_t wall, std::size_t lammps_type);
+
+/// ID of the `region` of a cylinder or cone wall `wall`.
+std::string wall_region_id(std::size_t wall);
 
 /// The complete LAMMPS input deck for `scene` (pure: same input, same text). SI units,
 /// `atom_style sphere`, `boundary f f f` with simulation_box(), `newton off`,

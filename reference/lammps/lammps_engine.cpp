@@ -60,6 +60,14 @@ Support LammpsEngine::supports(const PreparedScene& prepared) const {
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     for (auto& reason : lammps::unmapped_wall(scene.walls[w], w)) s.reasons.push_back(reason);
   }
+  for (const auto& [p, w] : scene.output.trace_walls) {
+    if (!lammps::wall_plane(scene.walls.at(w))) {
+      s.reasons.push_back(fmt::format("LAMMPS driver: the traced contact of particle {} with wall {} ('{}'): only a "
+                                      "plane wall's overlap and force are traced (fix wall/gran/region reports "
+                                      "neither per wall)",
+                                      p, w, scene.walls.at(w).name));
+    }
+  }
   if (scene.model.pair_lever_arm == dem::PairLeverArm::radius) {
     s.reasons.emplace_back(
         "LAMMPS driver: pair_lever_arm = 'radius' is gran/hooke/history's convention; the driver writes "

@@ -1,12 +1,25 @@
 // SPDX-License-Identifier: MIT
 #include "reference/lammps/matched_scene.hpp"
 
+#include <stdexcept>
+
+#include <fmt/format.h>
+
 #include "reference/common/core_setup.hpp"
+#include "reference/lammps/wall_mapping.hpp"
 
 namespace reference::lammps {
 
 cases::Scene matched_scene(const PreparedScene& prepared) {
   const cases::Scene& scene = prepared.scene();
+  for (const cases::WallSpec& w : scene.walls) {
+    if (w.shape == dem::WallShape::plane || !wall_in_run(w)) continue;
+    // fix wall/gran/region takes R* with the region's curvature (−2ρ for a cylinder or cone,
+    // rims included); the core's walls have R* = r.
+    throw std::runtime_error(fmt::format("wall '{}' is a {}: LAMMPS' region walls take R* from the region's "
+                                         "curvature, which the core does not reproduce",
+                                         w.name, cases::wall_shape_name(w)));
+  }
   cases::Scene matched = scene;
   // fix nve/sphere (fix nve without rotation): velocity Verlet, forces with v(t + Δt/2).
   matched.integration.timestep = core_setup(prepared).simulation.timestep;

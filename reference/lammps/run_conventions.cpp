@@ -106,10 +106,12 @@ std::map<std::string, std::string> run_conventions(const PreparedScene& prepared
   }
   if (!scene.walls.empty()) {
     c["walls"] =
-        "fix wall/gran granular per (wall, mobile atom type), axis-aligned planes only; E_in = "
-        "2(1-nu)E* (this build's wall E* = E/(2(1-nu))), k_t explicit, m* = the particle mass, "
-        "R* = r; lever arm and contact-point velocity use r (the core's wall_lever_arm 'radius'); "
-        "delta = 0 counts as contact (pairs need delta > 0)";
+        "fix wall/gran granular per (wall, mobile atom type) for axis-aligned planes, fix "
+        "wall/gran/region on a region open at both ends for cylinders and cones about x, y or z; "
+        "E_in = 2(1-nu)E* (this build's wall E* = E/(2(1-nu))), k_t explicit, m* = the particle "
+        "mass, R* = r on planes but 2 r rho / (2 rho - r) on a region of radius rho (the core: r); "
+        "lever arm and contact-point velocity use r (the core's wall_lever_arm 'radius'); "
+        "delta = 0 counts as contact (pairs need delta > 0); a wall removed at t <= 0 is left out";
   }
   bool driven = false;
   for (const auto& p : scene.particles) driven = driven || !p.motion.empty();

@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include "reference/lammps/wall_mapping.hpp"
 
 namespace reference::lammps {
 namespace {
@@ -26,11 +29,23 @@ Box simulation_box(const cases::Scene& scene, double duration) {
     if (!p.fixed) fastest = std::max(fastest, norm(p.velocity));
     largest = std::max(largest, p.radius);
   }
-  const double margin =
-      2.0 * fastest * duration + norm(scene.gravity) * duration * duration + 2.0 * largest;
   for (std::size_t k = 0; k < 3; ++k) {
+    const double margin = 2.0 * fastest * duration + std::abs(scene.gravity[k]) * duration * duration + 2.0 * largest;
     box.low[k] -= margin;
     box.high[k] += margin;
+  }
+  // The spheres stay inside the planes that bound them (the loader refuses a start overlapping a
+  // wall by more than 1 % of r): a plane sets its side of the box, however fast the spheres get.
+  for (const cases::WallSpec& w : scene.walls) {
+    if (!wall_in_run(w) || w.velocity != cases::Vector3{0.0, 0.0, 0.0}) continue;
+    const std::optional<WallPlane> plane = wall_plane(w);
+    if (!plane) continue;
+    const auto k = static_cast<std::size_t>(plane->axis);
+    if (plane->lower) {
+      box.low[k] = plane->position - 2.0 * largest;
+    } else {
+      box.high[k] = plane->position + 2.0 * largest;
+    }
   }
   return box;
 }

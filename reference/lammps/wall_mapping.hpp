@@ -20,9 +20,20 @@ struct WallPlane {
 /// The fix wall/gran plane of `wall`, or empty when its normal is not ±(a unit axis).
 std::optional<WallPlane> wall_plane(const cases::WallSpec& wall);
 
-/// One reason per property of wall `index` that fix wall/gran cannot express (a tilted normal:
-/// only xplane/yplane/zplane exist; a moving wall: only `wiggle`/`shear` motions exist).
+/// One reason per property of wall `index` that the deck cannot express (a tilted plane: fix
+/// wall/gran has only xplane/yplane/zplane; a moving wall: only `wiggle`/`shear` motions exist; a
+/// cylinder or cone about a tilted axis; a disc or rectangle; a removal during the run). None for a
+/// wall removed at t ≤ 0, which the run never meets (wall_in_run).
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index);
+
+/// False for a wall removed at t ≤ 0: it stood only through the preparation (a shutter), and the
+/// deck leaves it out.
+[[nodiscard]] bool wall_in_run(const cases::WallSpec& wall) noexcept;
+
+/// The `region` arguments of a cylinder or cone wall about a coordinate axis, open at both ends
+/// and two-sided, for fix wall/gran/region, e.g. "cone z 0 0 0.006 0.015 0 0.003 side in open 1
+/// open 2 units box"; empty for any other wall.
+[[nodiscard]] std::optional<std::string> wall_region_arguments(const cases::WallSpec& wall);
 
 /// "zplane 0 NULL" (or "xplane NULL 0.5", …) for the plane.
 std::string wall_plane_arguments(const WallPlane& plane);

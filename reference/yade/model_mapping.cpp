@@ -258,6 +258,14 @@ void check_mindlin_modulus(const cases::Scene& scene, const dem::PairLaw& law, s
 /// Walls: YADE's utils.wall is an axis-aligned, immobile plane.
 void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
   for (const auto& w : scene.walls) {
+    if (w.shape != dem::WallShape::plane) {
+      add_reason(reasons, fmt::format("YADE driver: wall '{}' is a {}; only plane walls (utils.wall) are mapped",
+                                      w.name, cases::wall_shape_name(w)));
+      continue;
+    }
+    if (w.removed_at) {
+      add_reason(reasons, fmt::format("YADE driver: wall '{}' is removed during the run; that is not mapped", w.name));
+    }
     if (wall_axis(w.normal).axis < 0) {
       add_reason(reasons, fmt::format("YADE driver: wall '{}' is not normal to a coordinate axis "
                                       "(utils.wall is axis-aligned)", w.name));

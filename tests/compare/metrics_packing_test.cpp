@@ -95,6 +95,18 @@ TEST(PackingMetrics, AreMissingWithTheReasonWhenTheRunHasNoSnapshotOrTheCaseNoRe
             std::string::npos);
 }
 
+TEST(PackingMetrics, AtStartReadTheFirstSnapshot) {
+  Lattice l = lattice();
+  l.scene.compare.packing->at_start = true;
+  // The first snapshot holds every mobile sphere far outside the region.
+  const comparison::MetricSet m = comparison::compute_metrics(l.scene, l.run, nullptr);
+  EXPECT_DOUBLE_EQ(*m.at("packing_fraction").value, 0.0);
+  EXPECT_DOUBLE_EQ(*m.at("dose_remaining").value, 0.0);
+  std::swap(l.run.snapshots.front(), l.run.snapshots.back());
+  EXPECT_NEAR(*comparison::compute_metrics(l.scene, l.run, nullptr).at("packing_fraction").value, std::numbers::pi / 6,
+              1e-13);
+}
+
 }  // namespace
 
 namespace coordination_test {

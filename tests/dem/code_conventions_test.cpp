@@ -47,7 +47,7 @@ TEST(YadeIncident, ScalesTheCentresTangentialVelocityByAlphaAndSpinsWithTheRadii
 TEST(YadeIncident, AgainstAWallScalesBy2rOver2rMinusDelta) {
   const double r = 1e-3, delta = 3e-6;
   const dem::SphereState p{Vec3(0, 0, r - delta), Vec3(0.3, -0.1, -0.2), Vec3(40.0, 20.0, -10.0), r, r, 1e5};
-  const dem::PlaneWall floor{Vec3::Zero(), Vec3::UnitZ()};
+  const dem::Wall floor{Vec3::Zero(), Vec3::UnitZ()};
   const dem::ContactGeometry g = dem::wall_geometry(p, floor, 0.0, dem::WallLeverArm::yade_incident);
   const Vec3 n = Vec3::UnitZ();
   const double alpha = 2.0 * r / (2.0 * r - delta);

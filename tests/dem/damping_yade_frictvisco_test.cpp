@@ -34,7 +34,7 @@ TEST(YadeFrictViscoDamping, WallUsesTwiceTheSphereRadius) {
   dem::SphereState p = sphere(0.0, 0.0, 0.01, 1.0 / m);
   p.position = dem::Vec3(0, 0, 0.0099);
   p.velocity = dem::Vec3(3.0, 0, -2.0);
-  const dem::PlaneWall wall{dem::Vec3::Zero(), dem::Vec3::UnitZ()};
+  const dem::Wall wall{dem::Vec3::Zero(), dem::Vec3::UnitZ()};
   const auto g = dem::wall_geometry(p, wall, 0.0, dem::WallLeverArm::contact_point);
   ASSERT_TRUE(g.against_wall);
   ASSERT_NEAR(g.overlap, 1e-4, 1e-16);

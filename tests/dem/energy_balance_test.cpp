@@ -81,9 +81,9 @@ dem::SimulationSetup random_scene(unsigned seed, Law law, dem::SchemeId scheme, 
   s.motions = {dem::PrescribedMotion{0, s.particles[0].position,
                                      {dem::MotionSegment{0.004, dem::Vec3(0.3, 0.0, 0.1)},
                                       dem::MotionSegment{1.0, dem::Vec3(-0.2, 0.1, 0.0)}}}};
-  s.walls = {dem::PlaneWall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 1},
-             dem::PlaneWall{dem::Vec3(0, 0, box), dem::Vec3(0, 0, -1), dem::Vec3(0, 0, -0.3), 1},
-             dem::PlaneWall{dem::Vec3::Zero(), dem::Vec3(1, 0, 0), dem::Vec3(0.05, 0.0, 0.0), 1}};
+  s.walls = {dem::Wall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 1},
+             dem::Wall{dem::Vec3(0, 0, box), dem::Vec3(0, 0, -1), dem::Vec3(0, 0, -0.3), 1},
+             dem::Wall{dem::Vec3::Zero(), dem::Vec3(1, 0, 0), dem::Vec3(0.05, 0.0, 0.0), 1}};
   s.fields.gravity = dem::Vec3(0, 0, -9.81);
   dem::Fluid fluid;
   fluid.density = 800.0;  // dense enough that buoyancy and virtual mass weigh
@@ -279,7 +279,7 @@ FloorDrop floor_drop(const dem::ModelChoice& model, const dem::Vec3& velocity, d
   s.materials = {m};
   s.model = model;
   s.particles = {dem::ParticleInit{0.01, 0.01, 1000.0, 0, dem::Vec3(0, 0, 0.0101), velocity, dem::Vec3(0, 40.0, 0), false}};
-  s.walls = {dem::PlaneWall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 0}};
+  s.walls = {dem::Wall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 0}};
   s.scheme = dem::SchemeId::velocity_verlet;
   s.scheme_settings.length_scale = 0.01;
   s.scheme_settings.rotation = rotation;
@@ -363,7 +363,7 @@ TEST(EnergyBalance, AMovingWallPutsInItsClosedFormWorkAndTheDashpotTakesItsShare
   s.model.normal = "linear";
   s.model.damping = "restitution";
   s.particles = {dem::ParticleInit{0.01, 0.01, 1000.0, 0, dem::Vec3(0, 0, 0.0101), dem::Vec3::Zero(), dem::Vec3::Zero(), false}};
-  s.walls = {dem::PlaneWall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3(0, 0, 1.0), 0}};
+  s.walls = {dem::Wall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3(0, 0, 1.0), 0}};
   s.scheme = dem::SchemeId::velocity_verlet;
   s.scheme_settings.rotation = false;
   s.scheme_settings.length_scale = 0.01;

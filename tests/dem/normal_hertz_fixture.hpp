@@ -52,7 +52,7 @@ inline dem::SimulationSetup impact(dem::SchemeId scheme, double dt, const std::s
   s.particles = {dem::ParticleInit{kRadius, kRadius, kDensity, 0, dem::Vec3(0, 0, 0),
                                    dem::Vec3(speed, 0, 0), dem::Vec3::Zero(), false}};
   if (wall) {
-    s.walls = {dem::PlaneWall{dem::Vec3(kRadius + gap, 0, 0), dem::Vec3(-1, 0, 0), dem::Vec3::Zero(), 0}};
+    s.walls = {dem::Wall{dem::Vec3(kRadius + gap, 0, 0), dem::Vec3(-1, 0, 0), dem::Vec3::Zero(), 0}};
   } else {
     s.particles.push_back(dem::ParticleInit{kPartnerRadius, kPartnerRadius, kDensity, 0,
                                             dem::Vec3(kRadius + kPartnerRadius + gap, 0, 0),

@@ -24,7 +24,7 @@ const double kInertia = 0.4 * kMass * kRadius * kRadius;
 
 dem::ContactGeometry floor_contact(double overlap, const Vec3& v, const Vec3& w) {
   const dem::SphereState p{Vec3(0, 0, kRadius - overlap), v, w, kRadius, kRadius, 1.0 / kMass};
-  return dem::wall_geometry(p, dem::PlaneWall{Vec3::Zero(), Vec3::UnitZ()}, 0.0, dem::WallLeverArm::contact_point);
+  return dem::wall_geometry(p, dem::Wall{Vec3::Zero(), Vec3::UnitZ()}, 0.0, dem::WallLeverArm::contact_point);
 }
 
 dem::PairLaw rolling_law(const char* rolling, double mu_r, double k_r = 1e3, double gamma_r = 0.0) {
@@ -110,7 +110,7 @@ dem::SimulationSetup rolling_sphere(const char* rolling, double mu_r, double v0)
   const double lever = kRadius - 0.5 * overlap;
   s.particles = {dem::ParticleInit{kRadius, kRadius, kDensity, 0, Vec3(0, 0, kRadius - overlap),
                                    Vec3(v0, 0, 0), Vec3(0, v0 / lever, 0), false}};
-  s.walls = {dem::PlaneWall{Vec3::Zero(), Vec3::UnitZ()}};
+  s.walls = {dem::Wall{Vec3::Zero(), Vec3::UnitZ()}};
   s.fields.gravity = Vec3(0, 0, -kGravity);
   s.scheme = dem::SchemeId::velocity_verlet;
   s.scheme_settings.length_scale = kRadius;

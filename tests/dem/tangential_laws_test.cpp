@@ -25,7 +25,7 @@ const double kMass = 4.0 / 3.0 * std::numbers::pi * 1000.0 * std::pow(kRadius, 3
 dem::ContactGeometry floor_contact(double overlap, const Vec3& v, const Vec3& w = Vec3::Zero(),
                                    bool lever_is_radius = false) {
   const dem::SphereState p{Vec3(0, 0, kRadius - overlap), v, w, kRadius, kRadius, 1.0 / kMass};
-  const dem::PlaneWall floor{Vec3::Zero(), Vec3::UnitZ()};
+  const dem::Wall floor{Vec3::Zero(), Vec3::UnitZ()};
   return dem::wall_geometry(p, floor, 0.0, lever_is_radius ? dem::WallLeverArm::radius : dem::WallLeverArm::contact_point);
 }
 

@@ -54,7 +54,7 @@ struct WallScene {
     s.model.friction_limit = limit;
     s.particles = {dem::ParticleInit{kRadius, kRadius, kDensity, 0, height * normal, velocity,
                                      Vec3::Zero(), false}};
-    s.walls = {dem::PlaneWall{Vec3::Zero(), normal}};
+    s.walls = {dem::Wall{Vec3::Zero(), normal}};
     s.fields.gravity = gravity;
     s.scheme = scheme;
     s.scheme_settings.rotation = rotation;

@@ -48,7 +48,7 @@ Rebound impact(double theta_deg, double tangential_ratio) {
   const Vec3 v(kSpeed * std::sin(theta), 0, -kSpeed * std::cos(theta));
   s.particles = {dem::ParticleInit{kRadius, kRadius, kDensity, 0, Vec3(0, 0, kRadius + 1e-6), v,
                                    Vec3::Zero(), false}};
-  s.walls = {dem::PlaneWall{Vec3::Zero(), Vec3::UnitZ()}};
+  s.walls = {dem::Wall{Vec3::Zero(), Vec3::UnitZ()}};
   s.scheme = dem::SchemeId::velocity_verlet;
   s.scheme_settings.length_scale = kRadius;
   s.timestep = 2e-7;

@@ -23,7 +23,7 @@ dem::SimulationSetup floor_drop(double restitution, dem::SchemeId scheme, double
   // Sphere 1 mm above a floor at z = 0, falling at 2 m/s; no gravity so the rebound is clean.
   s.particles = {dem::ParticleInit{0.01, 0.01, 1000.0, 0, dem::Vec3(0, 0, 0.011),
                                    dem::Vec3(0, 0, -2.0), dem::Vec3::Zero(), false}};
-  s.walls = {dem::PlaneWall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 0}};
+  s.walls = {dem::Wall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 0}};
   s.scheme = scheme;
   s.scheme_settings.rotation = false;
   s.scheme_settings.length_scale = 0.01;
@@ -33,7 +33,7 @@ dem::SimulationSetup floor_drop(double restitution, dem::SchemeId scheme, double
 
 double mover_mass() { return 4.0 / 3.0 * std::numbers::pi * 1000.0 * 1e-6; }
 
-TEST(PlaneWall, ReboundsWithTheRequestedRestitutionAndM_StarEqualToM) {
+TEST(Wall, ReboundsWithTheRequestedRestitutionAndM_StarEqualToM) {
   const double eta = dem::laws::restitution_damping_coefficient(0.6, mover_mass(), 1e5);
   const double tc = dem::laws::linear_contact_duration(1e5, mover_mass(), eta);
   dem::Simulation sim(floor_drop(0.6, dem::SchemeId::rk4, tc / 400.0));
@@ -41,7 +41,7 @@ TEST(PlaneWall, ReboundsWithTheRequestedRestitutionAndM_StarEqualToM) {
   EXPECT_NEAR(sim.state().velocity(2, 0) / 2.0, 0.6, 1e-4);
 }
 
-TEST(PlaneWall, WatchedWallContactReportsOverlapAndForce) {
+TEST(Wall, WatchedWallContactReportsOverlapAndForce) {
   dem::Simulation sim(floor_drop(1.0, dem::SchemeId::velocity_verlet, 1e-6));
   sim.watch({dem::ContactObservation{0, 0, true, 0.0, 0.0, false}});
   EXPECT_NEAR(sim.force_field().observations()[0].overlap, -0.001, 1e-15);

@@ -85,6 +85,39 @@ values = [10.0, 20.0, 30.0]
   EXPECT_EQ(points[5].index, 5U);
 }
 
+TEST(SweepSpec, LinkedKeysMoveWithTheirAxis) {
+  const fs::path dir = fs::temp_directory_path() / "demwb-sweep-linked";
+  support::write_file(dir / "small.toml", test_support::small_agglomerate());
+  const std::string head = R"(
+[sweep]
+name = "m"
+case = "small.toml"
+seeds = [1]
+[[parameters]]
+key = "a.b"
+values = [1.0, 2.0, 3.0]
+)";
+  const std::string other = "[[parameters]]\nkey = \"e.f\"\nvalues = [7.0, 8.0]\n";
+  const sweeps::SweepSpec spec = sweeps::load_sweep_text(
+      head + "with = [{ key = \"integration.duration\", values = [0.3, 0.2, 0.1] }]\n" + other, dir / "m.toml");
+  const auto points = sweeps::expand(spec);
+  ASSERT_EQ(points.size(), 6U);
+  // Point 3 is a.b = 2 (its second value) with e.f = 8: the duration is the second linked value.
+  EXPECT_EQ(points[3].positions, (std::vector<std::size_t>{1, 1}));
+  using Overrides = std::vector<std::pair<std::string, double>>;
+  EXPECT_EQ(sweeps::point_overrides(spec, points[3]),
+            (Overrides{{"a.b", 2.0}, {"integration.duration", 0.2}, {"e.f", 8.0}}));
+  EXPECT_EQ(sweeps::point_overrides(spec, points[4]),
+            (Overrides{{"a.b", 3.0}, {"integration.duration", 0.1}, {"e.f", 7.0}}));
+  const auto key_of = [&](const std::string& text) {
+    return error_key([&] { static_cast<void>(sweeps::load_sweep_text(text, dir / "bad.toml")); });
+  };
+  EXPECT_EQ(key_of(head + "with = [{ key = \"x.y\", values = [0.3, 0.2] }]\n"), "parameters[0].with[0].values");
+  EXPECT_EQ(key_of(head + "with = [{ key = \"a.b\", values = [1.0, 2.0, 3.0] }]\n"), "parameters[0].with");
+  EXPECT_EQ(key_of(head + "with = [{ key = \"e.f\", values = [1.0, 2.0, 3.0] }]\n" + other), "parameters[1].key");
+  EXPECT_EQ(key_of(head + "with = [{ key = \"x y\", values = [1.0, 2.0, 3.0] }]\n"), "parameters[0].with[0].key");
+}
+
 TEST(SweepSpec, BadSweepFilesNameTheirKey) {
   const fs::path dir = fs::temp_directory_path() / "demwb-sweep-spec-bad";
   support::write_file(dir / "small.toml", test_support::small_agglomerate());
