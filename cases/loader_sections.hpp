@@ -68,6 +68,9 @@ Value origin_entry(const Table& root, const Scene& scene, std::size_t i, std::st
 [[noreturn]] void fail_at_particle(const Table& root, const Scene& scene, std::size_t i, const std::string& problem,
                                    std::string_view listed_key = {}, std::string_view generated_key = {});
 
+/// Throws naming `v` when `wall` is not a plane: `use` (e.g. "aiming at a wall") needs one fixed
+/// normal.
+void require_plane_wall(const Value& v, const WallSpec& wall, std::string_view use);
 /// Index of the plane wall a value names (a wall name, or an index into the walls); throws naming
 /// the value when there is none or the wall is bounded (aiming needs one fixed normal).
 std::size_t wall_index(const Value& v, const Scene& scene);

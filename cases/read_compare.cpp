@@ -269,18 +269,24 @@ std::vector<double> read_snapshot_times(const Table& table, const Scene& scene) 
   return out;
 }
 
+/// compare.<name> when given; when it is absent and a listed metric `needs` it, an error on
+/// compare.metrics saying what the metric does (`why`) and which keys to add (`keys`).
+std::optional<Value> section_for(const Table& table, const char* name, const std::vector<std::string>& metrics,
+                                 bool (*needs)(std::string_view) noexcept, std::string_view why, std::string_view keys) {
+  auto value = table.find(name);
+  if (value) return value;
+  const auto listed = std::find_if(metrics.begin(), metrics.end(), [&](const std::string& m) { return needs(m); });
+  if (listed != metrics.end()) {
+    table.fail("metrics", fmt::format("metric '{}' {}: add [compare.{}] with {}", *listed, why, name, keys));
+  }
+  return std::nullopt;
+}
+
 /// [compare.packing]: the region of the packing metrics, required when one is listed.
 std::optional<PackingSpec> read_packing(const Table& table, const Scene& scene, const std::vector<std::string>& metrics) {
-  const auto value = table.find("packing");
-  const auto listed = std::find_if(metrics.begin(), metrics.end(), [](const std::string& m) { return is_packing_metric(m); });
-  if (!value) {
-    if (listed != metrics.end()) {
-      table.fail("metrics", fmt::format("metric '{}' is measured in a region: add [compare.packing] with min and max "
-                                        "(its lower and upper corners, m)",
-                                        *listed));
-    }
-    return std::nullopt;
-  }
+  const auto value = section_for(table, "packing", metrics, is_packing_metric, "is measured in a region",
+                                 "min and max (its lower and upper corners, m)");
+  if (!value) return std::nullopt;
   const Table t = value->table();
   t.allow_only(kPackingKeys);
   PackingSpec p;
@@ -320,17 +326,9 @@ std::optional<PackingSpec> read_packing(const Table& table, const Scene& scene, 
 
 /// [compare.discharge]: the outlet plane of the discharge metrics, required when one is listed.
 std::optional<DischargeSpec> read_discharge(const Table& table, const std::vector<std::string>& metrics) {
-  const auto value = table.find("discharge");
-  const auto listed =
-      std::find_if(metrics.begin(), metrics.end(), [](const std::string& m) { return is_discharge_metric(m); });
-  if (!value) {
-    if (listed != metrics.end()) {
-      table.fail("metrics", fmt::format("metric '{}' counts the spheres past an outlet: add [compare.discharge] with "
-                                        "point (on the outlet plane, m) and direction (out of the hopper)",
-                                        *listed));
-    }
-    return std::nullopt;
-  }
+  const auto value = section_for(table, "discharge", metrics, is_discharge_metric, "counts the spheres past an outlet",
+                                 "point (on the outlet plane, m) and direction (out of the hopper)");
+  if (!value) return std::nullopt;
   const Table t = value->table();
   t.allow_only(kDischargeKeys);
   DischargeSpec d;
@@ -364,12 +362,7 @@ void read_compare(const Table& root, Scene& scene) {
   if (const auto v = table.find("wall_contact")) {
     if (spec.pair) v->fail("give either compare.pair or compare.wall_contact, not both");
     spec.wall_contact = read_wall_contact(*v, scene);
-    const WallSpec& wall = scene.walls[spec.wall_contact->second];
-    if (wall.shape != dem::WallShape::plane) {
-      v->fail(fmt::format("wall '{}' is a {}; the collision metrics of a wall contact need a plane wall "
-                          "(one fixed normal)",
-                          wall.name, wall_shape_name(wall)));
-    }
+    require_plane_wall(*v, scene.walls[spec.wall_contact->second], "measuring a wall contact's collision metrics");
   }
   if (const auto v = table.find("metrics")) {
     spec.metrics = read_keyword_list(*v, metric_names(), "metric");

@@ -19,27 +19,29 @@ constexpr auto kAimedVelocityKeys = std::to_array<std::string_view>({"speed", "w
 
 }  // namespace
 
+void require_plane_wall(const Value& v, const WallSpec& wall, std::string_view use) {
+  if (wall.shape == dem::WallShape::plane) return;
+  v.fail(fmt::format("wall '{}' is a {}; {} needs a plane wall (one fixed normal)", excerpt(wall.name),
+                     wall_shape_name(wall), use));
+}
+
 std::size_t wall_index(const Value& v, const Scene& scene) {
   if (scene.walls.empty()) v.fail("the case has no [[walls]] to aim at");
+  std::size_t w = scene.walls.size();
   if (v.node().is_string()) {
     const std::string name = v.string();
-    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-      if (scene.walls[w].name != name) continue;
-      if (scene.walls[w].shape != dem::WallShape::plane) {
-        v.fail(fmt::format("wall '{}' is a {}; aiming at a wall needs a plane wall (one fixed normal)",
-                           excerpt(name), wall_shape_name(scene.walls[w])));
-      }
-      return w;
+    for (std::size_t k = 0; k < scene.walls.size() && w == scene.walls.size(); ++k) {
+      if (scene.walls[k].name == name) w = k;
     }
-    std::string known;
-    for (const WallSpec& w : scene.walls) known += (known.empty() ? "'" : ", '") + w.name + "'";
-    v.fail(fmt::format("no wall is named '{}' (walls: {})", excerpt(name), known));
+    if (w == scene.walls.size()) {
+      std::string known;
+      for (const WallSpec& wall : scene.walls) known += (known.empty() ? "'" : ", '") + wall.name + "'";
+      v.fail(fmt::format("no wall is named '{}' (walls: {})", excerpt(name), known));
+    }
+  } else {
+    w = v.index(scene.walls.size(), "walls");
   }
-  const std::size_t w = v.index(scene.walls.size(), "walls");
-  if (scene.walls[w].shape != dem::WallShape::plane) {
-    v.fail(fmt::format("wall '{}' is a {}; aiming at a wall needs a plane wall (one fixed normal)",
-                       scene.walls[w].name, wall_shape_name(scene.walls[w])));
-  }
+  require_plane_wall(v, scene.walls[w], "aiming at a wall");
   return w;
 }
 

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "compare/metrics_discharge.hpp"
 
-#include <numbers>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "cases/discharge_metrics.hpp"
+#include "dem/particles/particles.hpp"
 
 namespace comparison {
 
@@ -21,8 +21,8 @@ double mass_past(std::span<const cases::Vector3> centres, std::span<const double
   return sum;
 }
 
-std::optional<LineFit> fit_flow_rate(std::span<const double> times, std::span<const double> mass, double total,
-                                     double from, double to, std::size_t min_points) {
+std::optional<support::LineFit> fit_flow_rate(std::span<const double> times, std::span<const double> mass,
+                                              double total, double from, double to, std::size_t min_points) {
   std::vector<double> t;
   std::vector<double> m;
   for (std::size_t k = 0; k < times.size(); ++k) {
@@ -31,25 +31,8 @@ std::optional<LineFit> fit_flow_rate(std::span<const double> times, std::span<co
     t.push_back(times[k]);
     m.push_back(mass[k]);
   }
-  if (t.size() < min_points || t.size() < 2) return std::nullopt;
-  const auto n = static_cast<double>(t.size());
-  double t_mean = 0.0;
-  double m_mean = 0.0;
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    t_mean += t[k];
-    m_mean += m[k];
-  }
-  t_mean /= n;
-  m_mean /= n;
-  double stt = 0.0;
-  double stm = 0.0;
-  for (std::size_t k = 0; k < t.size(); ++k) {
-    stt += (t[k] - t_mean) * (t[k] - t_mean);
-    stm += (t[k] - t_mean) * (m[k] - m_mean);
-  }
-  if (!(stt > 0.0)) return std::nullopt;
-  const double slope = stm / stt;
-  return LineFit{slope, m_mean - slope * t_mean, t.size()};
+  if (t.size() < min_points) return std::nullopt;
+  return support::least_squares_line(t, m);
 }
 
 std::optional<CohesionMetric> discharge_metric(const std::string& name, const cases::Scene& scene,
@@ -63,7 +46,7 @@ std::optional<CohesionMetric> discharge_metric(const std::string& name, const ca
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const cases::ParticleSpec& p = scene.particles[i];
     if (p.fixed) continue;
-    const double m = scene.materials.at(p.material).density * 4.0 / 3.0 * std::numbers::pi * p.radius * p.radius * p.radius;
+    const double m = dem::sphere_mass(scene.materials.at(p.material).density, p.radius);
     masses.push_back(m);
     mobile.push_back(i);
     total += m;
@@ -83,7 +66,7 @@ std::optional<CohesionMetric> discharge_metric(const std::string& name, const ca
   }
   if (times.empty()) return CohesionMetric{std::nullopt, "the run has no snapshot (output.snapshot_every)"};
   if (name == "discharged_fraction") return CohesionMetric{past.back() / total, ""};
-  const std::optional<LineFit> fit =
+  const std::optional<support::LineFit> fit =
       fit_flow_rate(times, past, total, spec.fit_from, spec.fit_to, cases::kMinDischargeSnapshots);
   if (!fit) {
     return CohesionMetric{

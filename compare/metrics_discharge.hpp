@@ -10,6 +10,7 @@
 #include "cases/run_result.hpp"
 #include "cases/scene.hpp"
 #include "compare/metrics_cohesion.hpp"
+#include "support/line_fit.hpp"
 
 namespace comparison {
 
@@ -18,17 +19,10 @@ namespace comparison {
 [[nodiscard]] double mass_past(std::span<const cases::Vector3> centres, std::span<const double> masses,
                                const cases::Vector3& point, const cases::Vector3& direction) noexcept;
 
-/// A straight line fitted by least squares.
-struct LineFit {
-  double slope = 0.0;
-  double intercept = 0.0;
-  std::size_t points = 0;  ///< samples used
-};
-
 /// The least-squares line through the samples (t_k, m_k) whose m_k / total lies in [from, to]:
 /// the steady mass flow rate of a discharge (slope, kg/s). Empty when fewer than `min_points`
 /// samples lie in the window.
-[[nodiscard]] std::optional<LineFit> fit_flow_rate(std::span<const double> times, std::span<const double> mass,
+[[nodiscard]] std::optional<support::LineFit> fit_flow_rate(std::span<const double> times, std::span<const double> mass,
                                                    double total, double from, double to, std::size_t min_points);
 
 /// The metric `name` (mass_flow_rate, discharged_fraction) of `run`; empty when `name` is not a

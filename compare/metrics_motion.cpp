@@ -12,6 +12,7 @@
 
 #include "compare/trace_analysis.hpp"
 #include "dem/particles/particles.hpp"
+#include "support/line_fit.hpp"
 
 namespace comparison::motion {
 namespace {
@@ -287,7 +288,7 @@ MotionMetric deceleration(const cases::Scene& scene, const cases::Trace& trace) 
     if (first == overlap.size()) throw Problem("the compared contact never forms");
     const double initial = norm(k.slip_velocity(first, overlap[first]));
     if (!(initial > 0.0)) throw Problem("the contact is not sliding at its first row");
-    // Least squares over the sliding rows: slope = Σ(t − t̄)(s − s̄) / Σ(t − t̄)².
+    // Least squares over the sliding rows.
     std::vector<double> t, s;
     for (std::size_t row = first; row < overlap.size() && overlap[row] > 0.0; ++row) {
       if (!(norm(k.slip_velocity(row, overlap[row])) > kSlidingThreshold * initial)) break;
@@ -298,20 +299,9 @@ MotionMetric deceleration(const cases::Scene& scene, const cases::Trace& trace) 
     if (t.size() < 3) {
       throw Problem(fmt::format("only {} sliding rows (need 3): sample more often", t.size()));
     }
-    double t_mean = 0.0, s_mean = 0.0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      t_mean += t[i];
-      s_mean += s[i];
-    }
-    t_mean /= static_cast<double>(t.size());
-    s_mean /= static_cast<double>(s.size());
-    double num = 0.0, den = 0.0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      num += (t[i] - t_mean) * (s[i] - s_mean);
-      den += (t[i] - t_mean) * (t[i] - t_mean);
-    }
-    if (!(den > 0.0)) throw Problem("the sliding rows share one time");
-    return -num / den;
+    const std::optional<support::LineFit> line = support::least_squares_line(t, s);
+    if (!line) throw Problem("the sliding rows share one time");
+    return -line->slope;
   });
 }
 

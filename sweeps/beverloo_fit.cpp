@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
+
+#include "support/line_fit.hpp"
 
 namespace sweeps {
 
@@ -15,29 +18,18 @@ double beverloo_rate(double c, double k, double bulk_density, double g, double o
 std::optional<BeverlooFit> fit_beverloo(std::span<const double> orifice, std::span<const double> rate,
                                         double bulk_density, double g, double grain) {
   const std::size_t n = std::min(orifice.size(), rate.size());
-  if (n < 2 || !(bulk_density > 0.0) || !(g > 0.0) || !(grain > 0.0)) return std::nullopt;
-  double x_mean = 0.0;
-  double y_mean = 0.0;
+  if (!(bulk_density > 0.0) || !(g > 0.0) || !(grain > 0.0)) return std::nullopt;
+  std::vector<double> y(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (!(rate[i] > 0.0) || !std::isfinite(orifice[i])) return std::nullopt;
-    x_mean += orifice[i];
-    y_mean += std::pow(rate[i], 0.4);
+    y[i] = std::pow(rate[i], 0.4);
   }
-  x_mean /= static_cast<double>(n);
-  y_mean /= static_cast<double>(n);
-  double sxx = 0.0;
-  double sxy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sxx += (orifice[i] - x_mean) * (orifice[i] - x_mean);
-    sxy += (orifice[i] - x_mean) * (std::pow(rate[i], 0.4) - y_mean);
-  }
-  if (!(sxx > 0.0)) return std::nullopt;
-  const double a = sxy / sxx;
-  if (!(a > 0.0)) return std::nullopt;
-  const double b = y_mean - a * x_mean;
+  const std::optional<support::LineFit> line = support::least_squares_line(orifice.first(n), y);
+  if (!line || !(line->slope > 0.0)) return std::nullopt;
+  const double a = line->slope;
   BeverlooFit fit;
   fit.c = std::pow(a, 2.5) / (bulk_density * std::sqrt(g));
-  fit.k = -b / (a * grain);
+  fit.k = -line->intercept / (a * grain);
   fit.points = n;
   for (std::size_t i = 0; i < n; ++i) {
     const double w = beverloo_rate(fit.c, fit.k, bulk_density, g, orifice[i], grain);

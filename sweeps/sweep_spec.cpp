@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <set>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -120,6 +121,7 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
     }
   }
   const Value parameters = root.require("parameters", "array of tables [[parameters]]");
+  std::set<std::string> taken;  // every key an axis or a linked key sets
   for (const Value& entry : parameters.elements()) {
     const Table t = entry.table();
     t.allow_only(kAxisKeys);
@@ -127,8 +129,8 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
     const Value key = t.require("key");
     axis.key = key.string();
     check_axis_key(key, axis.key);
-    for (const SweepAxis& other : spec.axes) {
-      if (other.key == axis.key) key.fail(fmt::format("'{}' is swept twice", axis.key));
+    if (!taken.insert(axis.key).second) {
+      key.fail(fmt::format("'{}' is set twice in the sweep (an axis or a linked key)", axis.key));
     }
     axis.label = t.has("label") ? t.require("label").string() : axis.key.substr(axis.key.find_last_of('.') + 1);
     for (const Value& x : t.require("values").elements()) axis.values.push_back(x.number());
@@ -147,29 +149,15 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
         const Value linked_key = w.require("key");
         linked.key = linked_key.string();
         check_axis_key(linked_key, linked.key);
+        if (!taken.insert(linked.key).second) {
+          t.fail("with", fmt::format("'{}' is set twice in the sweep", linked.key));
+        }
         for (const Value& x : w.require("values").elements()) linked.values.push_back(x.number());
         if (linked.values.size() != axis.values.size()) {
           w.fail("values", fmt::format("must list one value per value of '{}' ({}), got {}", axis.key,
                                        axis.values.size(), linked.values.size()));
         }
         axis.linked.push_back(std::move(linked));
-      }
-    }
-    for (const SweepAxis& other : spec.axes) {
-      for (const LinkedKey& m : other.linked) {
-        if (m.key == axis.key) key.fail(fmt::format("'{}' is already linked to the axis '{}'", m.key, other.key));
-      }
-      for (const LinkedKey& l : axis.linked) {
-        if (other.key == l.key) t.fail("with", fmt::format("'{}' is swept as an axis of its own", l.key));
-        for (const LinkedKey& m : other.linked) {
-          if (m.key == l.key) t.fail("with", fmt::format("'{}' is set by two axes", m.key));
-        }
-      }
-    }
-    for (std::size_t i = 0; i < axis.linked.size(); ++i) {
-      if (axis.linked[i].key == axis.key) t.fail("with", fmt::format("'{}' is the axis' own key", axis.key));
-      for (std::size_t j = 0; j < i; ++j) {
-        if (axis.linked[i].key == axis.linked[j].key) t.fail("with", fmt::format("'{}' is linked twice", axis.key));
       }
     }
     spec.axes.push_back(axis);

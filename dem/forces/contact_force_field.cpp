@@ -440,23 +440,16 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
           WallEntry& e = wall_entries[k];
           const Wall& wall = setup_.walls[e.wall];
           const ContactGeometry g = wall_geometry(p, wall, t_now, lever);
-          if (!wall.present(t_now)) {
+          const bool removed = !wall.present(t_now);
+          if (removed || g.distance > wall_reach_of(i, e.wall)) {
             if (commit && track && e.active != 0) {
-              // The wall was removed under this contact: what its springs held leaves with it.
+              // A contact of the last commit that ends here. Beyond reach, the ledger books what its
+              // springs still held (the evaluation adds no force: nothing acts there); under a
+              // removed wall, what they held leaves with the wall.
               const ContactOutcome o = evaluate_contact(table_.law(props_.material[i], wall.material), g,
                                                         assemble(e.slip, e.active, wall_ext, k), elapsed);
-              if (o.interacting) sums.removed += o.elastic_energy + o.cohesive_energy;
-            }
-            if (commit) e.active = 0;
-            continue;
-          }
-          if (g.distance > wall_reach_of(i, e.wall)) {
-            if (commit && track && e.active != 0) {
-              // A contact of the last commit that ends here: the ledger books what its springs
-              // still held (the evaluation adds no force: beyond reach nothing acts).
-              const ContactOutcome o = evaluate_contact(table_.law(props_.material[i], wall.material), g,
-                                                        assemble(e.slip, e.active, wall_ext, k), elapsed);
-              if (!o.interacting) add_energies(sums, o);
+              if (removed && o.interacting) sums.removed += o.elastic_energy + o.cohesive_energy;
+              if (!removed && !o.interacting) add_energies(sums, o);
             }
             if (commit) e.active = 0;
             continue;

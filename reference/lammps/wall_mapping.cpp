@@ -8,23 +8,6 @@ namespace {
 
 constexpr std::string_view kAxisNames[] = {"x", "y", "z"};
 
-}  // namespace
-
-std::optional<WallPlane> wall_plane(const cases::WallSpec& wall) {
-  if (wall.shape != dem::WallShape::plane) return std::nullopt;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double n = wall.normal[axis];
-    if (n != 1.0 && n != -1.0) continue;
-    bool others_zero = true;
-    for (int k = 0; k < 3; ++k) {
-      if (k != axis && wall.normal[k] != 0.0) others_zero = false;
-    }
-    if (!others_zero) return std::nullopt;
-    return WallPlane{axis, n > 0.0, wall.point[axis]};
-  }
-  return std::nullopt;
-}
-
 /// The coordinate axis ±e_k a unit vector is, or −1.
 int coordinate_axis(const cases::Vector3& v) noexcept {
   for (int axis = 0; axis < 3; ++axis) {
@@ -35,6 +18,15 @@ int coordinate_axis(const cases::Vector3& v) noexcept {
     return axis;
   }
   return -1;
+}
+
+}  // namespace
+
+std::optional<WallPlane> wall_plane(const cases::WallSpec& wall) {
+  if (wall.shape != dem::WallShape::plane) return std::nullopt;
+  const int axis = coordinate_axis(wall.normal);
+  if (axis < 0) return std::nullopt;
+  return WallPlane{axis, wall.normal[axis] > 0.0, wall.point[axis]};
 }
 
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index) {
