@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 namespace po = boost::program_options;
 
 /// `demwb refresh --sweep SWEEP.toml`: runs a committed sweep afresh (demwb sweep) and stores what
-/// it wrote — sweep.csv, sweep.json (its fingerprint), report.md and plots/ — in
+/// it wrote — sweep.csv, bed.csv (when it has one), sweep.json (its fingerprint), report.md and
+/// plots/ — in
 /// <baselines>/sweeps/<name>/, replacing what was there. The suite reports that store and the
 /// gate fails while it no longer fits the sweep and case files.
 int refresh_sweep(const po::variables_map& vm, const Invocation& inv) {
@@ -52,6 +53,7 @@ int refresh_sweep(const po::variables_map& vm, const Invocation& inv) {
   fs::remove_all(dest);
   fs::create_directories(dest);
   for (const char* kept : {"sweep.csv", "sweep.json", "report.md"}) fs::copy_file(out / kept, dest / kept);
+  if (fs::exists(out / "bed.csv")) fs::copy_file(out / "bed.csv", dest / "bed.csv");
   if (fs::is_directory(out / "plots")) fs::copy(out / "plots", dest / "plots", fs::copy_options::recursive);
   std::cout << "stored " << dest.string() << "\n";
   return kExitOk;

@@ -51,7 +51,11 @@ sweeps::SweepRun run_job(const sweeps::SweepSpec& spec, const sweeps::SweepPoint
     ctx.refine_time_step = false;  // an ensemble's spread, not one run's Δt, is what its rows judge
     const comparison::CaseOutcome o = run_case(scene, engines, ctx);
     for (const auto& r : o.runs) {
-      sweeps::SweepRow row{point.index, seed, r.engine, std::string(cases::to_string(r.status)), {}, r.reason};
+      sweeps::SweepRow row{point.index, seed, r.engine, std::string(cases::to_string(r.status)), {}, r.reason, {}};
+      if (r.status == cases::RunStatus::ok && o.scene.compare.packing) {
+        auto bed = comparison::packing_series(o.scene, r);
+        if (auto* samples = std::get_if<std::vector<comparison::PackingSample>>(&bed)) row.bed = std::move(*samples);
+      }
       const auto set = o.metrics.find(r.engine);
       for (const auto& m : metrics) {
         std::optional<double> v;
@@ -181,7 +185,7 @@ std::string sweep_fingerprint(const SweepPlan& plan, const std::vector<sweeps::S
   }
   std::size_t failed = 0;
   for (const auto& r : rows) failed += r.status == "ok" ? 0 : 1;
-  const nlohmann::json j{
+  nlohmann::json j{
       {"sweep", plan.spec.name},
       {"sweep_file", plan.spec.source_path.string()},
       {"sweep_sha256", support::sha256_hex(plan.spec.source_text)},
@@ -198,6 +202,9 @@ std::string sweep_fingerprint(const SweepPlan& plan, const std::vector<sweeps::S
       {"jobs", plan.jobs},
       {"wall_time_s", seconds},
       {"command", command}};
+  if (const std::string bed = sweeps::bed_csv(plan.spec, plan.points, rows); !bed.empty()) {
+    j["bed_csv_sha256"] = support::sha256_hex(bed);
+  }
   return j.dump(2) + "\n";
 }
 
@@ -241,6 +248,9 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::filesystem::create_directories(plan.out);
     support::write_file(plan.out / "sweep.csv", sweeps::sweep_csv(plan.spec, plan.points, plan.metrics, rows));
+    if (const std::string bed = sweeps::bed_csv(plan.spec, plan.points, rows); !bed.empty()) {
+      support::write_file(plan.out / "bed.csv", bed);
+    }
     support::write_file(plan.out / "sweep.toml", plan.spec.source_text);
     support::write_file(plan.out / "case.toml", plan.case_text);
     support::write_file(plan.out / "command.txt", command + "\n");

@@ -116,6 +116,7 @@ void check_wall_overlaps(const loader::Table& root, const Scene& scene) {
     const dem::Vec3 x(p.position[0], p.position[1], p.position[2]);
     for (std::size_t w = 0; w < scene.walls.size(); ++w) {
       const WallSpec& wall = scene.walls[w];
+      if (!wall.in_preparation) continue;  // placed after the preparation, which moves the spheres
       const double overlap = p.radius - dem::wall_frame(core_wall(wall), x, 0.0).distance;
       if (overlap <= kMaxInitialOverlap * p.radius) continue;
       loader::fail_at_particle(root, scene, i,

@@ -73,6 +73,12 @@ constexpr std::array kMetrics{
     MetricInfo{"coordination_number", "-",
                "mean body contacts (overlap > 0) with other mobile spheres of the mobile spheres whose centres lie "
                "in the compare.packing region, at the last snapshot", false, false},
+    MetricInfo{"fluidisation_time", "s",
+               "first time the ORF in the compare.packing region falls to compare.packing.orf_threshold (default "
+               "0.1), interpolated linearly between snapshots; missing when the bed never empties that far", false, false},
+    MetricInfo{"orf_largest_drop", "-",
+               "largest fall of the ORF between two consecutive snapshots: the biggest share of the reservoir cleared "
+               "at once (large fragments make it large, a stream small)", false, false},
     MetricInfo{"mass_flow_rate", "kg/s",
                "steady discharge rate: least-squares slope of the mobile mass past the compare.discharge outlet "
                "against time, over the snapshots at which the share past it lies in compare.discharge.fit", false, false},

@@ -9,6 +9,10 @@ bool is_packing_metric(std::string_view metric) noexcept {
   return std::find(kPackingMetrics.begin(), kPackingMetrics.end(), metric) != kPackingMetrics.end();
 }
 
+bool is_fluidisation_metric(std::string_view metric) noexcept {
+  return std::find(kFluidisationMetrics.begin(), kFluidisationMetrics.end(), metric) != kFluidisationMetrics.end();
+}
+
 double interior_margin(const Scene& scene, const PackingSpec& packing) noexcept {
   if (packing.interior_margin) return *packing.interior_margin;
   double sum = 0.0;

@@ -26,7 +26,8 @@ constexpr auto kCompareKeys = std::to_array<std::string_view>(
 
 constexpr auto kDischargeKeys = std::to_array<std::string_view>({"point", "direction", "fit"});
 
-constexpr auto kPackingKeys = std::to_array<std::string_view>({"min", "max", "interior_margin", "orf_grid", "at"});
+constexpr auto kPackingKeys =
+    std::to_array<std::string_view>({"min", "max", "interior_margin", "orf_grid", "at", "orf_threshold"});
 constexpr auto kPackingMoments = std::to_array<std::string_view>({"start", "end"});
 
 /// Most ORF grid points along one axis (the thesis uses 45 × 15).
@@ -309,6 +310,7 @@ std::optional<PackingSpec> read_packing(const Table& table, const Scene& scene, 
     p.orf_nz = static_cast<std::size_t>(items[1].integer(1, kMaxOrfPoints));
   }
   if (const auto a = t.find("at")) p.at_start = a->keyword(kPackingMoments, "moment") == "start";
+  if (const auto v = t.find("orf_threshold")) p.orf_threshold = v->number(dem::ValueRange{0.0, 1.0, true, true});
   if (std::find(metrics.begin(), metrics.end(), "packing_fraction_interior") != metrics.end()) {
     const double margin = interior_margin(scene, p);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -418,6 +420,11 @@ void read_output(const Table& root, Scene& scene) {
       table.fail("snapshot_times", fmt::format("metric '{}' is measured at the start (compare.packing.at): the "
                                                "first snapshot must be at t = 0, not {}",
                                                m, spec.snapshot_times.front()));
+    }
+    if (is_fluidisation_metric(m) && spec.snapshot_times.size() < kMinFluidisationSnapshots) {
+      table.fail("snapshot_every", fmt::format("metric '{}' reads the ORF curve over the snapshots: give "
+                                               "output.snapshot_every (or at least {} snapshot_times)",
+                                               m, kMinFluidisationSnapshots));
     }
     if (is_discharge_metric(m) && spec.snapshot_times.size() < kMinDischargeSnapshots) {
       table.fail("snapshot_every", fmt::format("metric '{}' follows the discharge over the snapshots: give "

@@ -18,11 +18,13 @@ namespace cases::loader {
 namespace {
 
 constexpr std::array<std::string_view, 3> kKinds{"formation", "launch", "settle"};
+constexpr auto kRemoveBy = std::to_array<std::string_view>({"centre", "top"});
 constexpr auto kFormationKeys = std::to_array<std::string_view>(
     {"kind", "name", "pull", "pull_time", "restitution", "friction", "walls", "gravity", "kinetic_energy",
      "max_duration"});
 constexpr auto kSettleKeys = std::to_array<std::string_view>(
-    {"kind", "name", "restitution", "kinetic_energy", "min_duration", "max_duration", "remove_above"});
+    {"kind", "name", "restitution", "kinetic_energy", "min_duration", "max_duration", "remove_above",
+     "remove_by"});
 constexpr auto kLaunchKeys =
     std::to_array<std::string_view>({"kind", "name", "wall", "speed", "angle", "direction", "height"});
 
@@ -74,6 +76,10 @@ SettleStageSpec read_settle(const Table& t, const Scene& scene) {
     t.fail("max_duration", fmt::format("must exceed min_duration ({} s), got {} s", s.min_duration, s.max_duration));
   }
   if (const auto v = t.find("remove_above")) s.remove_above = v->number();
+  if (const auto v = t.find("remove_by")) {
+    if (!s.remove_above) v->fail("needs remove_above: it says which part of a sphere must lie above that height");
+    s.remove_by_top = v->keyword(kRemoveBy, "part of a sphere") == "top";
+  }
   bool gravity = false;
   for (const double g : scene.gravity) gravity = gravity || g != 0.0;
   if (!gravity) t.fail("kind", "a settle stage needs gravity ([fields] gravity): without it nothing settles");

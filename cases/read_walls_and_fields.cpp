@@ -19,18 +19,18 @@ namespace cases::loader {
 namespace {
 
 constexpr auto kPlaneKeys = std::to_array<std::string_view>(
-    {"type", "name", "point", "normal", "material", "velocity", "rigid", "remove_at"});
+    {"type", "name", "point", "normal", "material", "velocity", "rigid", "remove_at", "in_preparation"});
 constexpr auto kBoxWallKeys = std::to_array<std::string_view>(
-    {"type", "name", "min", "max", "material", "open_faces", "rigid", "remove_at"});
+    {"type", "name", "min", "max", "material", "open_faces", "rigid", "remove_at", "in_preparation"});
 constexpr auto kRectangleWallKeys = std::to_array<std::string_view>(
-    {"type", "name", "centre", "normal", "axis", "size", "material", "velocity", "rigid", "remove_at"});
+    {"type", "name", "centre", "normal", "axis", "size", "material", "velocity", "rigid", "remove_at", "in_preparation"});
 constexpr auto kDiscWallKeys = std::to_array<std::string_view>(
-    {"type", "name", "centre", "normal", "radius", "hole_radius", "material", "velocity", "rigid", "remove_at"});
+    {"type", "name", "centre", "normal", "radius", "hole_radius", "material", "velocity", "rigid", "remove_at", "in_preparation"});
 constexpr auto kCylinderWallKeys = std::to_array<std::string_view>(
-    {"type", "name", "base", "axis", "height", "radius", "material", "velocity", "rigid", "remove_at"});
+    {"type", "name", "base", "axis", "height", "radius", "material", "velocity", "rigid", "remove_at", "in_preparation"});
 constexpr auto kConeWallKeys = std::to_array<std::string_view>({"type", "name", "base", "axis", "height", "base_radius",
                                                             "top_radius", "material", "velocity", "rigid",
-                                                            "remove_at"});
+                                                            "remove_at", "in_preparation"});
 constexpr auto kWallTypes = std::to_array<std::string_view>({"plane", "box", "rectangle", "disc", "cylinder", "cone"});
 constexpr auto kBoxFaces = std::to_array<std::string_view>({"x-", "x+", "y-", "y+", "z-", "z+"});
 constexpr auto kFieldKeys = std::to_array<std::string_view>({"gravity", "fluid"});
@@ -60,9 +60,16 @@ std::optional<double> read_removal(const Table& t) {
   return v->number(non_negative_range());
 }
 
-/// The keys every wall type shares: name, material, velocity, rigid, remove_at.
+/// `in_preparation`: whether the wall stands while the spheres are prepared (default true).
+bool read_in_preparation(const Table& t) {
+  const auto v = t.find("in_preparation");
+  return v ? v->boolean() : true;
+}
+
+/// The keys every wall type shares: name, material, velocity, rigid, remove_at, in_preparation.
 WallSpec read_common(const Table& t, const Scene& scene, std::size_t index) {
   WallSpec w;
+  w.in_preparation = read_in_preparation(t);
   w.name = t.has("name") ? read_name(t.require("name")) : fmt::format("wall{}", index);
   w.material = material_index(t.require("material"), scene);
   if (const auto v = t.find("velocity")) w.velocity = read_velocity(*v);
@@ -149,6 +156,7 @@ std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t i
   bool rigid = false;
   if (const auto v = t.find("rigid")) rigid = v->boolean();
   const std::optional<double> removed_at = read_removal(t);
+  const bool in_preparation = read_in_preparation(t);
   std::vector<std::string> open;
   if (const auto v = t.find("open_faces")) {
     for (const Value& f : v->elements()) open.push_back(f.keyword(kBoxFaces, "box face"));
@@ -166,6 +174,7 @@ std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t i
       w.material = material;
       w.rigid = rigid;
       w.removed_at = removed_at;
+      w.in_preparation = in_preparation;
       walls.push_back(w);
     }
   }
@@ -230,6 +239,15 @@ void read_walls(const Table& root, Scene& scene) {
       scene.walls.push_back(read_disc(t, scene, index));
     } else {
       scene.walls.push_back(read_frustum(t, scene, index, type == "cylinder"));
+    }
+    if (!read_in_preparation(t)) {
+      if (!root.has("stages")) {
+        t.fail("in_preparation", "false places the wall when the run starts, after the preparation stages, but the "
+                                 "case has none ([[stages]]); drop the key");
+      }
+      if (read_removal(t) == 0.0) {
+        t.fail("in_preparation", "false with remove_at = 0 makes a wall that never stands; drop the wall");
+      }
     }
     if (scene.walls.size() > kMaxWalls) {
       entry.fail(fmt::format("makes {} walls (a box counts its faces), more than the limit of {}",

@@ -64,6 +64,9 @@ struct WallSpec {
   double size_v = 0.0;  ///< rectangle: half size along normal × axis_u; disc: radius; cylinder, cone: top radius [m]
   double length = 0.0;  ///< cylinder, cone: axial length [m]
   std::optional<double> removed_at{};  ///< the wall is removed at this time [s] (an orifice that opens)
+  /// Whether the wall stands through the preparation stages; false: it is placed when the run
+  /// starts (a lid or a channel closed over a bed poured without it).
+  bool in_preparation = true;
 };
 
 /// The case-file name of a wall's shape: "plane", "rectangle", "disc", "cylinder" or "cone".
@@ -146,6 +149,7 @@ struct PackingSpec {
   std::size_t orf_ny = 45;                ///< ORF grid points along y (thesis fig. G.2: 45 × 15)
   std::size_t orf_nz = 15;                ///< ORF grid points along z
   bool at_start = false;                  ///< measure at the first snapshot instead of the last (`at = "start"`)
+  double orf_threshold = 0.1;             ///< fluidisation_time: when the ORF first falls to this, in (0, 1)
 };
 
 /// How a hopper's discharge is measured ([compare.discharge], docs/metrics.md "Discharge"): a
@@ -213,6 +217,7 @@ struct SettleStageSpec {
   double min_duration = 0.0;          ///< never settled before this time [s], ≥ 0
   double max_duration = 0.0;          ///< the stage fails when not settled by then [s], > min_duration
   std::optional<double> remove_above;  ///< z [m]: mobile spheres with centres above it are removed
+  bool remove_by_top = false;          ///< remove_by = "top": remove those whose tops (z + r) lie above it
 };
 
 /// One preparation stage of a case (docs/case-format.md, [[stages]]). Stages run in order in

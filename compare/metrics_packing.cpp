@@ -8,8 +8,36 @@
 
 #include "cases/packing_region.hpp"
 #include "compare/packing_geometry.hpp"
+#include "compare/packing_series.hpp"
 
 namespace comparison {
+namespace {
+
+/// A metric read from the run's ORF curve: fluidisation_time or orf_largest_drop.
+CohesionMetric fluidisation_metric(const std::string& name, const cases::Scene& scene, const cases::RunResult& run) {
+  auto series = packing_series(scene, run);
+  if (const auto* problem = std::get_if<std::string>(&series)) return CohesionMetric{std::nullopt, *problem};
+  const auto& samples = std::get<std::vector<PackingSample>>(series);
+  if (samples.size() < cases::kMinFluidisationSnapshots) {
+    return CohesionMetric{std::nullopt, fmt::format("the run has {} snapshot(s); the ORF curve needs {}", samples.size(),
+                                                    cases::kMinFluidisationSnapshots)};
+  }
+  std::vector<double> times;
+  std::vector<double> orf;
+  for (const PackingSample& s : samples) {
+    times.push_back(s.time);
+    orf.push_back(s.orf);
+  }
+  if (name == "orf_largest_drop") return CohesionMetric{largest_drop(orf), ""};
+  const double level = scene.compare.packing->orf_threshold;
+  if (const auto t = first_time_at_or_below(times, orf, level)) return CohesionMetric{*t, ""};
+  return CohesionMetric{std::nullopt,
+                        fmt::format("the ORF stayed above {} (compare.packing.orf_threshold) until the end, t = {} s, "
+                                    "where it is {:.4g}: the bed did not fluidise",
+                                    level, times.back(), orf.back())};
+}
+
+}  // namespace
 
 std::optional<CohesionMetric> packing_metric(const std::string& name, const cases::Scene& scene,
                                              const cases::RunResult& run) {
@@ -18,6 +46,7 @@ std::optional<CohesionMetric> packing_metric(const std::string& name, const case
   if (run.snapshots.empty()) {
     return CohesionMetric{std::nullopt, "the run has no snapshot (output.snapshot_times)"};
   }
+  if (cases::is_fluidisation_metric(name)) return fluidisation_metric(name, scene, run);
   const bool at_start = scene.compare.packing->at_start;
   const cases::Snapshot& last = at_start ? run.snapshots.front() : run.snapshots.back();
   if (last.position.size() != scene.particles.size()) {

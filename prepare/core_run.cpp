@@ -14,7 +14,15 @@ cases::Scene stage_run_scene(cases::Scene scene) {
   scene.output = cases::OutputSpec{};
   // remove_at counts in the run's time: through the preparation a wall removed later stands (a
   // shutter closed while the spheres are poured and settled).
-  for (cases::WallSpec& w : scene.walls) w.removed_at.reset();
+  // A wall with in_preparation = false is placed only when the run starts: gone from the stage's
+  // first step on.
+  for (cases::WallSpec& w : scene.walls) {
+    if (w.in_preparation) {
+      w.removed_at.reset();
+    } else {
+      w.removed_at = 0.0;
+    }
+  }
   return scene;
 }
 

@@ -12,8 +12,8 @@
 namespace prepare {
 
 /// `scene` as a preparation stage runs it in the core: no fluid, no stages of its own, no output
-/// (the stage reads the simulation's state, not a trace), and every wall standing (remove_at
-/// counts in the run's time).
+/// (the stage reads the simulation's state, not a trace), every wall standing (remove_at counts in
+/// the run's time) except those placed when the run starts (in_preparation = false).
 cases::Scene stage_run_scene(cases::Scene scene);
 
 /// When a preparation run counts as settled: not before `first_step`, at the first step whose

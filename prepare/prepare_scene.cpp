@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "cases/case_loader.hpp"
+#include "cases/core_wall.hpp"
+#include "dem/contact/wall.hpp"
 #include "prepare/formation.hpp"
 #include "prepare/launch.hpp"
 #include "prepare/settle.hpp"
@@ -27,22 +30,49 @@ constexpr std::array<std::string_view, 5> kEndSnapshotMetrics{"kappa_vol", "kapp
 /// Dotted key of stage `index` in messages.
 std::string stage_key_name(std::size_t index) { return fmt::format("stages[{}]", index); }
 
-/// Throws when a launched mobile sphere starts inside a wall (more than 1 % of its radius).
-void check_clear_of_walls(const cases::Scene& scene, std::size_t index) {
+/// The first mobile sphere of `scene` that overlaps a wall chosen by `which` by more than 1 % of its
+/// radius, measured to the wall's nearest surface point at t = 0: (sphere, wall, overlap).
+struct WallOverlap {
+  std::size_t particle;
+  std::size_t wall;
+  double overlap;
+};
+template <class Which>
+std::optional<WallOverlap> first_wall_overlap(const cases::Scene& scene, Which which) {
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const cases::ParticleSpec& p = scene.particles[i];
     if (p.fixed) continue;
-    for (const cases::WallSpec& w : scene.walls) {
-      double distance = 0.0;
-      for (std::size_t k = 0; k < 3; ++k) distance += (p.position[k] - w.point[k]) * w.normal[k];
-      if (p.radius - distance > 0.01 * p.radius) {
-        throw cases::CaseError(scene.source_path, stage_key_name(index),
-                               fmt::format("after the launch particle {} overlaps wall '{}' by {:.6g} m; "
-                                           "place the walls further apart or lower `height`",
-                                           i, w.name, p.radius - distance));
-      }
+    const dem::Vec3 x(p.position[0], p.position[1], p.position[2]);
+    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+      if (!which(scene.walls[w])) continue;
+      const double overlap = p.radius - dem::wall_frame(cases::core_wall(scene.walls[w]), x, 0.0).distance;
+      if (overlap > 0.01 * p.radius) return WallOverlap{i, w, overlap};
     }
   }
+  return std::nullopt;
+}
+
+/// Throws when a launched mobile sphere starts inside a wall (more than 1 % of its radius).
+void check_clear_of_walls(const cases::Scene& scene, std::size_t index) {
+  const auto hit = first_wall_overlap(scene, [](const cases::WallSpec&) { return true; });
+  if (!hit) return;
+  throw cases::CaseError(scene.source_path, stage_key_name(index),
+                         fmt::format("after the launch particle {} overlaps wall '{}' by {:.6g} m; "
+                                     "place the walls further apart or lower `height`",
+                                     hit->particle, scene.walls[hit->wall].name, hit->overlap));
+}
+
+/// Throws when a prepared mobile sphere overlaps a wall that is placed only when the run starts
+/// (in_preparation = false) by more than 1 % of its radius: the wall would start inside the bed.
+void check_clear_of_placed_walls(const cases::Scene& scene) {
+  const auto hit = first_wall_overlap(scene, [](const cases::WallSpec& w) { return !w.in_preparation; });
+  if (!hit) return;
+  throw cases::CaseError(
+      scene.source_path, "walls",
+      fmt::format("wall '{}' (in_preparation = false) is placed when the run starts, but the prepared particle {} "
+                  "overlaps it by {:.6g} m; remove the spheres that reach into it (a settle stage's remove_above "
+                  "with remove_by = \"top\") or move the wall",
+                  scene.walls[hit->wall].name, hit->particle, hit->overlap));
 }
 
 /// The result of stage `index`: read from the cache when it holds one for the stage's inputs
@@ -107,7 +137,7 @@ void run_settle(cases::Scene& scene, std::size_t index, const cases::SettleStage
                         {"kinetic_energy", settled.kinetic_energy}}};
   });
   if (stage.remove_above) {
-    const std::size_t removed = remove_above(scene, *stage.remove_above, stage_key_name(index));
+    const std::size_t removed = remove_above(scene, *stage.remove_above, stage.remove_by_top, stage_key_name(index));
     record.figures.emplace_back("removed", static_cast<double>(removed));
     record.figures.emplace_back("remaining", static_cast<double>(scene.particles.size()));
   }
@@ -181,6 +211,7 @@ cases::Scene prepare_scene(const cases::Scene& scene, const PrepareOptions& opti
     }
   }
   out.stages.clear();
+  check_clear_of_placed_walls(out);
   settle_snapshot_times(out);
   return out;
 }

@@ -72,12 +72,12 @@ Settled settle(const cases::Scene& scene, const cases::SettleStageSpec& stage, i
   return out;
 }
 
-std::size_t remove_above(cases::Scene& scene, double height, const std::string& key) {
+std::size_t remove_above(cases::Scene& scene, double height, bool by_top, const std::string& key) {
   std::vector<std::size_t> renumber(scene.particles.size(), kRemoved);
   std::vector<cases::ParticleSpec> kept;
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const cases::ParticleSpec& p = scene.particles[i];
-    if (!p.fixed && p.position[2] > height) continue;
+    if (!p.fixed && p.position[2] + (by_top ? p.radius : 0.0) > height) continue;
     renumber[i] = kept.size();
     kept.push_back(p);
   }

@@ -29,10 +29,11 @@ cases::Scene settle_scene(const cases::Scene& scene, const cases::SettleStageSpe
 /// message gives the energy reached) or the run blows up.
 Settled settle(const cases::Scene& scene, const cases::SettleStageSpec& stage, int threads);
 
-/// Removes every mobile sphere whose centre lies above `height` (z) from `scene`, keeping the
+/// Removes every mobile sphere whose centre (its top, z + r, when `by_top`) lies above `height` (z)
+/// from `scene`, keeping the
 /// order of the others and each population's first index; returns how many it removed. Throws
 /// cases::CaseError naming `key` when an index the case refers to (a traced particle or pair, the
 /// compared subject, pair or wall contact) would lose its sphere or change meaning.
-std::size_t remove_above(cases::Scene& scene, double height, const std::string& key);
+std::size_t remove_above(cases::Scene& scene, double height, bool by_top, const std::string& key);
 
 }  // namespace prepare

@@ -6,6 +6,7 @@
 
 #include "reports/case_report.hpp"
 #include "reports/junit.hpp"
+#include "reports/packing_plot.hpp"
 #include "reports/results_json.hpp"
 #include "reports/snapshot_vtk.hpp"
 #include "reports/trace_csv.hpp"
@@ -72,6 +73,12 @@ void write_case_outputs(const comparison::CaseOutcome& outcome, const std::files
       }
       if (!series.empty()) {
         support::write_file(dir / "snapshots" / (run.engine + ".vtk.series"), vtk_series(series));
+      }
+      if (outcome.scene.compare.packing && !run.snapshots.empty()) {
+        const auto bed = comparison::packing_series(outcome.scene, run);
+        if (const auto* samples = std::get_if<std::vector<comparison::PackingSample>>(&bed)) {
+          support::write_file(dir / ("packing_" + run.engine + ".csv"), packing_series_csv(*samples));
+        }
       }
     }
   }

@@ -14,6 +14,8 @@
 #include "reports/energy_plot.hpp"
 #include "reports/gnuplot.hpp"
 #include "reports/markdown.hpp"
+#include "reports/packing_plot.hpp"
+#include "reports/snapshot_view.hpp"
 
 namespace reports {
 namespace {
@@ -182,9 +184,12 @@ std::string plots_section(const comparison::CaseOutcome& o, const std::filesyste
       difference.series.push_back(std::move(series));
     }
   }
-  const std::array<std::pair<const Plot*, const char*>, 5> plots{
+  const std::optional<Plot> fluidisation = fluidisation_plot(o);
+  const Plot none;
+  const std::array<std::pair<const Plot*, const char*>, 6> plots{
       {{&position, "position.png"}, {&overlap, "overlap.png"}, {&force, "force_overlap.png"},
-       {&difference, "difference.png"}, {&energy, "energy.png"}}};
+       {&difference, "difference.png"}, {&energy, "energy.png"},
+       {fluidisation ? &*fluidisation : &none, "fluidisation.png"}}};
   for (const auto& [plot, file] : plots) {
     if (plot->series.empty()) continue;
     const std::filesystem::path png = plot_dir / file;
@@ -196,6 +201,43 @@ std::string plots_section(const comparison::CaseOutcome& o, const std::filesyste
     }
   }
   return md.empty() ? "" : heading(level, "Plots") + md + "\n";
+}
+
+/// Pictures of the bed (cases with a compare.packing region): up to six snapshots of the reference
+/// engine's run (else the first that ran), seen along x and coloured by speed — the first, then
+/// those of the fluidisation when the bed empties (fluidisation_frames).
+std::string snapshots_section(const comparison::CaseOutcome& o, const std::filesystem::path& plot_dir,
+                              const std::filesystem::path& report_dir, int level) {
+  if (!o.scene.compare.packing) return "";
+  const cases::RunResult* shown = nullptr;
+  for (const auto& r : o.runs) {
+    if (r.status != cases::RunStatus::ok || r.snapshots.empty()) continue;
+    if (shown == nullptr || r.engine == o.scene.compare.reference) shown = &r;
+  }
+  if (shown == nullptr) return "";
+  const ProjectionWindow window = packing_window(o.scene, shown->snapshots);
+  std::string md = fmt::format("Engine `{}`, seen along x (the ORF's view); the outline is the packing region, the "
+                               "colour the speed (0 to {:.3g} m/s), nearer spheres over farther ones.\n\n",
+                               shown->engine, window.speed_max);
+  std::filesystem::create_directories(plot_dir);
+  std::vector<double> orf;
+  const auto bed = comparison::packing_series(o.scene, *shown);
+  if (const auto* samples = std::get_if<std::vector<comparison::PackingSample>>(&bed)) {
+    for (const auto& sample : *samples) orf.push_back(sample.orf);
+  }
+  const std::vector<std::size_t> frames =
+      orf.size() == shown->snapshots.size() ? fluidisation_frames(orf, 6) : frame_indices(shown->snapshots.size(), 6);
+  for (const std::size_t k : frames) {
+    const cases::Snapshot& snap = shown->snapshots[k];
+    const std::filesystem::path png = plot_dir / fmt::format("snapshot_{:04d}.png", k);
+    const std::string title = fmt::format("t = {:.4g} s", snap.time);
+    if (const auto problem = render_projection(o.scene, snap, window, title, png)) {
+      md += fmt::format("- snapshot at {} not drawn: {}\n", title, *problem);
+    } else {
+      md += fmt::format("![{}]({}) ", title, std::filesystem::relative(png, report_dir).generic_string());
+    }
+  }
+  return heading(level, "Snapshots") + md + "\n\n";
 }
 
 std::string conventions_section(const comparison::CaseOutcome& o, int level) {
@@ -283,6 +325,7 @@ std::string case_section(const comparison::CaseOutcome& o, const std::filesystem
     md += discrepancy_table(o) + "\n";
   }
   md += plots_section(o, plot_dir, report_dir, level + 1);
+  md += snapshots_section(o, plot_dir, report_dir, level + 1);
   md += inexpressible_section(o, level + 1);
   md += calibrations_section(o, level + 1);
   md += conventions_section(o, level + 1);

@@ -9,10 +9,8 @@
 #include "support/text_file.hpp"
 
 namespace reports {
-namespace {
 
-/// gnuplot string literal with quotes escaped.
-std::string quoted(const std::string& s) {
+std::string gnuplot_quoted(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
     if (c == '"' || c == '\\') out += '\\';
@@ -20,6 +18,8 @@ std::string quoted(const std::string& s) {
   }
   return out + "\"";
 }
+
+namespace {
 
 bool plottable(double x, double y, const Plot& p) {
   if (!std::isfinite(x) || !std::isfinite(y)) return false;
@@ -55,10 +55,10 @@ std::optional<std::string> render_png(const Plot& plot, const std::filesystem::p
   // gnuplot's libgd `png` terminal: indexed colour, about a fifth of the bytes pngcairo's
   // antialiased truecolour takes for the same figure, which keeps committed sweep baselines small.
   gp += "set terminal png size 900,600 enhanced font 'DejaVu Sans,11'\n";
-  gp += "set output " + quoted(png.filename().string()) + "\n";
-  gp += "set title " + quoted(plot.title) + " noenhanced\n";
-  gp += "set xlabel " + quoted(plot.xlabel) + " noenhanced\n";
-  gp += "set ylabel " + quoted(plot.ylabel) + " noenhanced\n";
+  gp += "set output " + gnuplot_quoted(png.filename().string()) + "\n";
+  gp += "set title " + gnuplot_quoted(plot.title) + " noenhanced\n";
+  gp += "set xlabel " + gnuplot_quoted(plot.xlabel) + " noenhanced\n";
+  gp += "set ylabel " + gnuplot_quoted(plot.ylabel) + " noenhanced\n";
   gp += "set grid\nset key outside right top noenhanced\n";
   if (plot.log_x) gp += "set logscale x\nset format x '10^{%T}'\n";
   if (plot.log_y) gp += "set logscale y\nset format y '10^{%T}'\n";
@@ -68,15 +68,18 @@ std::optional<std::string> render_png(const Plot& plot, const std::filesystem::p
     if (!has_points[i]) continue;
     if (!plots.empty()) plots += ", \\\n     ";
     const bool bars = !plot.series[i].y_error.empty();
-    plots += fmt::format("{} index {} using {} with {} lw 2 title {}", quoted(data.filename().string()), i,
+    plots += fmt::format("{} index {} using {} with {} lw 2 title {}", gnuplot_quoted(data.filename().string()), i,
                          bars ? "1:2:3" : "1:2", bars ? std::string(plot.series[i].style == "points" ? "yerrorbars" : "yerrorlines") : plot.series[i].style,
-                         quoted(plot.series[i].title));
+                         gnuplot_quoted(plot.series[i].title));
   }
   if (plots.empty()) return "no plottable points";
   gp += "plot " + plots + "\n";
   support::write_file(data, dat);
   support::write_file(script, gp);
+  return run_gnuplot(script, png);
+}
 
+std::optional<std::string> run_gnuplot(const std::filesystem::path& script, const std::filesystem::path& png) {
   if (!support::find_program("gnuplot")) return "gnuplot is not installed";
   support::ProcessSpec spec;
   spec.argv = {"gnuplot", script.filename().string()};

@@ -33,4 +33,11 @@ struct Plot {
 /// that are not finite (or not positive on a log axis) are left out.
 std::optional<std::string> render_png(const Plot& plot, const std::filesystem::path& png);
 
+/// Runs gnuplot on `script` in `png`'s folder (60 s at most); returns empty once it has drawn
+/// `png`, else why not (gnuplot missing, failed with its last lines of error, timed out).
+std::optional<std::string> run_gnuplot(const std::filesystem::path& script, const std::filesystem::path& png);
+
+/// `s` as a gnuplot string literal (double quotes, with quotes and backslashes escaped).
+std::string gnuplot_quoted(const std::string& s);
+
 }  // namespace reports

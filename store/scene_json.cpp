@@ -87,6 +87,7 @@ Json stage_json(const cases::StageSpec& st) {
               {"max_duration", settle->max_duration}};
     if (settle->restitution) j["restitution"] = *settle->restitution;
     if (settle->remove_above) j["remove_above"] = *settle->remove_above;
+    if (settle->remove_by_top) j["remove_by"] = "top";
     return j;
   }
   const auto& l = std::get<cases::LaunchStageSpec>(st.action);
@@ -139,6 +140,7 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
       wall["length"] = w.length;
     }
     if (w.removed_at) wall["removed_at"] = *w.removed_at;
+    if (!w.in_preparation) wall["in_preparation"] = false;
     walls.push_back(std::move(wall));
   }
   j["walls"] = walls;

@@ -55,10 +55,15 @@ void read_store(StoredEnsemble& e, const SweepSpec& spec) {
   const bool case_same = j.at("case_sha256") == support::sha256_hex(support::read_file(spec.case_file));
   const bool csv_same = fs::exists(e.stored_dir / "sweep.csv") &&
                         j.at("sweep_csv_sha256") == support::sha256_hex(support::read_file(e.stored_dir / "sweep.csv"));
-  if (!sweep_same || !case_same || !csv_same) {
+  // bed.csv (the fluidisation curves) is fingerprinted when the sweep wrote one.
+  const bool bed_same = !j.contains("bed_csv_sha256") ||
+                        (fs::exists(e.stored_dir / "bed.csv") &&
+                         j.at("bed_csv_sha256") == support::sha256_hex(support::read_file(e.stored_dir / "bed.csv")));
+  if (!sweep_same || !case_same || !csv_same || !bed_same) {
     e.problem = fmt::format("stale: {} changed since the results were stored; run `demwb refresh --sweep {}`",
                             !sweep_same ? e.sweep_file.string()
-                                        : (!case_same ? spec.case_file.string() : std::string("sweep.csv")),
+                                        : (!case_same ? spec.case_file.string()
+                                                      : std::string(!csv_same ? "sweep.csv" : "bed.csv")),
                             e.sweep_file.string());
   }
   e.comparison_table = engines_compared_table(support::read_file(report_file));

@@ -134,6 +134,37 @@ std::string damage_work_figure(const SweepResults& r, std::size_t damage, std::s
   return figure(plot, dir, "kappa_damage_vs_cohesive_work");
 }
 
+/// The fluidisation curves (thesis figs 6.5, 6.8): per engine, the ORF against time averaged over
+/// the seeds snapshot by snapshot, a curve per point with ± one standard error.
+std::string bed_figures(const SweepResults& r, const std::filesystem::path& dir) {
+  std::string md;
+  for (const auto& engine : r.engines) {
+    reports::Plot plot;
+    plot.title = fmt::format("ORF against time, mean over the seeds ({})", engine);
+    plot.xlabel = "time (s)";
+    plot.ylabel = "obscured reservoir fraction";
+    for (const auto& p : r.points) {
+      const MeanCurve curve = mean_bed_curve(r.rows, p.index, engine, false);
+      if (curve.time.empty()) continue;
+      reports::Series s;
+      std::string label;
+      for (std::size_t a = 0; a < r.spec.axes.size(); ++a) {
+        label += fmt::format("{}{} = {:.4g}", label.empty() ? "" : ", ", r.spec.axes[a].label, p.values[a]);
+      }
+      s.title = label.empty() ? engine : label;
+      s.style = "lines";
+      for (std::size_t k = 0; k < curve.time.size(); ++k) {
+        s.x.push_back(curve.time[k]);
+        s.y.push_back(curve.value[k].mean);
+        s.y_error.push_back(curve.value[k].standard_error.value_or(0.0));
+      }
+      plot.series.push_back(std::move(s));
+    }
+    if (!plot.series.empty()) md += figure(plot, dir, slug("orf_curves_" + engine));
+  }
+  return md;
+}
+
 }  // namespace
 
 std::vector<EngineBeverloo> beverloo_fits(const SweepResults& r) {
@@ -303,7 +334,7 @@ void write_sweep_report(const SweepResults& r, const std::filesystem::path& dir)
       r.spec.case_file.string(), r.points.size(), r.spec.seeds.size(), r.engines.size(), r.rows.size(), r.seconds,
       r.ranks > 1 ? fmt::format(" on {} MPI ranks", r.ranks) : std::string(), r.command);
   md += "Each cell is the mean over the seeds ± its standard error (sample s.d./√n) and the number of "
-        "seeds that gave a value. Breakup is chaotic: one seed is one sample of the ensemble.\n\n";
+        "seeds that gave a value. A many-body run is chaotic: one seed is one sample of the ensemble.\n\n";
   std::size_t failed = 0;
   for (const auto& row : r.rows) failed += row.status == "ok" ? 0 : 1;
   if (failed > 0) md += fmt::format("**{} row(s) did not run `ok`**; `sweep.csv` gives each reason.\n\n", failed);
@@ -331,6 +362,7 @@ void write_sweep_report(const SweepResults& r, const std::filesystem::path& dir)
   const auto damage = metric_index(r.metrics, "kappa_damage");
   const auto work = metric_index(r.metrics, "cohesive_work");
   if (damage && work) figures += damage_work_figure(r, *damage, *work, dir);
+  figures += bed_figures(r, dir);
   if (!figures.empty()) {
     md += "## Figures\n\nMeans over the seeds with ± one standard error. Against one parameter, a curve per value "
           "of the next parameter; any other parameter is held at its middle value.\n\n" +

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/packing_series.hpp"
 #include "sweeps/seed_statistics.hpp"
 #include "sweeps/sweep_spec.hpp"
 
@@ -19,6 +20,9 @@ struct SweepRow {
   std::string status;                         ///< ok, error, missing, n/a
   std::vector<std::optional<double>> values;  ///< one per metric; empty when the run gave none
   std::string reason;                         ///< why a value or the run is missing
+  /// The compare.packing region's ORF and dose at every snapshot (empty without a region): the
+  /// fluidisation curve of this run (docs/sweeps.md, "Outputs").
+  std::vector<comparison::PackingSample> bed{};
 };
 
 /// The rows of one run (every engine of one point × seed) and how long the run took.
@@ -35,6 +39,19 @@ std::vector<SweepRow> error_rows(std::size_t point, std::uint64_t seed, const st
 /// sweep.csv (docs/sweeps.md): a header, then the rows as given; numbers with 17 significant digits.
 std::string sweep_csv(const SweepSpec& spec, const std::vector<SweepPoint>& points,
                       const std::vector<std::string>& metrics, const std::vector<SweepRow>& rows);
+
+/// bed.csv (docs/sweeps.md): one line per snapshot of every row that has a bed curve — point, each
+/// parameter's value, seed, engine, time, orf, dose_remaining; empty when no row has one.
+std::string bed_csv(const SweepSpec& spec, const std::vector<SweepPoint>& points, const std::vector<SweepRow>& rows);
+
+/// The mean over the seeds of the bed curves of one point and engine, snapshot by snapshot: the
+/// mean time, and the statistics of the ORF (`dose` false) or of the dose remaining (true). A
+/// snapshot counts the runs that reached it.
+struct MeanCurve {
+  std::vector<double> time;
+  std::vector<SeedStatistics> value;
+};
+MeanCurve mean_bed_curve(const std::vector<SweepRow>& rows, std::size_t point, const std::string& engine, bool dose);
 
 /// Runs as JSON text, for sending between MPI ranks; doubles survive the trip exactly.
 std::string encode_runs(const std::vector<SweepRun>& runs);

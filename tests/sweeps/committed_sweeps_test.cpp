@@ -47,6 +47,11 @@ TEST(CommittedSweeps, EverySweepHasResultsFingerprintedByItsCurrentFiles) {
     for (const char c : csv) lines += c == '\n' ? 1 : 0;
     EXPECT_EQ(lines, 1 + j.at("rows").get<std::size_t>());
     EXPECT_TRUE(fs::exists(stored / "report.md"));
+    if (j.contains("bed_csv_sha256")) {
+      ASSERT_TRUE(fs::exists(stored / "bed.csv")) << "the fingerprint names a bed.csv that is not stored";
+      EXPECT_EQ(j.at("bed_csv_sha256"), support::sha256_hex(support::read_file(stored / "bed.csv")))
+          << "bed.csv is not the fingerprinted one";
+    }
   }
 }
 
