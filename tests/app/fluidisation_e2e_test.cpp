@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../small_pour.hpp"
 #include "demwb_process.hpp"
 #include "support/text_file.hpp"
 
@@ -21,32 +22,7 @@ namespace fs = std::filesystem;
 /// a lid is placed at 4 mm, and a plug flow along +x at `speed` (ramped over 5 ms) blows through the
 /// box, whose x+ face is open: the bed leaves at 30 m/s (drag about seven weights), stays at 0.5.
 std::string blown_bed(double speed) {
-  return R"([case]
-name = "blown_bed"
-[model]
-normal = "linear"
-damping = "restitution"
-[materials.glass]
-density = 2500.0
-normal_stiffness = 2000.0
-restitution = 0.5
-[[populations]]
-material = "glass"
-seed = 7
-arrangement = "simple_cubic"
-count = 48
-spacing = 2.2e-3
-velocity_jitter = 0.02
-region = { shape = "box", min = [0.0, 0.0, 0.0], max = [6.6e-3, 6.6e-3, 0.04] }
-size = { distribution = "monodisperse", radius = 1.0e-3 }
-[[walls]]
-type = "box"
-name = "box"
-min = [0.0, 0.0, 0.0]
-max = [6.6e-3, 6.6e-3, 0.04]
-material = "glass"
-open_faces = ["z+", "x+"]
-[[walls]]
+  return test_support::small_pour_head("blown_bed", R"(["z+", "x+"])") + R"([[walls]]
 type = "rectangle"
 name = "lid"
 centre = [3.3e-3, 3.3e-3, 4.0e-3]

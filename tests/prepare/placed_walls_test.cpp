@@ -12,38 +12,14 @@
 #include "prepare/prepare_scene.hpp"
 #include "prepare/settle.hpp"
 #include "same_particles.hpp"
+#include "../small_pour.hpp"
 
 namespace placed_walls_test {
 
 /// 48 spheres of radius 1 mm on a simple cubic grid (pitch 2.2 mm, 3 × 3 a layer) falling from up
 /// to 2.4 cm into a box 6.6 mm wide; `settle` is the settle stage's body, `walls` more walls.
 std::string pour(const std::string& settle, const std::string& walls = "") {
-  return R"([case]
-name = "placed_walls"
-[model]
-normal = "linear"
-damping = "restitution"
-[materials.glass]
-density = 2500.0
-normal_stiffness = 2000.0
-restitution = 0.5
-[[populations]]
-material = "glass"
-seed = 7
-arrangement = "simple_cubic"
-count = 48
-spacing = 2.2e-3
-velocity_jitter = 0.02
-region = { shape = "box", min = [0.0, 0.0, 0.0], max = [6.6e-3, 6.6e-3, 0.04] }
-size = { distribution = "monodisperse", radius = 1.0e-3 }
-[[walls]]
-type = "box"
-name = "box"
-min = [0.0, 0.0, 0.0]
-max = [6.6e-3, 6.6e-3, 0.04]
-material = "glass"
-open_faces = ["z+"]
-)" + walls + R"([fields]
+  return test_support::small_pour_head("placed_walls") + walls + R"([fields]
 gravity = [0.0, 0.0, -9.81]
 [integration]
 scheme = "velocity_verlet"

@@ -12,6 +12,7 @@
 #include "prepare/prepare_scene.hpp"
 #include "prepare/settle.hpp"
 #include "same_particles.hpp"
+#include "../small_pour.hpp"
 
 namespace settle_test {
 
@@ -19,32 +20,7 @@ namespace settle_test {
 /// 6.6 mm wide, falling under gravity onto its floor; linear springs with restitution damping.
 /// `stage` is the [[stages]] table's body, `extra` more case text.
 std::string pour(const std::string& stage, const std::string& extra = "") {
-  return R"([case]
-name = "small_pour"
-[model]
-normal = "linear"
-damping = "restitution"
-[materials.glass]
-density = 2500.0
-normal_stiffness = 2000.0
-restitution = 0.5
-[[populations]]
-material = "glass"
-seed = 7
-arrangement = "simple_cubic"
-count = 48
-spacing = 2.2e-3
-velocity_jitter = 0.02
-region = { shape = "box", min = [0.0, 0.0, 0.0], max = [6.6e-3, 6.6e-3, 0.04] }
-size = { distribution = "monodisperse", radius = 1.0e-3 }
-[[walls]]
-type = "box"
-name = "box"
-min = [0.0, 0.0, 0.0]
-max = [6.6e-3, 6.6e-3, 0.04]
-material = "glass"
-open_faces = ["z+"]
-[fields]
+  return test_support::small_pour_head("small_pour") + R"([fields]
 gravity = [0.0, 0.0, -9.81]
 [integration]
 scheme = "velocity_verlet"
