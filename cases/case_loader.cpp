@@ -110,21 +110,13 @@ void check_initial_overlaps(const loader::Table& root, const Scene& scene) {
 /// Throws when a mobile particle starts overlapping a wall by more than kMaxInitialOverlap of
 /// its radius.
 void check_wall_overlaps(const loader::Table& root, const Scene& scene) {
-  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    const ParticleSpec& p = scene.particles[i];
-    if (p.fixed) continue;
-    const dem::Vec3 x(p.position[0], p.position[1], p.position[2]);
-    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-      const WallSpec& wall = scene.walls[w];
-      if (!wall.in_preparation) continue;  // placed after the preparation, which moves the spheres
-      const double overlap = p.radius - dem::wall_frame(core_wall(wall), x, 0.0).distance;
-      if (overlap <= kMaxInitialOverlap * p.radius) continue;
-      loader::fail_at_particle(root, scene, i,
-                       fmt::format("particle {} overlaps wall '{}' by {:.6g} m at the start, more than 1% "
-                                   "of its radius; move it inside the domain",
-                                   i, wall.name, overlap));
-    }
-  }
+  // A wall placed after the preparation (in_preparation = false) never meets these positions.
+  const auto hit = first_wall_overlap(scene, [](const WallSpec& w) { return w.in_preparation; }, kMaxInitialOverlap);
+  if (!hit) return;
+  loader::fail_at_particle(root, scene, hit->particle,
+                           fmt::format("particle {} overlaps wall '{}' by {:.6g} m at the start, more than 1% "
+                                       "of its radius; move it inside the domain",
+                                       hit->particle, scene.walls[hit->wall].name, hit->overlap));
 }
 
 /// Throws when a sphere starts more than kMaxPeriodicImages box lengths from the periodic box

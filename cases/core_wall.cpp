@@ -22,4 +22,19 @@ dem::Wall core_wall(const WallSpec& w) noexcept {
   return out;
 }
 
+std::optional<WallOverlap> first_wall_overlap(const Scene& scene, const std::function<bool(const WallSpec&)>& counts,
+                                              double share) {
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const ParticleSpec& p = scene.particles[i];
+    if (p.fixed) continue;
+    const dem::Vec3 x = to_vec(p.position);
+    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+      if (!counts(scene.walls[w])) continue;
+      const double overlap = p.radius - dem::wall_frame(core_wall(scene.walls[w]), x, 0.0).distance;
+      if (!(overlap <= share * p.radius)) return WallOverlap{i, w, overlap};  // NaN counts as inside
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace cases

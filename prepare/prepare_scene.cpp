@@ -12,7 +12,6 @@
 
 #include "cases/case_loader.hpp"
 #include "cases/core_wall.hpp"
-#include "dem/contact/wall.hpp"
 #include "prepare/formation.hpp"
 #include "prepare/launch.hpp"
 #include "prepare/settle.hpp"
@@ -30,31 +29,9 @@ constexpr std::array<std::string_view, 5> kEndSnapshotMetrics{"kappa_vol", "kapp
 /// Dotted key of stage `index` in messages.
 std::string stage_key_name(std::size_t index) { return fmt::format("stages[{}]", index); }
 
-/// The first mobile sphere of `scene` that overlaps a wall chosen by `which` by more than 1 % of its
-/// radius, measured to the wall's nearest surface point at t = 0: (sphere, wall, overlap).
-struct WallOverlap {
-  std::size_t particle;
-  std::size_t wall;
-  double overlap;
-};
-template <class Which>
-std::optional<WallOverlap> first_wall_overlap(const cases::Scene& scene, Which which) {
-  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    const cases::ParticleSpec& p = scene.particles[i];
-    if (p.fixed) continue;
-    const dem::Vec3 x(p.position[0], p.position[1], p.position[2]);
-    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-      if (!which(scene.walls[w])) continue;
-      const double overlap = p.radius - dem::wall_frame(cases::core_wall(scene.walls[w]), x, 0.0).distance;
-      if (overlap > 0.01 * p.radius) return WallOverlap{i, w, overlap};
-    }
-  }
-  return std::nullopt;
-}
-
 /// Throws when a launched mobile sphere starts inside a wall (more than 1 % of its radius).
 void check_clear_of_walls(const cases::Scene& scene, std::size_t index) {
-  const auto hit = first_wall_overlap(scene, [](const cases::WallSpec&) { return true; });
+  const auto hit = cases::first_wall_overlap(scene, [](const cases::WallSpec&) { return true; }, 0.01);
   if (!hit) return;
   throw cases::CaseError(scene.source_path, stage_key_name(index),
                          fmt::format("after the launch particle {} overlaps wall '{}' by {:.6g} m; "
@@ -65,7 +42,7 @@ void check_clear_of_walls(const cases::Scene& scene, std::size_t index) {
 /// Throws when a prepared mobile sphere overlaps a wall that is placed only when the run starts
 /// (in_preparation = false) by more than 1 % of its radius: the wall would start inside the bed.
 void check_clear_of_placed_walls(const cases::Scene& scene) {
-  const auto hit = first_wall_overlap(scene, [](const cases::WallSpec& w) { return !w.in_preparation; });
+  const auto hit = cases::first_wall_overlap(scene, [](const cases::WallSpec& w) { return !w.in_preparation; }, 0.01);
   if (!hit) return;
   throw cases::CaseError(
       scene.source_path, "walls",
