@@ -7,7 +7,7 @@
 set -euo pipefail
 
 packages=(
-  g++ cmake make                   # toolchain (C++20, g++ 12)
+  g++ cmake make ninja-build       # toolchain (C++20, g++ 12); Ninja builds faster than Make
   libeigen3-dev                    # Eigen 3.4: vectors and quaternions
   libboost-dev                     # Boost 1.74 headers: Math root finding, Odeint
   libboost-program-options-dev     # Boost.Program_options: the demwb command line

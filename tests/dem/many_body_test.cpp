@@ -67,7 +67,7 @@ dem::Vec3Array brute_force_forces(const dem::Simulation& sim) {
 
 TEST(ManyBodyForces, MatchABruteForceSumOverAllPairs) {
   for (const bool periodic : {false, true}) {
-    for (std::uint32_t seed = 1; seed <= 4; ++seed) {
+    for (std::uint32_t seed = 1; seed <= test_support::full_or_sanitized(4U, 2U); ++seed) {
       const dem::Simulation sim(jammed(seed, 700, 0.02, periodic));
       const dem::Vec3Array expected = brute_force_forces(sim);
       const dem::Vec3Array& got = sim.force_field().forces();
@@ -153,7 +153,8 @@ TEST(ManyBodyReorder, KeepsEveryContactAndItsHistory) {
 TEST(ManyBodyHistory, ContactsOfEachSlabSitInDenseSlotsInListOrder) {
   // After commits with and without rebuilds, slab s's interacting pairs hold the slots
   // base(s), base(s) + 1, … in list order, and their histories match a brute-force pairing.
-  dem::SimulationSetup setup = test_support::settling_box(10, 1000, 1e-3, 0.0, 1, 1.98);
+  dem::SimulationSetup setup =
+      test_support::settling_box(10, test_support::full_or_sanitized<std::size_t>(1000, 600), 1e-3, 0.0, 1, 1.98);
   setup.threads = 2;
   dem::Simulation sim(setup);
   std::uint64_t builds_seen = 0;

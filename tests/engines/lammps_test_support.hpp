@@ -13,6 +13,7 @@
 #include "cases/run_result.hpp"
 #include "reference/common/engine.hpp"
 #include "support/process.hpp"
+#include "test_scratch.hpp"
 
 // Helpers of the tests that run the real LAMMPS binary (ctest -L reference).
 namespace demwb_lammps_test {
@@ -26,11 +27,12 @@ inline cases::Scene canonical(const std::string& name) {
                           (name + ".toml"));
 }
 
-/// Run options with a scratch work directory per test, emptied first (the last run's files stay
-/// for inspection).
-inline reference::RunOptions scratch(const std::string& test) {
+/// Run options with a scratch work directory per test and `run` (under the running test's name, see
+/// current_test_folder), emptied first (the last run's files stay for inspection).
+inline reference::RunOptions scratch(const std::string& run) {
   reference::RunOptions o;
-  o.work_dir = std::filesystem::temp_directory_path() / "demwb-lammps-tests" / test;
+  o.work_dir = std::filesystem::temp_directory_path() / "demwb-lammps-tests" /
+               demwb_engine_test::current_test_folder() / run;
   std::error_code ignored;
   std::filesystem::remove_all(o.work_dir, ignored);
   o.timeout_s = 60.0;

@@ -12,6 +12,7 @@
 #include "cases/case_loader.hpp"
 #include "cases/run_result.hpp"
 #include "reference/yade/yade_engine.hpp"
+#include "test_scratch.hpp"
 
 // Helpers of the tests that run the real YADE (label `reference`).
 namespace demwb_yade_test {
@@ -21,9 +22,11 @@ inline cases::Scene canonical(const char* file) {
   return cases::load_case(std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical" / file);
 }
 
-/// A fresh scratch directory for one test.
+/// A fresh scratch directory for run `name` of the running test (under its name, see
+/// current_test_folder).
 inline std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "demwb-yade-tests" / name;
+  const auto dir =
+      std::filesystem::temp_directory_path() / "demwb-yade-tests" / demwb_engine_test::current_test_folder() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
