@@ -31,9 +31,6 @@ constexpr auto kTopLevelKeys =
                                      "populations", "walls", "domain", "neighbors", "fields",
                                      "stages", "integration", "output", "compare"});
 
-/// Largest initial body overlap allowed, as a fraction of the smaller radius.
-constexpr double kMaxInitialOverlap = 0.01;
-
 /// The parsed document; a TOML syntax error becomes a CaseError with key "(syntax)".
 toml::table parse_document(std::string_view text, const std::string& path) {
   try {

@@ -18,6 +18,10 @@ inline constexpr double kSpeedOfLight = 299'792'458.0;
 /// quasi-static DEM studies do.
 inline constexpr double kMaxDensity = 1.0e18;
 
+/// Largest overlap a sphere may have with another body (a sphere or a wall) where a run or a
+/// stage starts, as a share of the smaller radius: more is an error in the case, not a contact.
+inline constexpr double kMaxInitialOverlap = 0.01;
+
 /// Window in which every derived quantity (sphere mass and moment of inertia, collision stiffness,
 /// contact time, time step) must lie, in SI units. No physical sphere, spring or collision lies
 /// outside it (an electron weighs 9e-31 kg, the observable universe 1e53 kg; the Planck time is

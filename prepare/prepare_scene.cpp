@@ -12,6 +12,7 @@
 
 #include "cases/case_loader.hpp"
 #include "cases/core_wall.hpp"
+#include "cases/limits.hpp"
 #include "prepare/formation.hpp"
 #include "prepare/launch.hpp"
 #include "prepare/settle.hpp"
@@ -31,7 +32,8 @@ std::string stage_key_name(std::size_t index) { return fmt::format("stages[{}]",
 
 /// Throws when a launched mobile sphere starts inside a wall (more than 1 % of its radius).
 void check_clear_of_walls(const cases::Scene& scene, std::size_t index) {
-  const auto hit = cases::first_wall_overlap(scene, [](const cases::WallSpec&) { return true; }, 0.01);
+  const auto hit =
+      cases::first_wall_overlap(scene, [](const cases::WallSpec&) { return true; }, cases::kMaxInitialOverlap);
   if (!hit) return;
   throw cases::CaseError(scene.source_path, stage_key_name(index),
                          fmt::format("after the launch particle {} overlaps wall '{}' by {:.6g} m; "
@@ -42,7 +44,8 @@ void check_clear_of_walls(const cases::Scene& scene, std::size_t index) {
 /// Throws when a prepared mobile sphere overlaps a wall that is placed only when the run starts
 /// (in_preparation = false) by more than 1 % of its radius: the wall would start inside the bed.
 void check_clear_of_placed_walls(const cases::Scene& scene) {
-  const auto hit = cases::first_wall_overlap(scene, [](const cases::WallSpec& w) { return !w.in_preparation; }, 0.01);
+  const auto placed = [](const cases::WallSpec& w) { return !w.in_preparation; };
+  const auto hit = cases::first_wall_overlap(scene, placed, cases::kMaxInitialOverlap);
   if (!hit) return;
   throw cases::CaseError(
       scene.source_path, "walls",

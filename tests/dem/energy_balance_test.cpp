@@ -270,7 +270,15 @@ struct FloorDrop {
   double worst_error = 0.0;
   double spring_at_parting = 0.0;  ///< tangential + rolling spring energy at the last commit in contact
 };
-FloorDrop floor_drop(const dem::ModelChoice& model, const dem::Vec3& velocity, double dt, bool rotation = true) {
+
+/// Radius [m] and density [kg/m³] of the sphere of the floor scenes.
+constexpr double kFloorSphereRadius = 0.01;
+constexpr double kFloorSphereDensity = 1000.0;
+
+/// One sphere of the floor scenes (`position`, `velocity`, `spin`) over the floor z = 0, the grain
+/// stiffened for it (k_n = 1e5 N/m, k_t = 2/7 k_n, rolling 1e3 N·m/rad), under velocity Verlet at `dt`.
+dem::SimulationSetup floor_scene(const dem::ModelChoice& model, const dem::Vec3& position, const dem::Vec3& velocity,
+                                 const dem::Vec3& spin, double dt) {
   dem::SimulationSetup s;
   dem::MaterialProperties m = grain("grain", 0.0);
   m.normal_stiffness = 1e5;
@@ -278,12 +286,18 @@ FloorDrop floor_drop(const dem::ModelChoice& model, const dem::Vec3& velocity, d
   m.rolling_stiffness = 1e3;
   s.materials = {m};
   s.model = model;
-  s.particles = {dem::ParticleInit{0.01, 0.01, 1000.0, 0, dem::Vec3(0, 0, 0.0101), velocity, dem::Vec3(0, 40.0, 0), false}};
+  s.particles = {dem::ParticleInit{kFloorSphereRadius, kFloorSphereRadius, kFloorSphereDensity, 0, position, velocity,
+                                   spin, false}};
   s.walls = {dem::Wall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 0}};
   s.scheme = dem::SchemeId::velocity_verlet;
-  s.scheme_settings.length_scale = 0.01;
-  s.scheme_settings.rotation = rotation;
+  s.scheme_settings.length_scale = kFloorSphereRadius;
   s.timestep = dt;
+  return s;
+}
+
+FloorDrop floor_drop(const dem::ModelChoice& model, const dem::Vec3& velocity, double dt, bool rotation = true) {
+  dem::SimulationSetup s = floor_scene(model, dem::Vec3(0, 0, 0.0101), velocity, dem::Vec3(0, 40.0, 0), dt);
+  s.scheme_settings.rotation = rotation;
   dem::Simulation sim(s);
   sim.watch({dem::ContactObservation{0, 0, true, 0.0, 0.0, false}});
   FloorDrop out;
@@ -341,23 +355,15 @@ TEST(EnergyBalance, SpringsThatLetGoAtPartingAreBookedAsFriction) {
 /// overlap, so the overlap, and with it the friction cap μF_n, swings by half while it slides, and
 /// it never leaves the floor (no contact starts or ends within the run).
 dem::EnergyLedger sliding_on_a_bouncing_contact(double dt, double* worst_error) {
-  dem::SimulationSetup s;
-  dem::MaterialProperties m = grain("grain", 0.0);
-  m.normal_stiffness = 1e5;
-  m.tangential_stiffness = 2.0 / 7.0 * 1e5;
-  m.tangential_damping_ratio = 0.0;
-  s.materials = {m};
-  s.model.normal = "linear";
-  s.model.tangential = "spring_coulomb";
-  const double r = 0.01;
-  const double resting = dem::sphere_mass(1000.0, r) * 9.81 / 1e5;
-  s.particles = {dem::ParticleInit{r, r, 1000.0, 0, dem::Vec3(0, 0, r - 1.5 * resting), dem::Vec3(0.5, 0, 0),
-                                   dem::Vec3::Zero(), false}};
-  s.walls = {dem::Wall{dem::Vec3::Zero(), dem::Vec3(0, 0, 1), dem::Vec3::Zero(), 0}};
+  dem::ModelChoice model;
+  model.normal = "linear";
+  model.tangential = "spring_coulomb";
+  const double r = kFloorSphereRadius;
+  const double resting = dem::sphere_mass(kFloorSphereDensity, r) * 9.81 / 1e5;  // m g / k_n
+  dem::SimulationSetup s =
+      floor_scene(model, dem::Vec3(0, 0, r - 1.5 * resting), dem::Vec3(0.5, 0, 0), dem::Vec3::Zero(), dt);
+  s.materials[0].tangential_damping_ratio = 0.0;
   s.fields.gravity = dem::Vec3(0, 0, -9.81);
-  s.scheme = dem::SchemeId::velocity_verlet;
-  s.scheme_settings.length_scale = r;
-  s.timestep = dt;
   dem::Simulation sim(s);
   *worst_error = 0.0;
   while (sim.time() < 2e-3) {

@@ -52,6 +52,16 @@ struct SpringSliderResult {
   double dissipated = 0.0;           ///< work dissipated over `elapsed` [J], ≥ 0
 };
 
+/// Work the relative motion does on a sliding slider over one step, by the trapezoid rule with the
+/// forces on p at the step's two ends, −½(F_start + F_end)·v elapsed: velocity Verlet takes every
+/// force's work so, and the energy ledger then books a contact that slides throughout to round-off
+/// (docs/physics.md, "Energy ledger"). F_start is the spring's force on the carried displacement
+/// plus the dashpot's on v [N]; v the relative velocity [m/s]; elapsed [s].
+[[nodiscard]] inline double sliding_step_work(const Vec3& start_force, const Vec3& end_force, const Vec3& velocity,
+                                              double elapsed) noexcept {
+  return -0.5 * (start_force + end_force).dot(velocity) * elapsed;
+}
+
 /// Linear spring in parallel with a dashpot, in series with a Coulomb slider (thesis eq
 /// 3.22–3.26; Cundall & Strack 1979). The stored displacement is ς = carried + v·elapsed
 /// (`carried` is the committed displacement already in the current tangent plane; nothing is
@@ -63,8 +73,8 @@ struct SpringSliderResult {
 /// With `zero_when_unloaded` (UnloadedSlider::zero) a slider whose displacement carried + v·elapsed
 /// is exactly zero (|·| = 0) and whose dashpot alone exceeds the limit returns no force at all and
 /// keeps the zero displacement (LAMMPS pair granular, fix wall/gran, gran/hooke/history).
-/// Dissipation over `elapsed`: stuck, the dashpot's γ|v|² elapsed; sliding, the work of the
-/// applied force −F·v elapsed minus the change of the spring energy ½k|ς|² (clamped at ≥ 0).
+/// Dissipation over `elapsed`: stuck, the dashpot's γ|v|² elapsed; sliding, the step's work
+/// (sliding_step_work) minus the change of the spring energy ½k|ς|² (clamped at ≥ 0).
 /// stiffness k [N/m] ≥ 0 (k = 0 stores no displacement), damping γ [kg/s] ≥ 0, limit [N] ≥ 0,
 /// displacements [m], v the relative velocity of the contact [m/s], elapsed [s].
 [[nodiscard]] inline SpringSliderResult spring_slider(double stiffness, double damping,
@@ -89,11 +99,7 @@ struct SpringSliderResult {
   }
   r.force *= cap / magnitude;
   if (stiffness > 0.0) r.displacement = -(r.force + damping * velocity) / stiffness;
-  // The work the relative motion did on the slider over the step by the trapezoid rule, with the
-  // forces at both ends of the step (the carried spring's and the capped one), as velocity Verlet
-  // takes the work of every force: the ledger's integration error then falls as Δt² instead of Δt.
-  const Vec3 before = -stiffness * start - damping * velocity;
-  const double work = -0.5 * (r.force + before).dot(velocity) * elapsed;
+  const double work = sliding_step_work(-stiffness * start - damping * velocity, r.force, velocity, elapsed);
   const double stored = 0.5 * stiffness * (r.displacement.squaredNorm() - start.squaredNorm());
   r.dissipated = std::max(work - stored, 0.0);
   return r;

@@ -5,6 +5,7 @@
 #include <array>
 #include <string_view>
 
+#include "dem/contact/laws/coulomb_friction.hpp"
 #include "dem/contact/laws/mindlin_stiffness.hpp"
 #include "dem/contact/slots/tangential_spring_coulomb.hpp"
 
@@ -50,9 +51,7 @@ namespace dem {
   force *= cap / magnitude;
   const Vec3 sigma = c > 0.0 ? Vec3(-(force + eta_t * u_t) / c) : Vec3::Zero();
   next.tangential_slip = sigma;
-  // The slider's work over the step by the trapezoid rule, as laws::spring_slider books it.
-  const Vec3 before = -c * start - eta_t * u_t;
-  const double work = -0.5 * (force + before).dot(u_t) * in.elapsed;
+  const double work = laws::sliding_step_work(-c * start - eta_t * u_t, force, u_t, in.elapsed);
   return {force, energy(sigma), std::max(work - (energy(sigma) - energy(start)), 0.0)};
 }
 
