@@ -238,7 +238,8 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
   plan.jobs = std::max(1U, (*vm)["jobs"].as<unsigned>());
   plan.points = sweeps::expand(plan.spec);
   const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(plan.out);  // removed if interrupted
-  const RunContext context = run_context(*vm, plan.out / "work");
+  RunContext context = run_context(*vm, plan.out / "work");
+  if (plan.spec.timeout_s && (*vm)["timeout"].defaulted()) context.options.timeout_s = *plan.spec.timeout_s;
   const auto start = std::chrono::steady_clock::now();
 
   const std::vector<std::string> payloads = ranks.gather(sweeps::encode_runs(run_share(plan, context, ranks)));

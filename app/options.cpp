@@ -116,8 +116,11 @@ double timeout_option(const po::variables_map& vm) {
 }
 
 std::vector<std::string> forwarded_run_options(const po::variables_map& vm) {
-  std::vector<std::string> args{"--timeout", fmt::format("{}", vm["timeout"].as<double>()), "--threads",
-                                std::to_string(vm["threads"].as<int>())};
+  std::vector<std::string> args{"--threads", std::to_string(vm["threads"].as<int>())};
+  // Only a --timeout the user gave: a sweep file's own timeout applies when none was given.
+  if (!vm["timeout"].defaulted()) {
+    args.insert(args.end(), {"--timeout", fmt::format("{}", vm["timeout"].as<double>())});
+  }
   if (vm.count("no-cache") != 0) args.emplace_back("--no-cache");
   if (vm.count("no-time-step-check") != 0) args.emplace_back("--no-time-step-check");
   for (const char* option : {"cache", "lammps", "yade"}) {

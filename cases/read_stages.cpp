@@ -24,7 +24,7 @@ constexpr auto kFormationKeys = std::to_array<std::string_view>(
      "max_duration"});
 constexpr auto kSettleKeys = std::to_array<std::string_view>(
     {"kind", "name", "restitution", "kinetic_energy", "min_duration", "max_duration", "remove_above",
-     "remove_by"});
+     "remove_by", "count_spin"});
 constexpr auto kLaunchKeys =
     std::to_array<std::string_view>({"kind", "name", "wall", "speed", "angle", "direction", "height"});
 
@@ -80,6 +80,7 @@ SettleStageSpec read_settle(const Table& t, const Scene& scene) {
     if (!s.remove_above) v->fail("needs remove_above: it says which part of a sphere must lie above that height");
     s.remove_by_top = v->keyword(kRemoveBy, "part of a sphere") == "top";
   }
+  if (const auto v = t.find("count_spin")) s.count_spin = v->boolean();
   bool gravity = false;
   for (const double g : scene.gravity) gravity = gravity || g != 0.0;
   if (!gravity) t.fail("kind", "a settle stage needs gravity ([fields] gravity): without it nothing settles");

@@ -218,6 +218,10 @@ struct SettleStageSpec {
   double max_duration = 0.0;          ///< the stage fails when not settled by then [s], > min_duration
   std::optional<double> remove_above;  ///< z [m]: mobile spheres with centres above it are removed
   bool remove_by_top = false;          ///< remove_by = "top": remove those whose tops (z + r) lie above it
+  /// count_spin: the settled test counts spin energy ½Iω² (true) or translation alone (false: a
+  /// sphere spinning about the line of its contacts, which nothing in the model twists back, never
+  /// settles otherwise).
+  bool count_spin = true;
 };
 
 /// One preparation stage of a case (docs/case-format.md, [[stages]]). Stages run in order in

@@ -17,15 +17,15 @@
 namespace prepare {
 namespace {
 
-/// Kinetic energy of the mobile spheres, translation and spin [J].
-double mobile_kinetic_energy(const dem::Simulation& sim) {
+/// Kinetic energy of the mobile spheres [J]: translation, plus spin when `with_spin`.
+double mobile_kinetic_energy(const dem::Simulation& sim, bool with_spin) {
   const dem::ParticleProperties& props = sim.particles();
   const dem::KinematicState& s = sim.state();
   double e = 0.0;
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props.size()); ++i) {
     if (props.fixed[static_cast<std::size_t>(i)] != 0) continue;
-    e += 0.5 * props.mass[i] * s.velocity.col(i).squaredNorm() +
-         0.5 * props.inertia[i] * s.angular_velocity.col(i).squaredNorm();
+    e += 0.5 * props.mass[i] * s.velocity.col(i).squaredNorm();
+    if (with_spin) e += 0.5 * props.inertia[i] * s.angular_velocity.col(i).squaredNorm();
   }
   return e;
 }
@@ -64,7 +64,8 @@ Settled settle(const cases::Scene& scene, const cases::SettleStageSpec& stage, i
                                   static_cast<std::uint64_t>(std::ceil(stage.max_duration / dt)), stage.kinetic_energy,
                                   stage.max_duration};
   Settled out;
-  out.kinetic_energy = run_until_settled(sim, criterion, mobile_kinetic_energy, "settle");
+  out.kinetic_energy = run_until_settled(
+      sim, criterion, [&](const dem::Simulation& at) { return mobile_kinetic_energy(at, stage.count_spin); }, "settle");
   out.particles = particles_at(sim, scene.particles);
   out.time = sim.time();
   out.steps = sim.steps();

@@ -88,6 +88,7 @@ Json stage_json(const cases::StageSpec& st) {
     if (settle->restitution) j["restitution"] = *settle->restitution;
     if (settle->remove_above) j["remove_above"] = *settle->remove_above;
     if (settle->remove_by_top) j["remove_by"] = "top";
+    if (!settle->count_spin) j["count_spin"] = false;  // absent when true: older stage caches stay valid
     return j;
   }
   const auto& l = std::get<cases::LaunchStageSpec>(st.action);

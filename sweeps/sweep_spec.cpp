@@ -24,7 +24,7 @@ using cases::loader::Value;
 constexpr auto kTopKeys = std::to_array<std::string_view>({"sweep", "parameters", "beverloo"});
 constexpr auto kBeverlooKeys = std::to_array<std::string_view>(
     {"orifice", "orifice_scale", "grain_diameter", "grain_density", "flow_rate", "packing_fraction", "gravity"});
-constexpr auto kSweepKeys = std::to_array<std::string_view>({"name", "description", "case", "seeds", "engines", "metrics"});
+constexpr auto kSweepKeys = std::to_array<std::string_view>({"name", "description", "case", "seeds", "engines", "metrics", "timeout"});
 constexpr auto kAxisKeys = std::to_array<std::string_view>({"key", "label", "values", "scale", "with"});
 constexpr auto kLinkedKeys = std::to_array<std::string_view>({"key", "values"});
 constexpr std::array<std::string_view, 2> kScales{"linear", "log"};
@@ -112,6 +112,9 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
       if (!cases::is_known_engine(name)) e.fail(fmt::format("unknown engine '{}'", name));
       spec.engines.push_back(name);
     }
+  }
+  if (const auto v = sweep.find("timeout")) {
+    spec.timeout_s = v->number(dem::ValueRange{0.0, 1e7, true, false});
   }
   if (const auto v = sweep.find("metrics")) {
     for (const Value& m : v->elements()) {

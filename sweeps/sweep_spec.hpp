@@ -48,6 +48,9 @@ struct SweepSpec {
   std::vector<std::uint64_t> seeds;   ///< population seeds run at every point
   std::vector<std::string> engines;   ///< empty: the case's compare.engines
   std::vector<std::string> metrics;   ///< empty: the case's compare.metrics
+  /// Seconds before a reference code's run is killed ([sweep] timeout); none: the command's
+  /// --timeout. An explicit --timeout wins over it.
+  std::optional<double> timeout_s;
   std::vector<SweepAxis> axes;        ///< the matrix is their Cartesian product
   std::optional<BeverlooSpec> beverloo;  ///< fit Beverloo's law to the flow rates ([beverloo])
 };

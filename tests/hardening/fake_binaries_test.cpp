@@ -185,4 +185,94 @@ TEST(Engines, ShowsWhereEachBinaryWasFound) {
   }
 }
 
+/// Eight glass spheres dropped into a box for a few steps, on LAMMPS alone: a case a sweep can seed
+/// (a population) and LAMMPS expresses.
+std::string tiny_pour() {
+  return R"(
+[case]
+name = "tiny_pour"
+[model]
+normal = "hertz"
+damping = "tsuji"
+clamp_tensile = true
+tangential = "mindlin_8g"
+mindlin_form = "incremental"
+[materials.glass]
+density = 2500.0
+youngs_modulus = 6.0e10
+poisson_ratio = 0.22
+restitution = 0.8
+friction = 0.4
+tangential_damping_ratio = 0.0
+[[populations]]
+material = "glass"
+seed = 1
+arrangement = "simple_cubic"
+count = 8
+spacing = 4.4e-4
+region = { shape = "box", min = [0.0, 0.0, 0.0], max = [2.0e-3, 2.0e-3, 2.0e-3] }
+size = { distribution = "monodisperse", radius = 2.0e-4 }
+[[walls]]
+type = "box"
+name = "box"
+min = [0.0, 0.0, 0.0]
+max = [2.0e-3, 2.0e-3, 2.0e-3]
+material = "glass"
+open_faces = ["z+"]
+[fields]
+gravity = [0.0, 0.0, -9.81]
+[integration]
+scheme = "velocity_verlet"
+timestep = 1.0e-7
+duration = 1.0e-5
+[output]
+snapshot_times = [1.0e-5]
+[compare]
+engines = ["lammps"]
+reference = "lammps"
+metrics = ["coordination_number"]
+packing = { min = [0.0, 0.0, 0.0], max = [2.0e-3, 2.0e-3, 2.0e-3] }
+)";
+}
+
+TEST(FakeLammps, ASweepFilesTimeoutKillsAHungRunUnderSweepAndRefresh) {
+  // [sweep] timeout = 3 replaces the 600 s default: without it this test would wait ten minutes.
+  // `demwb refresh --sweep` forwards only a --timeout the user gave, so the file's applies there too.
+  if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
+  const fs::path dir = scratch("sweep-timeout-files");
+  support::write_file(dir / "tiny.toml", tiny_pour());
+  support::write_file(dir / "sweeps" / "hung.toml", R"([sweep]
+name = "hung"
+case = "../tiny.toml"
+seeds = [1]
+timeout = 3
+[[parameters]]
+key = "materials.glass.friction"
+values = [0.4]
+)");
+  const fs::path pids = scratch("sweep-timeout-pid");
+  const fs::path fake = fake_lammps(scratch("sweep-timeout-lmp"), Fault::hang, *support::find_program("lmp"), pids);
+  const fs::path baselines = scratch("sweep-timeout-baselines");
+  fs::create_directories(baselines);
+  for (const bool refresh : {false, true}) {
+    SCOPED_TRACE(refresh ? "refresh --sweep" : "sweep");
+    const fs::path out = scratch(refresh ? "sweep-timeout-refresh" : "sweep-timeout-sweep");
+    std::vector<std::string> args =
+        refresh ? std::vector<std::string>{"refresh", "--sweep", (dir / "sweeps" / "hung.toml").string(), "-o",
+                                           out.string(), "--baselines", baselines.string()}
+                : std::vector<std::string>{"sweep", (dir / "sweeps" / "hung.toml").string(), "-o", out.string()};
+    for (const char* a : {"--no-cache", "--lammps"}) args.emplace_back(a);
+    args.push_back(fake.string());
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = demwb(args, {}, 120);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exit_code, refresh ? 2 : 1) << r.out << r.err;  // refresh: an error, nothing stored
+    EXPECT_LT(seconds, 3 + 10 + 20) << "the sweep's timeout was not applied";
+    const std::string csv = support::read_file((refresh ? out / "hung" : out) / "sweep.csv");
+    EXPECT_NE(csv.find("LAMMPS timed out after"), std::string::npos) << csv;
+    expect_all_ended(pids);
+  }
+  EXPECT_FALSE(fs::exists(baselines / "sweeps" / "hung")) << "a failed sweep stored its results";
+}
+
 }  // namespace

@@ -170,6 +170,70 @@ TEST(SettleStage, FailuresNameTheStage) {
   expect_error(pour(std::string(kSettle) + "remove_above = -1.0\n"), "stages[0]", "removes every mobile sphere");
 }
 
+/// One sphere (r = 1 mm) resting on a frictional floor and spinning about the vertical at
+/// 100 rad/s: its one contact's normal is the spin axis, and no contact model twists it back.
+std::string spinning_top(const std::string& stage) {
+  return R"([case]
+name = "spinning_top"
+[model]
+normal = "linear"
+damping = "restitution"
+tangential = "spring_coulomb"
+[materials.glass]
+density = 2500.0
+normal_stiffness = 2000.0
+restitution = 0.5
+tangential_stiffness = 2000.0
+friction = 0.5
+tangential_damping_ratio = 0.0
+[[particles]]
+radius = 1.0e-3
+material = "glass"
+position = [0.0, 0.0, 0.99995e-3]
+angular_velocity = [0.0, 0.0, 100.0]
+[[walls]]
+type = "plane"
+name = "floor"
+point = [0.0, 0.0, 0.0]
+normal = [0.0, 0.0, 1.0]
+material = "glass"
+[fields]
+gravity = [0.0, 0.0, -9.81]
+[integration]
+scheme = "velocity_verlet"
+timestep = 2.0e-5
+duration = 0.01
+[[stages]]
+kind = "settle"
+kinetic_energy = 1.0e-12
+max_duration = 0.2
+)" + stage;
+}
+
+TEST(SettleStage, ASphereSpinningAboutItsContactNormalIsNamedAndCountSpinFalseLetsTheStageEnd) {
+  // Spin energy ½Iω² = ½ · 0.4 m r² · 100² ≈ 2.1e-8 J never decays: the stage fails, naming it.
+  try {
+    prepare::prepare_scene(load(spinning_top("")), {});
+    ADD_FAILURE() << "expected the settle stage to fail";
+  } catch (const cases::CaseError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("had not settled"), std::string::npos) << what;
+    EXPECT_NE(what.find("the most energetic sphere is particle 0"), std::string::npos) << what;
+    EXPECT_NE(what.find("J of spin (|ω| = 100 rad/s)"), std::string::npos) << what;
+  }
+  // Translation alone: the sphere comes to rest on the floor, still spinning, and the engines get
+  // that spin.
+  const cases::Scene scene = load(spinning_top("count_spin = false\n"));
+  const auto& stage = std::get<cases::SettleStageSpec>(scene.stages[0].action);
+  EXPECT_FALSE(stage.count_spin);
+  const prepare::Settled settled = prepare::settle(scene, stage, 1);
+  EXPECT_LT(settled.kinetic_energy, 1.0e-12);
+  EXPECT_LT(settled.time, 0.2);
+  ASSERT_EQ(settled.particles.size(), 1U);
+  EXPECT_NEAR(settled.particles[0].angular_velocity[2], 100.0, 1e-9);
+  EXPECT_TRUE(std::get<cases::SettleStageSpec>(load(spinning_top("")).stages[0].action).count_spin);
+}
+
 TEST(SettleStage, BadKeysAreLoadTimeErrorsNamingTheKey) {
   const auto expect_error = [](const std::string& text, const std::string& words) {
     try {
@@ -185,6 +249,7 @@ TEST(SettleStage, BadKeysAreLoadTimeErrorsNamingTheKey) {
   expect_error(pour("kinetic_energy = 1.0e-8\nmax_duration = 0.5\nrestitution = 1.5\n"), "restitution");
   expect_error(pour("kinetic_energy = 1.0e-8\nmax_duration = 0.5\nskim = 1.0\n"), "skim");
   expect_error(pour("kinetic_energy = 1.0e-8\nmax_duration = 0.5\nremove_above = nan\n"), "remove_above");
+  expect_error(pour("kinetic_energy = 1.0e-8\nmax_duration = 0.5\ncount_spin = \"no\"\n"), "count_spin");
   std::string weightless = pour(kSettle);
   weightless.replace(weightless.find("gravity = [0.0, 0.0, -9.81]"), 27, "gravity = [0.0, 0.0, 0.0]");
   expect_error(weightless, "needs gravity");

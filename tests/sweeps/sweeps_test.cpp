@@ -135,7 +135,12 @@ TEST(SweepSpec, BadSweepFilesNameTheirKey) {
   EXPECT_EQ(key_of(head + "seeds = [1]\n[[parameters]]\nkey = \"a.b\"\nvalues = [0.0]\nscale = \"log\"\n"),
             "parameters[0].values");
   EXPECT_EQ(key_of(head + "seeds = [1]\nmetrics = [\"kappa\"]\n" + axis), "sweep.metrics[0]");
+  EXPECT_EQ(key_of(head + "seeds = [1]\ntimeout = 0\n" + axis), "sweep.timeout");
+  EXPECT_EQ(key_of(head + "seeds = [1]\ntimeout = -5.0\n" + axis), "sweep.timeout");
+  EXPECT_EQ(key_of(head + "seeds = [1]\ntimeout = \"long\"\n" + axis), "sweep.timeout");
   EXPECT_EQ(key_of(head + "seeds = [1]\n" + axis), "(no error)");
+  EXPECT_FALSE(sweeps::load_sweep_text(head + "seeds = [1]\n" + axis, dir / "ok.toml").timeout_s);
+  EXPECT_EQ(sweeps::load_sweep_text(head + "seeds = [1]\ntimeout = 3000\n" + axis, dir / "ok.toml").timeout_s, 3000.0);
 }
 
 TEST(SeedStatistics, MeanAndStandardErrorOfTheMean) {
