@@ -73,7 +73,7 @@ inline constexpr std::string_view kPairQuantities[] = {"overlap", "fn"};
 inline constexpr std::string_view kEnergyQuantities[] = {
     "energy.kinetic", "energy.elastic", "energy.cohesive", "energy.gravitational",
     "energy.dissipated_damping", "energy.dissipated_friction",
-    "energy.dissipated_adhesion", "energy.dissipated_plastic", "energy.fluid_work", "energy.boundary_work",
+    "energy.dissipated_adhesion", "energy.dissipated_plastic", "energy.stiffness_change", "energy.fluid_work", "energy.boundary_work",
     "energy.integration_error", "energy.balance"};
 
 }  // namespace cases

@@ -18,6 +18,10 @@ struct ContactHistory {
   /// Contact normal at the last evaluation (TangentialHistory::yade_rotate turns ς by its
   /// change); zero for a new contact.
   Vec3 normal = Vec3::Zero();
+  /// Tangential stiffness k_t at the last evaluation [N/m], kept by the Mindlin laws (whose k_t
+  /// follows the overlap) so that the energy ledger can book what the stiffness change does to
+  /// the spring's energy; zero for a new contact, and for every contact when no ledger is kept.
+  double tangential_stiffness = 0.0;
 };
 
 /// Key of an unordered particle pair: the lower index in the high 32 bits.

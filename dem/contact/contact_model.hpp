@@ -74,6 +74,7 @@ struct ContactOutcome {
   double dissipated_adhesion = 0.0;  ///< energy released by a JKR snap-in or rupture at this evaluation [J] (signed)
   double dissipated_plastic = 0.0;   ///< plastic work of a hysteretic normal law since the last commit [J]
   double dissipated_friction = 0.0;  ///< sliding and rolling work since the last commit [J], ≥ 0
+  double stiffness_change = 0.0;     ///< TangentialResponse::stiffness_change [J], signed
   Vec3 force_on_p = Vec3::Zero();    ///< force on p [N]; q receives the opposite
   Vec3 torque_on_p = Vec3::Zero();   ///< torque on p about its centre [N·m]
   Vec3 torque_on_q = Vec3::Zero();   ///< torque on q about its centre [N·m]
@@ -204,6 +205,7 @@ template <class Slots>
     next.rolling_slip.setZero();
     next.max_overlap = 0.0;
     next.normal.setZero();
+    next.tangential_stiffness = 0.0;
   }
 
   out.force_on_p = out.normal_force * g.normal + tangential.force;
@@ -213,6 +215,7 @@ template <class Slots>
   out.cohesive_energy = cohesion.energy;
   out.damping_force = damping;
   out.dissipated_friction += tangential.dissipated + rolling.dissipated;
+  out.stiffness_change = tangential.stiffness_change;
   return out;
 }
 

@@ -21,11 +21,13 @@ namespace {
 constexpr std::uint32_t kSphereChunk = 4096;
 
 /// True when some sub-model of the choice reads history beyond the tangential slip: rolling
-/// slip (rolling resistance), the largest overlap (hysteretic loading), the JKR neck or the last
-/// normal (TangentialHistory::yade_rotate).
-bool needs_extended_history(const ModelChoice& c) {
+/// slip (rolling resistance), the largest overlap (hysteretic loading), the JKR neck, the last
+/// normal (TangentialHistory::yade_rotate), or — for the energy ledger only — a Mindlin law's
+/// last stiffness.
+bool needs_extended_history(const ModelChoice& c, bool track_energy) {
   return c.rolling != "none" || c.normal == "hysteretic" || c.cohesion == "jkr" ||
-         c.tangential_history == TangentialHistory::yade_rotate;
+         c.tangential_history == TangentialHistory::yade_rotate ||
+         (track_energy && (c.tangential == "mindlin" || c.tangential == "mindlin_8g"));
 }
 
 /// Default Verlet skin: a tenth of the smallest body diameter.
@@ -57,6 +59,7 @@ void add_energies(EnergyTotals& t, const ContactOutcome& c) noexcept {
   t.friction += c.dissipated_friction;
   t.adhesion += c.dissipated_adhesion;
   t.plastic += c.dissipated_plastic;
+  t.stiffness += c.stiffness_change;
 }
 
 }  // namespace
@@ -83,7 +86,7 @@ ContactForceField::ContactForceField(const ParticleProperties& props, const Pair
     contact_spheres_[i] = {props.radius[k], props.effect_radius[k], props.inverse_mass[k], props.charge[k]};
   }
   classes_ = size_classes({half_reach_.data(), n});
-  extended_history_ = needs_extended_history(table.choice());
+  extended_history_ = needs_extended_history(table.choice(), setup_.track_energy);
   if (!(setup_.neighbors.skin > 0.0)) setup_.neighbors.skin = default_skin(props);
 
   const PeriodicBox& box = setup_.box;
@@ -270,6 +273,7 @@ void ContactForceField::evaluate(const KinematicState& state, double elapsed, Ac
   ledger_.dissipated_friction += totals_.friction;
   ledger_.dissipated_adhesion += totals_.adhesion;
   ledger_.dissipated_plastic += totals_.plastic;
+  ledger_.stiffness_change += totals_.stiffness;
 }
 
 void ContactForceField::weigh(double now, double next) noexcept {
@@ -300,7 +304,8 @@ void ContactForceField::restart_work(double start_weight) {
 
 void ContactForceField::reset_potential(double gravitational) noexcept {
   potential_booked_ = ledger_.elastic + ledger_.cohesive + gravitational;
-  lost_booked_ = ledger_.dissipated_friction + ledger_.dissipated_adhesion + ledger_.dissipated_plastic;
+  lost_booked_ = ledger_.dissipated_friction + ledger_.dissipated_adhesion + ledger_.dissipated_plastic +
+                 ledger_.stiffness_change;
 }
 
 void ContactForceField::book_step(const Vec3Array& velocity_before, const Vec3Array& angular_before,
@@ -345,7 +350,8 @@ void ContactForceField::book_step(const Vec3Array& velocity_before, const Vec3Ar
   // stored or dissipated instead; the difference is the energy the integration created.
   const double rest = mobile * dt - fluid - boundary - dashpots;
   const double potential = ledger_.elastic + ledger_.cohesive + gravitational;
-  const double lost = ledger_.dissipated_friction + ledger_.dissipated_adhesion + ledger_.dissipated_plastic;
+  const double lost = ledger_.dissipated_friction + ledger_.dissipated_adhesion + ledger_.dissipated_plastic +
+                      ledger_.stiffness_change;
   ledger_.integration_error += rest + (potential - potential_booked_) + (lost - lost_booked_);
   potential_booked_ = potential;
   lost_booked_ = lost;

@@ -14,6 +14,9 @@ struct EnergyLedger {
   double dissipated_friction = 0.0;  ///< cumulative sliding, tangential-dashpot and rolling work
   double dissipated_adhesion = 0.0;  ///< energy lost when JKR necks snap in or break
   double dissipated_plastic = 0.0;   ///< plastic work of hysteretic contacts
+  /// Cumulative energy the tangential springs lost (> 0) or gained when their stiffness followed
+  /// the overlap at constant slip (Mindlin laws): a property of the model, no force's work.
+  double stiffness_change = 0.0;
   double fluid_work = 0.0;           ///< cumulative work of drag, pressure gradient and pull on spheres
   double boundary_work = 0.0;        ///< cumulative work of moving walls and prescribed motions
   /// Energy the time integration created (> 0) or removed: the work of the conservative and
@@ -24,7 +27,8 @@ struct EnergyLedger {
   /// whenever the scheme books its work exactly (Scheme::books_work_exactly()).
   [[nodiscard]] double balance() const noexcept {
     return kinetic + elastic + cohesive + gravitational + dissipated_damping + dissipated_friction +
-           dissipated_adhesion + dissipated_plastic - fluid_work - boundary_work - integration_error;
+           dissipated_adhesion + dissipated_plastic + stiffness_change - fluid_work - boundary_work -
+           integration_error;
   }
 };
 
@@ -35,6 +39,7 @@ struct EnergyTotals {
   double friction = 0.0;     ///< sliding and rolling work since the last commit [J]
   double adhesion = 0.0;     ///< energy released by JKR snap-ins and ruptures at this evaluation [J]
   double plastic = 0.0;      ///< plastic work since the last commit [J]
+  double stiffness = 0.0;    ///< spring energy lost to stiffness changes since the last commit [J]
   double wall_power = 0.0;   ///< Σ F·v_wall over wall contacts: power the walls put in [W]
   double wall_damping_power = 0.0;  ///< Σ F_d·v_wall: the walls' share of the dashpot power [W]
   double removed = 0.0;      ///< spring and cohesive energy of contacts whose wall was removed at this commit [J]
@@ -46,6 +51,7 @@ struct EnergyTotals {
     friction += o.friction;
     adhesion += o.adhesion;
     plastic += o.plastic;
+    stiffness += o.stiffness;
     wall_power += o.wall_power;
     wall_damping_power += o.wall_damping_power;
     removed += o.removed;

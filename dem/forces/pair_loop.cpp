@@ -153,6 +153,7 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
     t.friction += c.dissipated_friction;
     t.adhesion += c.dissipated_adhesion;
     t.plastic += c.dissipated_plastic;
+    t.stiffness += c.stiffness_change;
     // The dashpot's force on both spheres: the ledger takes its work on the relative motion.
     double* __restrict di = in.damping_force + 3 * static_cast<std::size_t>(i);
     double* __restrict dj = in.damping_force + 3 * static_cast<std::size_t>(j);

@@ -40,16 +40,18 @@ struct ExtendedHistory {
   double max_overlap = 0.0;
   std::uint8_t attached = 0;
   Vec3 normal = Vec3::Zero();  ///< ContactHistory::normal
+  double tangential_stiffness = 0.0;  ///< ContactHistory::tangential_stiffness
 };
 
 /// The extended part of a history, as the lists store it.
 [[nodiscard]] inline ExtendedHistory extended_of(const ContactHistory& h) noexcept {
-  return {h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0), h.normal};
+  return {h.rolling_slip, h.max_overlap, static_cast<std::uint8_t>(h.attached ? 1 : 0), h.normal,
+          h.tangential_stiffness};
 }
 /// A committed history from a stored slip and its extended record (null when none is kept).
 [[nodiscard]] inline ContactHistory history_of(const Vec3& slip, const ExtendedHistory* x) noexcept {
-  if (x == nullptr) return {slip, Vec3::Zero(), 0.0, false, Vec3::Zero()};
-  return {slip, x->rolling_slip, x->max_overlap, x->attached != 0, x->normal};
+  if (x == nullptr) return {slip, Vec3::Zero(), 0.0, false, Vec3::Zero(), 0.0};
+  return {slip, x->rolling_slip, x->max_overlap, x->attached != 0, x->normal, x->tangential_stiffness};
 }
 
 /// What a build reads.
@@ -61,7 +63,7 @@ struct NeighborBuildInput {
   const PeriodicBox* box;
   double skin;
   int threads;
-  bool extended_history;  ///< keep ExtendedHistory (rolling slip, largest overlap, JKR neck)
+  bool extended_history;  ///< keep ExtendedHistory (rolling slip, largest overlap, JKR neck, Mindlin k_t)
 };
 
 /// Size classes for a polydisperse population: class c holds the spheres with

@@ -27,7 +27,7 @@ void record_energy(const dem::Simulation& sim, cases::Trace& trace) {
   const dem::EnergyLedger& e = sim.energy();
   trace.append_row({sim.time(), e.kinetic, e.elastic, e.cohesive, e.gravitational,
                     e.dissipated_damping, e.dissipated_friction, e.dissipated_adhesion,
-                    e.dissipated_plastic, e.fluid_work, e.boundary_work,
+                    e.dissipated_plastic, e.stiffness_change, e.fluid_work, e.boundary_work,
                     e.integration_error, e.balance()});
 }
 

@@ -41,12 +41,12 @@ TEST(OutputBudget, TheEstimateCountsRowsColumnsSnapshotsAndEngines) {
   EXPECT_EQ(e.steps, 100U);
   EXPECT_EQ(e.trace_rows, 11U);       // t = 0 and every 10th step
   EXPECT_EQ(e.trace_columns, 13U);    // time and the 12 of the one moving sphere
-  EXPECT_EQ(e.energy_columns, 13U);   // time and the 12 of the ledger
+  EXPECT_EQ(e.energy_columns, 14U);   // time and the 13 of the ledger
   EXPECT_EQ(e.snapshots, 2U);
   EXPECT_EQ(e.snapshot_values, 19U);  // time and 9 per sphere
   EXPECT_EQ(e.engines, 2U);
-  EXPECT_EQ(e.engine_bytes, 8U * (11U * 26U + 2U * 19U));
-  EXPECT_EQ(e.text_bytes, cases::kCsvBytesPerValue * 11U * 26U);
+  EXPECT_EQ(e.engine_bytes, 8U * (11U * 27U + 2U * 19U));
+  EXPECT_EQ(e.text_bytes, cases::kCsvBytesPerValue * 11U * 27U);
   EXPECT_EQ(e.bytes, 2U * e.engine_bytes + e.text_bytes);
   EXPECT_EQ(cases::estimate_output_bytes(s), e.bytes);
 }
@@ -68,7 +68,7 @@ TEST(OutputBudget, AnOversizedTraceNamesTraceEveryAtItsLine) {
     EXPECT_EQ(std::string(e.what()).rfind("traced.toml:29:15: output.trace_every: ", 0), 0U) << e.what();
     EXPECT_NE(e.problem().find("more than the limit of 1000 bytes"), std::string::npos) << e.what();
     EXPECT_NE(e.problem().find("integration.duration"), std::string::npos) << e.what();
-    EXPECT_NE(e.problem().find("11 rows × 13 columns + 13 energy columns"), std::string::npos) << e.what();
+    EXPECT_NE(e.problem().find("11 rows × 13 columns + 14 energy columns"), std::string::npos) << e.what();
   }
   EXPECT_NO_THROW(cases::check_output_budget(s, cases::estimate_output_bytes(s), "traced.toml"));
 }

@@ -82,6 +82,9 @@ struct TangentialResponse {
   Vec3 force = Vec3::Zero();  ///< tangential force on p [N]
   double energy = 0.0;        ///< elastic energy of the tangential spring [J]
   double dissipated = 0.0;    ///< energy dissipated since the last commit [J], ≥ 0
+  /// Energy the spring lost since the last commit because its stiffness changed (a Mindlin k_t
+  /// following the overlap): E(carried slip, k_t then) − E(carried slip, k_t now) [J], signed.
+  double stiffness_change = 0.0;
 };
 
 /// What a rolling sub-model returns.

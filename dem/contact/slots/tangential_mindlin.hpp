@@ -38,21 +38,49 @@ namespace dem {
   const double cap = std::max(friction * t_in.limit_basis, 0.0);
   const double k_t = c * a;
   const auto energy = [&](const Vec3& sigma) { return k_t > 0.0 ? 0.5 * c * c * sigma.squaredNorm() / k_t : 0.0; };
+  next.tangential_stiffness = k_t;
+  // The carried spring's energy at the last commit's stiffness less at today's: what the change
+  // of k_t alone did to it (the ledger's stiffness_change; no stiffness kept: no ledger).
+  const double k_then = in.committed.tangential_stiffness;
+  const double restiffened = k_then > 0.0 ? 0.5 * c * c * start.squaredNorm() / k_then - energy(start) : 0.0;
   Vec3 force = -c * integrated - eta_t * u_t;
   const double magnitude = force.norm();
   if (!(magnitude > cap)) {
     next.tangential_slip = integrated;
-    return {force, energy(integrated), eta_t * u_t.squaredNorm() * in.elapsed};
+    return {force, energy(integrated), eta_t * u_t.squaredNorm() * in.elapsed, restiffened};
   }
   if (in.policies.unloaded_slider == UnloadedSlider::zero && integrated.norm() == 0.0) {
     next.tangential_slip = integrated;
-    return {Vec3::Zero(), 0.0, 0.0};
+    return {Vec3::Zero(), 0.0, 0.0, restiffened};
   }
   force *= cap / magnitude;
   const Vec3 sigma = c > 0.0 ? Vec3(-(force + eta_t * u_t) / c) : Vec3::Zero();
   next.tangential_slip = sigma;
   const double work = laws::sliding_step_work(-c * start - eta_t * u_t, force, u_t, in.elapsed);
-  return {force, energy(sigma), std::max(work - (energy(sigma) - energy(start)), 0.0)};
+  return {force, energy(sigma), std::max(work - (energy(sigma) - energy(start)), 0.0), restiffened};
+}
+
+/// The total-form Mindlin response: spring_coulomb_response at k_t = k, keeping k in the history
+/// and booking the carried spring's energy change from the last commit's stiffness to k,
+/// ½ (k_then − k) |ς|² (the ledger's stiffness_change; nothing when no stiffness was kept).
+[[nodiscard]] inline TangentialResponse total_mindlin_response(double k, double friction, double damping_ratio,
+                                                               const ContactInput& in, const TangentialInput& t_in,
+                                                               ContactHistory& next) noexcept {
+  TangentialResponse r = spring_coulomb_response(k, friction, damping_ratio, in, t_in, next);
+  next.tangential_stiffness = k;
+  const double k_then = in.committed.tangential_stiffness;
+  if (k_then > 0.0) r.stiffness_change = 0.5 * (k_then - k) * carried_slip(in).squaredNorm();
+  return r;
+}
+
+/// Energy a Mindlin spring held at the last commit, at that commit's stiffness k_then [J]: the
+/// spring energy a contact that parts takes with it. Incremental form |c σ|²/(2 k_then) (c the
+/// stiffness per unit contact radius), total form ½ k_then |ς|²; zero when no stiffness was kept.
+[[nodiscard]] inline double mindlin_committed_energy(double c, const ContactInput& in) noexcept {
+  const double k_then = in.committed.tangential_stiffness;
+  if (!(k_then > 0.0)) return 0.0;
+  const double s2 = in.committed.tangential_slip.squaredNorm();
+  return in.policies.mindlin_form == MindlinForm::incremental ? 0.5 * c * c * s2 / k_then : 0.5 * k_then * s2;
 }
 
 /// Mixed parameters of a Mindlin tangential sub-model.
@@ -103,7 +131,11 @@ struct MindlinTangential {
                                           p.friction, p.damping_ratio, in, t_in, next);
     }
     const double k = laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, a);
-    return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
+    return total_mindlin_response(k, p.friction, p.damping_ratio, in, t_in, next);
+  }
+  /// Energy the spring still holds when the bodies part (mindlin_committed_energy) [J].
+  [[nodiscard]] double released_at_separation(const ContactInput& in) const noexcept {
+    return mindlin_committed_energy(laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, 1.0), in);
   }
 };
 
@@ -137,7 +169,11 @@ struct Mindlin8GTangential {
                                           p.damping_ratio, in, t_in, next);
     }
     const double k = laws::mindlin_stiffness_at_radius(p.shear_modulus, a);
-    return spring_coulomb_response(k, p.friction, p.damping_ratio, in, t_in, next);
+    return total_mindlin_response(k, p.friction, p.damping_ratio, in, t_in, next);
+  }
+  /// Energy the spring still holds when the bodies part (mindlin_committed_energy) [J].
+  [[nodiscard]] double released_at_separation(const ContactInput& in) const noexcept {
+    return mindlin_committed_energy(laws::mindlin_stiffness_at_radius(p.shear_modulus, 1.0), in);
   }
 };
 
