@@ -24,7 +24,7 @@ struct OutputEstimate {
   /// Columns of the trace: time, 12 per traced particle, 2 per traced pair or wall contact, 1 per
   /// aggregate.
   std::uint64_t trace_columns = 0;
-  std::uint64_t energy_columns = 0;   ///< 13 with output.trace_energy (time and the ledger), else 0
+  std::uint64_t energy_columns = 0;   ///< 14 with output.trace_energy (time and the ledger), else 0
   std::uint64_t snapshots = 0;        ///< output.snapshot_times (+2 at 0 and the end of a launched run)
   std::uint64_t snapshot_values = 0;  ///< numbers per snapshot: time and 9 per particle
   std::uint64_t engines = 0;          ///< compare.engines plus one inhouse@<code> per compare.matched

@@ -10,10 +10,11 @@
 namespace prepare {
 namespace {
 
-/// The mobile sphere holding the most kinetic energy, as a phrase for a not-settled message: its
-/// index in the case, position, and translational and spin energy — a sphere that keeps spinning
-/// about its one contact's normal (no twisting resistance) shows as spin alone.
-std::string most_energetic_sphere(const dem::Simulation& sim) {
+/// The mobile sphere holding the most kinetic energy (translation, plus spin when `count_spin`), as
+/// a phrase for a not-settled message: its index among the spheres the run received, position, and
+/// translational and spin energy — a sphere that keeps spinning about its one contact's normal (no
+/// twisting resistance) shows as spin alone.
+std::string most_energetic_sphere(const dem::Simulation& sim, bool count_spin) {
   const dem::ParticleProperties& props = sim.particles();
   const dem::KinematicState& s = sim.state();
   double best = -1.0;
@@ -24,8 +25,8 @@ std::string most_energetic_sphere(const dem::Simulation& sim) {
     if (props.fixed[static_cast<std::size_t>(i)] != 0) continue;
     const double translation = 0.5 * props.mass[i] * s.velocity.col(i).squaredNorm();
     const double spin = 0.5 * props.inertia[i] * s.angular_velocity.col(i).squaredNorm();
-    if (translation + spin > best) {
-      best = translation + spin;
+    if (translation + (count_spin ? spin : 0.0) > best) {
+      best = translation + (count_spin ? spin : 0.0);
       best_translation = translation;
       best_spin = spin;
       at = i;
@@ -33,7 +34,7 @@ std::string most_energetic_sphere(const dem::Simulation& sim) {
   }
   if (at < 0) return "";
   const Eigen::Vector3d x = s.position.col(at);
-  return fmt::format("; the most energetic sphere is particle {} at ({:.4g}, {:.4g}, {:.4g}) m with {:.3g} J of "
+  return fmt::format("; the most energetic sphere is particle {} (of the spheres the run received) at ({:.4g}, {:.4g}, {:.4g}) m with {:.3g} J of "
                      "translation and {:.3g} J of spin (|ω| = {:.3g} rad/s)",
                      sim.id(static_cast<std::uint32_t>(at)), x[0], x[1], x[2], best_translation, best_spin,
                      s.angular_velocity.col(at).norm());
@@ -74,7 +75,7 @@ double run_until_settled(dem::Simulation& sim, const SettleCriterion& criterion,
   throw std::runtime_error(fmt::format(
       "the spheres had not settled after max_duration = {} s: kinetic energy {:.6g} J, threshold "
       "kinetic_energy = {:.6g} J (raise max_duration, lower restitution, or raise the threshold){}",
-      criterion.max_duration, e, criterion.threshold, most_energetic_sphere(sim)));
+      criterion.max_duration, e, criterion.threshold, most_energetic_sphere(sim, criterion.count_spin)));
 }
 
 std::vector<cases::ParticleSpec> particles_at(const dem::Simulation& sim, std::vector<cases::ParticleSpec> particles) {

@@ -23,6 +23,7 @@ struct SettleCriterion {
   std::uint64_t max_steps = 0;   ///< the run fails when not settled by then
   double threshold = 0.0;        ///< settled below this energy [J]
   double max_duration = 0.0;     ///< max_steps as a time, for the message [s]
+  bool count_spin = true;        ///< the energy counts spin: the message ranks spheres the same way
 };
 
 /// Steps `sim` until `energy(sim)` (checked after every step from `criterion.first_step`) falls

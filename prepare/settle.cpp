@@ -62,7 +62,7 @@ Settled settle(const cases::Scene& scene, const cases::SettleStageSpec& stage, i
   const double dt = sim.timestep();
   const SettleCriterion criterion{static_cast<std::uint64_t>(std::ceil(stage.min_duration / dt)),
                                   static_cast<std::uint64_t>(std::ceil(stage.max_duration / dt)), stage.kinetic_energy,
-                                  stage.max_duration};
+                                  stage.max_duration, stage.count_spin};
   Settled out;
   out.kinetic_energy = run_until_settled(
       sim, criterion, [&](const dem::Simulation& at) { return mobile_kinetic_energy(at, stage.count_spin); }, "settle");

@@ -20,7 +20,8 @@ struct ContactHistory {
   Vec3 normal = Vec3::Zero();
   /// Tangential stiffness k_t at the last evaluation [N/m], kept by the Mindlin laws (whose k_t
   /// follows the overlap) so that the energy ledger can book what the stiffness change does to
-  /// the spring's energy; zero for a new contact, and for every contact when no ledger is kept.
+  /// the spring's energy; zero for a new contact, and not kept between steps in runs without a ledger
+  /// (unless the model keeps the extended history for another reason).
   double tangential_stiffness = 0.0;
 };
 

@@ -279,6 +279,50 @@ TEST(MindlinModel, StiffnessFollowsTheOverlapAtConstantSlip) {
   }
 }
 
+TEST(MindlinModel, StiffnessChangeAndPartingEnergyAreTheSpringsEnergyAtTheKeptStiffness) {
+  // A contact committed at k_then with a slip σ, evaluated at rest (no slip increment) at a new
+  // overlap: the spring's energy moved by k_t alone is E(σ, k_then) − E(σ, k_now); a contact
+  // that parts takes E(σ, k_then) with it. Incremental form E = c²|σ|²/(2k) (c = 8 G*, k = c a),
+  // total form ½ k |ς|². Without a kept stiffness (k_then = 0, no ledger) nothing is booked.
+  dem::PairProperties p;
+  p.normal_stiffness = 1e5;
+  p.effective_shear_modulus = 1e8;
+  p.friction = 10.0;  // stuck
+  p.tangential_damping_ratio = 0.0;
+  const double c = 8.0 * 1e8;
+  const double d_then = 1e-5, d_now = 4e-5;
+  const double k_then = c * std::sqrt(kRadius * d_then), k_now = c * std::sqrt(kRadius * d_now);
+  for (const dem::MindlinForm form : {dem::MindlinForm::incremental, dem::MindlinForm::total}) {
+    const bool incremental = form == dem::MindlinForm::incremental;
+    SCOPED_TRACE(incremental ? "incremental" : "total");
+    dem::ModelChoice choice;
+    choice.damping = "none";
+    choice.tangential = "mindlin_8g";
+    choice.mindlin_form = form;
+    choice.friction_limit = dem::FrictionLimit::total;
+    const dem::PairLaw law = dem::make_pair_law(choice, p);
+    dem::ContactHistory committed;
+    committed.tangential_slip = incremental ? Vec3(2e-10, 0, 0) : Vec3(2e-8, 0, 0);  // σ [m²] or ς [m]
+    committed.tangential_stiffness = k_then;
+    const double s2 = committed.tangential_slip.squaredNorm();
+    const auto energy = [&](double k) { return incremental ? 0.5 * c * c * s2 / k : 0.5 * k * s2; };
+    const dem::ContactOutcome c_now = dem::evaluate_contact(law, floor_contact(d_now, Vec3::Zero()), committed, 1e-6);
+    EXPECT_NEAR(c_now.stiffness_change, energy(k_then) - energy(k_now), 1e-12 * energy(k_then));
+    EXPECT_NEAR(c_now.history.tangential_stiffness, k_now, 1e-9 * k_now);
+    // The incremental spring keeps its force while k grows, so its energy falls (> 0 booked);
+    // the total form's force grows with k, so its energy rises (< 0).
+    EXPECT_EQ(c_now.stiffness_change > 0.0, incremental);
+    const dem::ContactOutcome parted = dem::evaluate_contact(law, floor_contact(-1e-6, Vec3::Zero()), committed, 1e-6);
+    EXPECT_FALSE(parted.contact);
+    EXPECT_NEAR(parted.dissipated_friction, energy(k_then), 1e-12 * energy(k_then));
+    EXPECT_FALSE(parted.interacting);  // its history is dropped
+    dem::ContactHistory unkept = committed;
+    unkept.tangential_stiffness = 0.0;
+    EXPECT_EQ(dem::evaluate_contact(law, floor_contact(d_now, Vec3::Zero()), unkept, 1e-6).stiffness_change, 0.0);
+    EXPECT_EQ(dem::evaluate_contact(law, floor_contact(-1e-6, Vec3::Zero()), unkept, 1e-6).dissipated_friction, 0.0);
+  }
+}
+
 TEST(TangentialRegistry, EveryTangentialAndRollingModelIsRegisteredWithItsProperties) {
   const auto* sc = dem::find_sub_model(dem::Slot::tangential, "spring_coulomb");
   ASSERT_NE(sc, nullptr);
