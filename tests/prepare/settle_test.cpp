@@ -19,8 +19,12 @@ namespace settle_test {
 /// 48 spheres of radius 1 mm on a simple cubic grid (pitch 2.2 mm, 3 × 3 a layer) in a box
 /// 6.6 mm wide, falling under gravity onto its floor; linear springs with restitution damping.
 /// `stage` is the [[stages]] table's body, `extra` more case text.
-std::string pour(const std::string& stage, const std::string& extra = "") {
-  return test_support::small_pour_head("small_pour") + R"([fields]
+std::string pour(const std::string& stage, const std::string& extra = "");
+
+/// The end of the settle tests' case files: gravity, velocity Verlet at Δt = 2e-5 s for 10 ms,
+/// and a settle stage whose body is `stage`.
+std::string settle_tail(const std::string& stage) {
+  return R"([fields]
 gravity = [0.0, 0.0, -9.81]
 [integration]
 scheme = "velocity_verlet"
@@ -28,7 +32,11 @@ timestep = 2.0e-5
 duration = 0.01
 [[stages]]
 kind = "settle"
-)" + stage + extra;
+)" + stage;
+}
+
+std::string pour(const std::string& stage, const std::string& extra) {
+  return test_support::small_pour_head("small_pour") + settle_tail(stage) + extra;
 }
 
 constexpr const char* kSettle = "kinetic_energy = 1.0e-8\nmin_duration = 0.05\nmax_duration = 2.0\n";
@@ -197,17 +205,7 @@ name = "floor"
 point = [0.0, 0.0, 0.0]
 normal = [0.0, 0.0, 1.0]
 material = "glass"
-[fields]
-gravity = [0.0, 0.0, -9.81]
-[integration]
-scheme = "velocity_verlet"
-timestep = 2.0e-5
-duration = 0.01
-[[stages]]
-kind = "settle"
-kinetic_energy = 1.0e-12
-max_duration = 0.2
-)" + stage;
+)" + settle_tail("kinetic_energy = 1.0e-12\nmax_duration = 0.2\n" + stage);
 }
 
 TEST(SettleStage, ASphereSpinningAboutItsContactNormalIsNamedAndCountSpinFalseLetsTheStageEnd) {
