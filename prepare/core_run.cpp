@@ -18,17 +18,14 @@ std::string most_energetic_sphere(const dem::Simulation& sim, bool count_spin) {
   const dem::ParticleProperties& props = sim.particles();
   const dem::KinematicState& s = sim.state();
   double best = -1.0;
-  double best_translation = 0.0;
-  double best_spin = 0.0;
+  SphereKineticEnergy most;
   Eigen::Index at = -1;
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props.size()); ++i) {
     if (props.fixed[static_cast<std::size_t>(i)] != 0) continue;
-    const double translation = 0.5 * props.mass[i] * s.velocity.col(i).squaredNorm();
-    const double spin = 0.5 * props.inertia[i] * s.angular_velocity.col(i).squaredNorm();
-    if (translation + (count_spin ? spin : 0.0) > best) {
-      best = translation + (count_spin ? spin : 0.0);
-      best_translation = translation;
-      best_spin = spin;
+    const SphereKineticEnergy e = sphere_kinetic_energy(sim, i);
+    if (e.translation + (count_spin ? e.spin : 0.0) > best) {
+      best = e.translation + (count_spin ? e.spin : 0.0);
+      most = e;
       at = i;
     }
   }
@@ -36,11 +33,18 @@ std::string most_energetic_sphere(const dem::Simulation& sim, bool count_spin) {
   const Eigen::Vector3d x = s.position.col(at);
   return fmt::format("; the most energetic sphere is particle {} (of the spheres the run received) at ({:.4g}, {:.4g}, {:.4g}) m with {:.3g} J of "
                      "translation and {:.3g} J of spin (|ω| = {:.3g} rad/s)",
-                     sim.id(static_cast<std::uint32_t>(at)), x[0], x[1], x[2], best_translation, best_spin,
+                     sim.id(static_cast<std::uint32_t>(at)), x[0], x[1], x[2], most.translation, most.spin,
                      s.angular_velocity.col(at).norm());
 }
 
 }  // namespace
+
+SphereKineticEnergy sphere_kinetic_energy(const dem::Simulation& sim, Eigen::Index i) noexcept {
+  const dem::ParticleProperties& props = sim.particles();
+  const dem::KinematicState& s = sim.state();
+  return {0.5 * props.mass[i] * s.velocity.col(i).squaredNorm(),
+          0.5 * props.inertia[i] * s.angular_velocity.col(i).squaredNorm()};
+}
 
 cases::Scene stage_run_scene(cases::Scene scene) {
   scene.fluid.reset();

@@ -26,6 +26,14 @@ struct SettleCriterion {
   bool count_spin = true;        ///< the energy counts spin: the message ranks spheres the same way
 };
 
+/// Kinetic energy of one sphere (index `i` in the simulation's order) [J]: translation ½ m u² and
+/// spin ½ I ω².
+struct SphereKineticEnergy {
+  double translation = 0.0;
+  double spin = 0.0;
+};
+[[nodiscard]] SphereKineticEnergy sphere_kinetic_energy(const dem::Simulation& sim, Eigen::Index i) noexcept;
+
 /// Steps `sim` until `energy(sim)` (checked after every step from `criterion.first_step`) falls
 /// below the threshold; returns that energy. Throws std::runtime_error, naming `run` ("formation",
 /// "settle"), when the energy is not finite (the run blew up) or the threshold is not reached by

@@ -20,12 +20,11 @@ namespace {
 /// Kinetic energy of the mobile spheres [J]: translation, plus spin when `with_spin`.
 double mobile_kinetic_energy(const dem::Simulation& sim, bool with_spin) {
   const dem::ParticleProperties& props = sim.particles();
-  const dem::KinematicState& s = sim.state();
   double e = 0.0;
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(props.size()); ++i) {
     if (props.fixed[static_cast<std::size_t>(i)] != 0) continue;
-    e += 0.5 * props.mass[i] * s.velocity.col(i).squaredNorm();
-    if (with_spin) e += 0.5 * props.inertia[i] * s.angular_velocity.col(i).squaredNorm();
+    const SphereKineticEnergy k = sphere_kinetic_energy(sim, i);
+    e += with_spin ? k.translation + k.spin : k.translation;
   }
   return e;
 }

@@ -304,8 +304,7 @@ void ContactForceField::restart_work(double start_weight) {
 
 void ContactForceField::reset_potential(double gravitational) noexcept {
   potential_booked_ = ledger_.elastic + ledger_.cohesive + gravitational;
-  lost_booked_ = ledger_.dissipated_friction + ledger_.dissipated_adhesion + ledger_.dissipated_plastic +
-                 ledger_.stiffness_change;
+  lost_booked_ = ledger_.booked_losses();
 }
 
 void ContactForceField::book_step(const Vec3Array& velocity_before, const Vec3Array& angular_before,
@@ -350,8 +349,7 @@ void ContactForceField::book_step(const Vec3Array& velocity_before, const Vec3Ar
   // stored or dissipated instead; the difference is the energy the integration created.
   const double rest = mobile * dt - fluid - boundary - dashpots;
   const double potential = ledger_.elastic + ledger_.cohesive + gravitational;
-  const double lost = ledger_.dissipated_friction + ledger_.dissipated_adhesion + ledger_.dissipated_plastic +
-                      ledger_.stiffness_change;
+  const double lost = ledger_.booked_losses();
   ledger_.integration_error += rest + (potential - potential_booked_) + (lost - lost_booked_);
   potential_booked_ = potential;
   lost_booked_ = lost;

@@ -23,6 +23,11 @@ struct EnergyLedger {
   /// frictional forces, taken with the scheme's own quadrature, minus the energy they stored or
   /// the friction model dissipated. Shrinks with Δt as the scheme's order.
   double integration_error = 0.0;
+  /// What the contacts' laws have booked as leaving the mechanical energy at their commits:
+  /// friction, adhesion, plastic work and stiffness changes [J].
+  [[nodiscard]] double booked_losses() const noexcept {
+    return dissipated_friction + dissipated_adhesion + dissipated_plastic + stiffness_change;
+  }
   /// Mechanical energy plus everything dissipated minus work put in: constant to round-off
   /// whenever the scheme books its work exactly (Scheme::books_work_exactly()).
   [[nodiscard]] double balance() const noexcept {

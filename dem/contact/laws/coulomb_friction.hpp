@@ -110,4 +110,11 @@ struct SpringSliderResult {
   return 0.5 * stiffness * displacement.squaredNorm();
 }
 
+/// Energy of an incremental spring whose force history is F = −c σ (σ [m²], c the stiffness per
+/// unit contact radius [N/m²]) at today's stiffness k = c a [N/m]: |c σ|²/(2k) [J] (YADE's
+/// Hertz–Mindlin form; docs/physics.md "Energy ledger"); 0 for k ≤ 0.
+[[nodiscard]] inline double incremental_spring_energy(double c, double stiffness, const Vec3& sigma) noexcept {
+  return stiffness > 0.0 ? 0.5 * c * c * sigma.squaredNorm() / stiffness : 0.0;
+}
+
 }  // namespace dem::laws

@@ -37,12 +37,12 @@ namespace dem {
   const double eta_t = damping_ratio * t_in.damping_coefficient;
   const double cap = std::max(friction * t_in.limit_basis, 0.0);
   const double k_t = c * a;
-  const auto energy = [&](const Vec3& sigma) { return k_t > 0.0 ? 0.5 * c * c * sigma.squaredNorm() / k_t : 0.0; };
+  const auto energy = [&](const Vec3& sigma) { return laws::incremental_spring_energy(c, k_t, sigma); };
   next.tangential_stiffness = k_t;
   // The carried spring's energy at the last commit's stiffness less at today's: what the change
   // of k_t alone did to it (the ledger's stiffness_change; no stiffness kept: no ledger).
   const double k_then = in.committed.tangential_stiffness;
-  const double restiffened = k_then > 0.0 ? 0.5 * c * c * start.squaredNorm() / k_then - energy(start) : 0.0;
+  const double restiffened = k_then > 0.0 ? laws::incremental_spring_energy(c, k_then, start) - energy(start) : 0.0;
   Vec3 force = -c * integrated - eta_t * u_t;
   const double magnitude = force.norm();
   if (!(magnitude > cap)) {
@@ -69,7 +69,10 @@ namespace dem {
   TangentialResponse r = spring_coulomb_response(k, friction, damping_ratio, in, t_in, next);
   next.tangential_stiffness = k;
   const double k_then = in.committed.tangential_stiffness;
-  if (k_then > 0.0) r.stiffness_change = 0.5 * (k_then - k) * carried_slip(in).squaredNorm();
+  if (k_then > 0.0) {
+    const Vec3 carried = carried_slip(in);
+    r.stiffness_change = laws::spring_energy(k_then, carried) - laws::spring_energy(k, carried);
+  }
   return r;
 }
 
@@ -78,9 +81,9 @@ namespace dem {
 /// stiffness per unit contact radius), total form ½ k_then |ς|²; zero when no stiffness was kept.
 [[nodiscard]] inline double mindlin_committed_energy(double c, const ContactInput& in) noexcept {
   const double k_then = in.committed.tangential_stiffness;
-  if (!(k_then > 0.0)) return 0.0;
-  const double s2 = in.committed.tangential_slip.squaredNorm();
-  return in.policies.mindlin_form == MindlinForm::incremental ? 0.5 * c * c * s2 / k_then : 0.5 * k_then * s2;
+  const Vec3& slip = in.committed.tangential_slip;
+  return in.policies.mindlin_form == MindlinForm::incremental ? laws::incremental_spring_energy(c, k_then, slip)
+                                                               : laws::spring_energy(std::max(k_then, 0.0), slip);
 }
 
 /// Mixed parameters of a Mindlin tangential sub-model.
