@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "cases/core_wall.hpp"
 
+#include <array>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
+
+#include "dem/contact/mesh_topology.hpp"
 
 namespace cases {
 namespace {
@@ -11,7 +15,40 @@ dem::Vec3 to_vec(const Vector3& v) noexcept { return {v[0], v[1], v[2]}; }
 
 }  // namespace
 
-dem::Wall core_wall(const WallSpec& w) noexcept {
+std::vector<dem::MeshTopology> core_meshes(const Scene& scene, std::vector<dem::Wall>& walls) {
+  std::vector<dem::MeshTopology> out;
+  std::vector<std::uint32_t> renumber(scene.meshes.size(), dem::kNoMesh);
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    std::vector<std::array<dem::Vec3, 3>> facets;
+    std::size_t first = scene.walls.size();
+    for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+      const WallSpec& spec = scene.walls[w];
+      if (spec.mesh != m) continue;
+      if (facets.empty()) first = w;
+      if (w != first + facets.size()) {
+        throw std::invalid_argument("the facets of mesh " + scene.meshes[m].name + " are not consecutive walls");
+      }
+      facets.push_back({to_vec(spec.corners[0]), to_vec(spec.corners[1]), to_vec(spec.corners[2])});
+    }
+    if (facets.empty()) continue;  // none of its facets is in this scene
+    renumber[m] = static_cast<std::uint32_t>(out.size());
+    out.push_back(dem::build_mesh_topology(facets, static_cast<std::uint32_t>(first)));
+  }
+  for (dem::Wall& w : walls) {
+    if (w.mesh != dem::kNoMesh) w.mesh = renumber.at(w.mesh);
+  }
+  return out;
+}
+
+dem::Wall core_wall(const WallSpec& w) {
+  if (w.shape == dem::WallShape::triangle) {
+    dem::Wall out = dem::triangle_wall(to_vec(w.corners[0]), to_vec(w.corners[1]), to_vec(w.corners[2]));
+    out.velocity = to_vec(w.velocity);
+    out.material = static_cast<std::uint32_t>(w.material);
+    out.mesh = w.mesh ? static_cast<std::uint32_t>(*w.mesh) : dem::kNoMesh;
+    out.removed_at = w.removed_at.value_or(std::numeric_limits<double>::infinity());
+    return out;
+  }
   dem::Wall out{to_vec(w.point), to_vec(w.normal), to_vec(w.velocity), static_cast<std::uint32_t>(w.material)};
   out.shape = w.shape;
   out.axis_u = to_vec(w.axis_u);

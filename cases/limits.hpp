@@ -44,6 +44,10 @@ inline constexpr std::size_t kMaxMaterials = 256;
 /// every sphere at each neighbour-list build.
 inline constexpr std::size_t kMaxWalls = 256;
 
+/// Most mesh facets a scene may hold, all meshes together: each is a wall of its own, found for a
+/// sphere by a bounding-sphere test at every list build (docs/walls.md, "Meshes").
+inline constexpr std::size_t kMaxMeshFacets = 50000;
+
 /// Farthest a sphere may start from a periodic box, in box lengths along a periodic axis: the
 /// core counts periodic images in an int, and a sphere a million box lengths away has already
 /// lost six digits of its position.

@@ -13,7 +13,10 @@
 
 #include "cases/limits.hpp"
 #include "cases/loader_sections.hpp"
+#include "cases/mesh/stl_reader.hpp"
 #include "cases/names.hpp"
+#include "support/text_file.hpp"
+#include "support/sha256.hpp"
 
 namespace cases::loader {
 namespace {
@@ -31,7 +34,10 @@ constexpr auto kCylinderWallKeys = std::to_array<std::string_view>(
 constexpr auto kConeWallKeys = std::to_array<std::string_view>({"type", "name", "base", "axis", "height", "base_radius",
                                                             "top_radius", "material", "velocity", "rigid",
                                                             "remove_at", "in_preparation"});
-constexpr auto kWallTypes = std::to_array<std::string_view>({"plane", "box", "rectangle", "disc", "cylinder", "cone"});
+constexpr auto kMeshWallKeys = std::to_array<std::string_view>({"type", "name", "file", "scale", "translate", "material",
+                                                                "velocity", "rigid", "remove_at", "in_preparation"});
+constexpr auto kWallTypes =
+    std::to_array<std::string_view>({"plane", "box", "rectangle", "disc", "cylinder", "cone", "mesh"});
 constexpr auto kBoxFaces = std::to_array<std::string_view>({"x-", "x+", "y-", "y+", "z-", "z+"});
 constexpr auto kFieldKeys = std::to_array<std::string_view>({"gravity", "fluid"});
 constexpr auto kFluidKeys = std::to_array<std::string_view>(
@@ -143,6 +149,57 @@ WallSpec read_frustum(const Table& t, const Scene& scene, std::size_t index, boo
   return w;
 }
 
+/// A triangle mesh read from an STL file (ASCII or binary; path relative to the case file),
+/// scaled by `scale` (the file's unit in metres) and then moved by `translate` [m]: one triangle
+/// wall per facet, all of one material and velocity.
+std::vector<WallSpec> read_mesh(const Table& t, Scene& scene, std::size_t index) {
+  t.allow_only(kMeshWallKeys);
+  const WallSpec common = read_common(t, scene, index);
+  const Value file = t.require("file");
+  const std::string name = file.string();
+  if (name.empty()) file.fail("must name an STL file");
+  std::filesystem::path path(name);
+  if (path.is_relative()) path = std::filesystem::path(scene.source_path).parent_path() / path;
+  double scale = 1.0;
+  if (const auto v = t.find("scale")) scale = v->number(positive_range());
+  Vector3 shift{};
+  if (const auto v = t.find("translate")) shift = v->vector3();
+  std::string bytes;
+  TriangleMesh mesh;
+  try {
+    bytes = support::read_file(path);
+    mesh = parse_stl(bytes, path.string());
+  } catch (const std::exception& e) {
+    file.fail(e.what());
+  }
+  MeshSpec spec{common.name, name, support::sha256_hex(bytes), mesh.triangles.size()};
+  std::vector<WallSpec> walls;
+  walls.reserve(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    WallSpec w = common;
+    w.name = fmt::format("{}.{}", common.name, f);
+    w.shape = dem::WallShape::triangle;
+    w.mesh = scene.meshes.size();
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (std::size_t a = 0; a < 3; ++a) w.corners[k][a] = scale * mesh.triangles[f].vertex[k][a] + shift[a];
+    }
+    const Vector3 e1{w.corners[1][0] - w.corners[0][0], w.corners[1][1] - w.corners[0][1], w.corners[1][2] - w.corners[0][2]};
+    const Vector3 e2{w.corners[2][0] - w.corners[0][0], w.corners[2][1] - w.corners[0][1], w.corners[2][2] - w.corners[0][2]};
+    const Vector3 n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+    const double area2 = length(n);
+    if (!(area2 > 0.0) || !std::isfinite(area2)) {
+      file.fail(fmt::format("triangle {} has no area once scaled by {:.6g} and moved by [{:.6g}, {:.6g}, {:.6g}] "
+                            "(its corners coincide in double precision)",
+                            f + 1, scale, shift[0], shift[1], shift[2]));
+    }
+    w.point = w.corners[0];
+    w.normal = {n[0] / area2, n[1] / area2, n[2] / area2};
+    walls.push_back(std::move(w));
+  }
+  scene.meshes.push_back(std::move(spec));
+  return walls;
+}
+
 /// The inner faces of an axis-aligned box, normals pointing inwards, minus the open ones.
 std::vector<WallSpec> read_box(const Table& t, const Scene& scene, std::size_t index) {
   t.allow_only(kBoxWallKeys);
@@ -237,6 +294,8 @@ void read_walls(const Table& root, Scene& scene) {
       scene.walls.push_back(read_rectangle(t, scene, index));
     } else if (type == "disc") {
       scene.walls.push_back(read_disc(t, scene, index));
+    } else if (type == "mesh") {
+      for (auto& w : read_mesh(t, scene, index)) scene.walls.push_back(std::move(w));
     } else {
       scene.walls.push_back(read_frustum(t, scene, index, type == "cylinder"));
     }
@@ -249,9 +308,15 @@ void read_walls(const Table& root, Scene& scene) {
         t.fail("in_preparation", "false with remove_at = 0 makes a wall that never stands; drop the wall");
       }
     }
-    if (scene.walls.size() > kMaxWalls) {
+    const auto facets = static_cast<std::size_t>(std::count_if(
+        scene.walls.begin(), scene.walls.end(), [](const WallSpec& w) { return w.mesh.has_value(); }));
+    if (scene.walls.size() - facets > kMaxWalls) {
       entry.fail(fmt::format("makes {} walls (a box counts its faces), more than the limit of {}",
-                             scene.walls.size(), kMaxWalls));
+                             scene.walls.size() - facets, kMaxWalls));
+    }
+    if (facets > kMaxMeshFacets) {
+      entry.fail(fmt::format("makes {} mesh facets (all meshes together), more than the limit of {}", facets,
+                             kMaxMeshFacets));
     }
     ++index;
   }

@@ -9,6 +9,7 @@ std::string_view wall_shape_name(const WallSpec& wall) noexcept {
     case dem::WallShape::rectangle: return "rectangle";
     case dem::WallShape::annulus: return "disc";
     case dem::WallShape::frustum: return wall.size_u == wall.size_v ? "cylinder" : "cone";
+    case dem::WallShape::triangle: return "mesh";
   }
   return "plane";
 }

@@ -63,13 +63,25 @@ struct WallSpec {
   double size_u = 0.0;  ///< rectangle: half size along axis_u; disc: hole radius; cylinder, cone: base radius [m]
   double size_v = 0.0;  ///< rectangle: half size along normal × axis_u; disc: radius; cylinder, cone: top radius [m]
   double length = 0.0;  ///< cylinder, cone: axial length [m]
+  std::array<Vector3, 3> corners{};   ///< triangle (a mesh facet): its corners, in the file's order [m]
+  std::optional<std::size_t> mesh{};  ///< triangle: the mesh it belongs to (index into Scene::meshes)
   std::optional<double> removed_at{};  ///< the wall is removed at this time [s] (an orifice that opens)
   /// Whether the wall stands through the preparation stages; false: it is placed when the run
   /// starts (a lid or a channel closed over a bed poured without it).
   bool in_preparation = true;
 };
 
-/// The case-file name of a wall's shape: "plane", "rectangle", "disc", "cylinder" or "cone".
+/// A mesh wall as the case file gave it (docs/walls.md, "Meshes"): its facets are consecutive
+/// triangle walls of the scene, each naming this mesh.
+struct MeshSpec {
+  std::string name;
+  std::string file;     ///< the STL file as the case file names it
+  std::string sha256;   ///< of the file's bytes
+  std::size_t facets = 0;
+};
+
+/// The case-file name of a wall's shape: "plane", "rectangle", "disc", "cylinder", "cone" or
+/// "mesh" (a mesh's facet).
 [[nodiscard]] std::string_view wall_shape_name(const WallSpec& wall) noexcept;
 
 /// One rectangular zone of plug flow (thesis §6.5).
@@ -258,6 +270,7 @@ struct Scene {
   std::vector<ParticleSpec> particles;        ///< [[particles]], then each [[populations]] entry's
   std::vector<std::size_t> population_first;  ///< index of the first particle of each population
   std::vector<WallSpec> walls;
+  std::vector<MeshSpec> meshes;               ///< mesh walls; their facets are among `walls`
   Vector3 gravity{};
   std::optional<FluidSpec> fluid;
 

@@ -29,12 +29,21 @@ std::vector<int> snapshot_contacts(const cases::Scene& scene, const cases::Snaps
   for (std::size_t i = 0; i < n; ++i) radii[i] = scene.particles.at(i).radius;
   const std::vector<std::uint32_t> spheres = comparison::contact_counts(snap.position, radii);
   std::vector<int> count(spheres.begin(), spheres.end());
-  for (const cases::WallSpec& spec : scene.walls) {
-    const dem::Wall w = cases::core_wall(spec);
+  std::vector<dem::Wall> walls;
+  for (const cases::WallSpec& spec : scene.walls) walls.push_back(cases::core_wall(spec));
+  const std::vector<dem::MeshTopology> meshes = cases::core_meshes(scene, walls);
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const dem::Wall& w = walls[k];
     if (!w.present(snap.time)) continue;
     for (std::size_t i = 0; i < n; ++i) {
-      const auto& x = snap.position[i];
-      if (dem::wall_frame(w, dem::Vec3(x[0], x[1], x[2]), snap.time).distance < radii[i]) ++count[i];
+      const dem::Vec3 x(snap.position[i][0], snap.position[i][1], snap.position[i][2]);
+      if (!(dem::wall_frame(w, x, snap.time).distance < radii[i])) continue;
+      // A mesh counts a point that several facets share once, as the core does.
+      if (w.mesh != dem::kNoMesh) {
+        const dem::MeshTopology& m = meshes[w.mesh];
+        if (!m.counts(walls, static_cast<std::uint32_t>(k - m.first_wall), x, snap.time)) continue;
+      }
+      ++count[i];
     }
   }
   return count;

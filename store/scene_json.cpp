@@ -133,7 +133,11 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
   for (const auto& w : s.walls) {
     Json wall = {{"point", w.point}, {"normal", w.normal}, {"velocity", w.velocity}, {"material", w.material}};
     if (w.rigid) wall["rigid"] = true;  // only when set: older scenes keep their fingerprints
-    if (w.shape != dem::WallShape::plane) {
+    if (w.shape == dem::WallShape::triangle) {
+      wall["shape"] = "triangle";
+      wall["corners"] = w.corners;
+      if (w.mesh) wall["mesh"] = s.meshes.at(*w.mesh).name;
+    } else if (w.shape != dem::WallShape::plane) {
       wall["shape"] = std::string(cases::wall_shape_name(w));
       wall["axis_u"] = w.axis_u;
       wall["size_u"] = w.size_u;
@@ -145,6 +149,13 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
     walls.push_back(std::move(wall));
   }
   j["walls"] = walls;
+  if (!s.meshes.empty()) {  // written only when present: older scenes keep their fingerprints
+    Json meshes = Json::array();
+    for (const auto& m : s.meshes) {
+      meshes.push_back({{"name", m.name}, {"file", m.file}, {"sha256", m.sha256}, {"facets", m.facets}});
+    }
+    j["meshes"] = meshes;
+  }
   // Written only when set, so that the fingerprints of scenes without them stay as they were.
   if (s.domain.any_periodic()) {
     j["domain"] = {{"min", s.domain.min}, {"max", s.domain.max}, {"periodic", s.domain.periodic}};

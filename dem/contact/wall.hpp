@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "dem/contact/triangle.hpp"
 #include "dem/core/vector.hpp"
 
 namespace dem {
@@ -16,21 +17,26 @@ enum class WallShape : std::uint8_t {
   rectangle,  ///< bounded thin plate: centre, normal, in-plane axis u and half sizes along u, v = n × u
   annulus,    ///< flat ring (a disc when the inner radius is 0): a floor with a round orifice
   frustum,    ///< open lateral surface of a cone frustum about an axis (a cylinder when both radii agree)
+  triangle,   ///< one facet of a mesh wall: corner 0, unit normal, unit u along edge 0, corners 1 and 2 in (u, v)
 };
+
+/// Marks a wall that belongs to no mesh (Wall::mesh).
+inline constexpr std::uint32_t kNoMesh = 0xffffffffU;
 
 /// A rigid wall: its shape, where it is at t = 0, a constant velocity, its material and the
 /// time it is removed (an orifice plate that opens). Bounded shapes are thin and two-sided:
 /// a sphere touches the nearest point of the surface, edges and rims included.
 struct Wall {
-  Vec3 point;   ///< plane: a point on it; rectangle, annulus: centre; frustum: axis point of its first end [m]
-  Vec3 normal;  ///< plane: unit normal into the domain; rectangle, annulus: unit normal; frustum: unit axis
+  Vec3 point;   ///< plane: a point on it; rectangle, annulus: centre; frustum: axis point of its first end; triangle: corner 0 [m]
+  Vec3 normal;  ///< plane: unit normal into the domain; rectangle, annulus, triangle: unit normal; frustum: unit axis
   Vec3 velocity = Vec3::Zero();  ///< [m/s]
   std::uint32_t material = 0;
   WallShape shape = WallShape::plane;
-  Vec3 axis_u = Vec3::Zero();  ///< rectangle: unit in-plane axis u, orthogonal to the normal
-  double size_u = 0.0;         ///< rectangle: half size along u; annulus: inner radius; frustum: radius at the first end [m]
-  double size_v = 0.0;         ///< rectangle: half size along v; annulus: outer radius; frustum: radius at the second end [m]
-  double length = 0.0;         ///< frustum: axial length [m]
+  std::uint32_t mesh = kNoMesh;  ///< triangle: the mesh it belongs to (index into the force field's meshes)
+  Vec3 axis_u = Vec3::Zero();  ///< rectangle, triangle: unit in-plane axis u, orthogonal to the normal
+  double size_u = 0.0;         ///< rectangle: half size along u; annulus: inner radius; frustum: radius at the first end; triangle: corner 2's u [m]
+  double size_v = 0.0;         ///< rectangle: half size along v; annulus: outer radius; frustum: radius at the second end; triangle: corner 2's v (> 0) [m]
+  double length = 0.0;         ///< frustum: axial length; triangle: corner 1's u (the length of edge 0) [m]
   double removed_at = std::numeric_limits<double>::infinity();  ///< the wall is gone from this time on [s]
 
   /// Whether the wall exists at time t.
@@ -82,6 +88,13 @@ struct WallFrame {
       const double tau = std::clamp((s * w.length + (rho - w.size_u) * dr) / (w.length * w.length + dr * dr), 0.0, 1.0);
       nearest = tau * w.length * w.normal + (w.size_u + tau * dr) * radial;
       surface_normal = (w.length * radial - dr * w.normal).normalized();
+      break;
+    }
+    case WallShape::triangle: {
+      const Vec3 v = w.normal.cross(w.axis_u);
+      const TriangleNearest p =
+          nearest_on_triangle(PlaneTriangle{w.length, w.size_u, w.size_v}, rel.dot(w.axis_u), rel.dot(v), 0.0);
+      nearest = p.u * w.axis_u + p.v * v;
       break;
     }
   }

@@ -62,6 +62,15 @@ void add_energies(EnergyTotals& t, const ContactOutcome& c) noexcept {
   t.stiffness += c.stiffness_change;
 }
 
+/// The geometry g of sphere p moved along its normal to twice the reach `reach` of its wall:
+/// where a contact ends with nothing acting.
+ContactGeometry beyond_reach(ContactGeometry g, const SphereState& p, double reach) noexcept {
+  g.distance = 2.0 * reach;
+  g.overlap = p.radius - g.distance;
+  g.effect_overlap = p.effect_radius - g.distance;
+  return g;
+}
+
 }  // namespace
 
 ContactForceField::ContactForceField(const ParticleProperties& props, const PairTable& table,
@@ -79,6 +88,15 @@ ContactForceField::ContactForceField(const ParticleProperties& props, const Pair
   }
   motion_position_.resize(setup_.motions.size());
   motion_velocity_.resize(setup_.motions.size());
+  for (std::size_t w = 0; w < setup_.walls.size(); ++w) {
+    const Wall& wall = setup_.walls[w];
+    if (wall.mesh == kNoMesh) continue;
+    if (wall.shape != WallShape::triangle || wall.mesh >= setup_.meshes.size() ||
+        w < setup_.meshes[wall.mesh].first_wall ||
+        w - setup_.meshes[wall.mesh].first_wall >= setup_.meshes[wall.mesh].facets.size()) {
+      throw ModelError("walls", fmt::format("wall {} names mesh {}, which does not list it as a facet", w, wall.mesh));
+    }
+  }
   half_reach_ = half_reaches(props, table);
   contact_spheres_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -137,6 +155,13 @@ SphereState ContactForceField::sphere(const KinematicState& s, std::uint32_t i) 
                      props_.effect_radius[i],
                      props_.inverse_mass[i],
                      props_.charge[i]};
+}
+
+bool ContactForceField::mesh_skips(std::uint32_t w, const Vec3& x, double t) const {
+  const Wall& wall = setup_.walls[w];
+  if (wall.mesh == kNoMesh) return false;
+  const MeshTopology& mesh = setup_.meshes[wall.mesh];
+  return !mesh.counts(setup_.walls, w - mesh.first_wall, x, t);
 }
 
 double ContactForceField::wall_reach_of(std::uint32_t i, std::uint32_t w) const noexcept {
@@ -443,13 +468,17 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
         for (std::uint32_t k = wall_list_.begin(i); k < wall_end; ++k) {
           WallEntry& e = wall_entries[k];
           const Wall& wall = setup_.walls[e.wall];
-          const ContactGeometry g = wall_geometry(p, wall, t_now, lever);
+          ContactGeometry g = wall_geometry(p, wall, t_now, lever);
           const bool removed = !wall.present(t_now);
-          if (removed || g.distance > wall_reach_of(i, e.wall)) {
+          const double reach = wall_reach_of(i, e.wall);
+          const bool skipped = !removed && g.distance <= reach && mesh_skips(e.wall, p.position, t_now);
+          if (removed || skipped || g.distance > reach) {
             if (commit && track && e.active != 0) {
               // A contact of the last commit that ends here. Beyond reach, the ledger books what its
               // springs still held (the evaluation adds no force: nothing acts there); under a
-              // removed wall, what they held leaves with the wall.
+              // removed wall, what they held leaves with the wall. A mesh facet whose contact
+              // passes to a neighbour ends as if its sphere had left: placed beyond reach.
+              if (skipped) g = beyond_reach(g, p, reach);
               const ContactOutcome o = evaluate_contact(table_.law(props_.material[i], wall.material), g,
                                                         assemble(e.slip, e.active, wall_ext, k), elapsed);
               if (removed && o.interacting) sums.removed += o.elastic_energy + o.cohesive_energy;
@@ -523,6 +552,7 @@ void ContactForceField::observe(const KinematicState& state, double elapsed) {
       const ContactGeometry g = wall_geometry(sphere(state, o.p), wall, state.time, setup_.wall_lever_arm);
       o.overlap = g.overlap;
       if (props_.fixed[o.p] != 0 || !wall.present(state.time) || g.distance > wall_reach_of(o.p, o.q)) continue;
+      if (mesh_skips(o.q, sphere(state, o.p).position, state.time)) continue;
       const std::int64_t k = wall_list_.find(o.p, o.q);
       const ContactHistory h = k >= 0 ? wall_list_.history(static_cast<std::size_t>(k)) : ContactHistory{};
       const ContactOutcome c = evaluate_contact(table_.law(props_.material[o.p], wall.material), g, h, elapsed);

@@ -10,6 +10,7 @@
 #include "dem/contact/contact_geometry.hpp"
 #include "dem/contact/contact_history.hpp"
 #include "dem/contact/contact_model.hpp"
+#include "dem/contact/mesh_topology.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "dem/domain/periodic_box.hpp"
 #include "dem/fields/external_fields.hpp"
@@ -37,6 +38,7 @@ struct ContactObservation {
 /// What the force field acts on, beyond the particles and pair laws.
 struct ForceFieldSetup {
   std::vector<Wall> walls;
+  std::vector<MeshTopology> meshes;       ///< connectivity of the mesh walls (Wall::mesh indexes it)
   ExternalFields fields;
   std::vector<PrescribedMotion> motions;  ///< for fixed spheres that move
   WallLeverArm wall_lever_arm = WallLeverArm::contact_point;
@@ -111,6 +113,8 @@ class ContactForceField final : public ForceEvaluator {
   [[nodiscard]] const std::vector<PrescribedMotion>& motions() const noexcept { return setup_.motions; }
   /// Walls.
   [[nodiscard]] const std::vector<Wall>& walls() const noexcept { return setup_.walls; }
+  /// Connectivity of the mesh walls.
+  [[nodiscard]] const std::vector<MeshTopology>& meshes() const noexcept { return setup_.meshes; }
   /// The periodic box.
   [[nodiscard]] const PeriodicBox& box() const noexcept { return setup_.box; }
   /// Neighbour-list settings (skin resolved).
@@ -133,6 +137,9 @@ class ContactForceField final : public ForceEvaluator {
   void permute(std::span<const std::uint32_t> order, const KinematicState& state);
 
  private:
+  /// Whether wall w is a mesh facet whose contact with a sphere centred at x at time t another
+  /// facet counts, or that is no local minimum of the mesh's distance (MeshTopology::counts).
+  [[nodiscard]] bool mesh_skips(std::uint32_t w, const Vec3& x, double t) const;
   /// A kick folded into the accelerations' pass: u += kick·a (ω += kick·α when `rotation`).
   struct FoldedKick {
     double* velocity = nullptr;  ///< null: no kick

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "dem/neighbors/wall_list.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace dem {
 
 void WallList::build(std::span<const PackedSphere> spheres, std::span<const std::uint8_t> still,
@@ -17,6 +20,22 @@ void WallList::build(std::span<const PackedSphere> spheres, std::span<const std:
     }
   }
 
+  // A triangle (a mesh facet) lies within the sphere about its centroid through its corners: a
+  // centre farther than that sphere's radius plus the reach skips the exact test.
+  bounds_.resize(walls.size());
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const Wall& wall = walls[w];
+    if (wall.shape != WallShape::triangle) {
+      bounds_[w] = {Vec3::Zero(), std::numeric_limits<double>::infinity()};
+      continue;
+    }
+    const Vec3 v = wall.normal.cross(wall.axis_u);
+    const Vec3 c1 = wall.length * wall.axis_u;
+    const Vec3 c2 = wall.size_u * wall.axis_u + wall.size_v * v;
+    const Vec3 centroid = (c1 + c2) / 3.0;
+    const double radius = std::max({centroid.norm(), (c1 - centroid).norm(), (c2 - centroid).norm()});
+    bounds_[w] = {wall.point + t * wall.velocity + centroid, radius * (1.0 + 1e-12)};
+  }
   const auto n = static_cast<std::uint32_t>(spheres.size());
   offsets_.resize(n + 1);
   entries_.clear();
@@ -27,7 +46,9 @@ void WallList::build(std::span<const PackedSphere> spheres, std::span<const std:
       for (std::uint32_t w = 0; w < walls.size(); ++w) {
         const Wall& wall = walls[w];
         if (!wall.present(t)) continue;
-        if (wall_frame(wall, x, t).distance < reach(i, w) + skin) entries_.push_back({w, 0, Vec3::Zero()});
+        const double within = reach(i, w) + skin;
+        if ((x - bounds_[w].centre).norm() >= bounds_[w].radius + within) continue;
+        if (wall_frame(wall, x, t).distance < within) entries_.push_back({w, 0, Vec3::Zero()});
       }
     }
     offsets_[i + 1] = static_cast<std::uint32_t>(entries_.size());
@@ -64,7 +85,8 @@ ContactHistory WallList::history(std::size_t k) const noexcept {
 
 std::size_t WallList::bytes() const noexcept {
   return offsets_.capacity() * sizeof(std::uint32_t) + entries_.capacity() * sizeof(WallEntry) +
-         extended_.capacity() * sizeof(ExtendedHistory) + carried_.capacity() * sizeof(Carried);
+         extended_.capacity() * sizeof(ExtendedHistory) + carried_.capacity() * sizeof(Carried) +
+         bounds_.capacity() * sizeof(Bounds);
 }
 
 }  // namespace dem

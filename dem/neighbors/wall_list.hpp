@@ -58,6 +58,12 @@ class WallList {
   std::vector<WallEntry> entries_;
   std::vector<ExtendedHistory> extended_;
   std::vector<Carried> carried_;
+  /// A sphere holding a wall's surface at the build's time (infinite for every shape but the triangle).
+  struct Bounds {
+    Vec3 centre;
+    double radius;
+  };
+  std::vector<Bounds> bounds_;
 };
 
 }  // namespace dem

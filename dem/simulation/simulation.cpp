@@ -26,7 +26,7 @@ Simulation::Simulation(const SimulationSetup& setup)
                                                      setup.model)),
       field_(std::make_unique<ContactForceField>(
           props_, *table_,
-          ForceFieldSetup{setup.walls, setup.fields, setup.motions,
+          ForceFieldSetup{setup.walls, setup.meshes, setup.fields, setup.motions,
                           setup.model.wall_lever_arm,
                           setup.model.pair_lever_arm, setup.box,
                           setup.neighbors, setup.threads, setup.track_energy})),

@@ -21,6 +21,7 @@ struct SimulationSetup {
   ModelChoice model;
   ExternalFields fields;                  ///< gravity and fluid
   std::vector<Wall> walls;
+  std::vector<MeshTopology> meshes;       ///< connectivity of the mesh walls (Wall::mesh indexes it)
   std::vector<PrescribedMotion> motions;  ///< for fixed spheres that move
   SchemeId scheme = SchemeId::velocity_verlet;
   SchemeSettings scheme_settings;

@@ -58,6 +58,7 @@ CoreSetup core_setup(const PreparedScene& prepared, int threads) {
   for (const auto& w : scene.walls) {
     s.walls.push_back(cases::core_wall(w));
   }
+  s.meshes = cases::core_meshes(scene, s.walls);
   s.fields.gravity = to_vec(scene.gravity);
   for (std::size_t k = 0; k < 3; ++k) {
     const auto a = static_cast<Eigen::Index>(k);

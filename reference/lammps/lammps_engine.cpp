@@ -60,6 +60,7 @@ Support LammpsEngine::supports(const PreparedScene& prepared) const {
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     for (auto& reason : lammps::unmapped_wall(scene.walls[w], w)) s.reasons.push_back(reason);
   }
+  for (const auto& mesh : scene.meshes) s.reasons.push_back(lammps::unmapped_mesh(mesh));
   for (const auto& [p, w] : scene.output.trace_walls) {
     if (!lammps::wall_plane(scene.walls.at(w))) {
       s.reasons.push_back(fmt::format("LAMMPS driver: the traced contact of particle {} with wall {} ('{}'): only a "

@@ -60,7 +60,8 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
           "LAMMPS driver: wall {} ('{}') is a rectangle; fix wall/gran/region has no thin plate (a block region "
           "has a thickness and one side)",
           index, wall.name));
-      break;
+      break;    case dem::WallShape::triangle:
+      return reasons;  // a mesh's facets: one reason for the whole mesh (unmapped_mesh)
   }
   if (wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0) {
     reasons.push_back(fmt::format(
@@ -75,6 +76,13 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
         index, wall.name, *wall.removed_at));
   }
   return reasons;
+}
+
+std::string unmapped_mesh(const cases::MeshSpec& mesh) {
+  return fmt::format("LAMMPS driver: wall '{}' is a triangle mesh ({} facets from {}); this LAMMPS has no mesh wall "
+                     "(fix wall/gran takes planes and fix wall/gran/region its region styles: block, cone, "
+                     "cylinder, plane, prism, sphere and their unions)",
+                     mesh.name, mesh.facets, mesh.file);
 }
 
 bool wall_in_run(const cases::WallSpec& wall) noexcept { return !(wall.removed_at && *wall.removed_at <= 0.0); }

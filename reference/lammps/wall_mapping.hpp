@@ -26,6 +26,9 @@ std::optional<WallPlane> wall_plane(const cases::WallSpec& wall);
 /// wall removed at t ≤ 0, which the run never meets (wall_in_run).
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index);
 
+/// Why this LAMMPS cannot take a mesh wall (unmapped_wall leaves its facets to this one reason).
+[[nodiscard]] std::string unmapped_mesh(const cases::MeshSpec& mesh);
+
 /// False for a wall removed at t ≤ 0: it stood only through the preparation (a shutter), and the
 /// deck leaves it out.
 [[nodiscard]] bool wall_in_run(const cases::WallSpec& wall) noexcept;

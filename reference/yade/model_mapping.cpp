@@ -258,6 +258,12 @@ void check_mindlin_modulus(const cases::Scene& scene, const dem::PairLaw& law, s
 /// Walls: YADE's utils.wall is an axis-aligned, immobile plane.
 void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
   for (const auto& w : scene.walls) {
+    if (w.mesh) {  // one reason for all the facets of a mesh
+      add_reason(reasons, fmt::format("YADE driver: wall '{}' is a triangle mesh; only plane walls (utils.wall) are "
+                                      "mapped",
+                                      scene.meshes.at(*w.mesh).name));
+      continue;
+    }
     if (w.shape != dem::WallShape::plane) {
       add_reason(reasons, fmt::format("YADE driver: wall '{}' is a {}; only plane walls (utils.wall) are mapped",
                                       w.name, cases::wall_shape_name(w)));

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "dem/contact/mesh_topology.hpp"
 #include "dem/contact/wall.hpp"
 #include "wall_builders.hpp"
 
@@ -97,6 +98,16 @@ bool on_surface(const Wall& w, const Vec3& y, double tol) {
       const double expected = w.size_u + (w.size_v - w.size_u) * s / w.length;
       return s > -tol && s < w.length + tol && std::abs(rho - expected) < tol;
     }
+    case WallShape::triangle: {
+      const Vec3 v = w.normal.cross(w.axis_u);
+      const double a = rel.dot(w.axis_u);
+      const double b = rel.dot(v);
+      // Inside the three edge lines (anticlockwise corners (0, 0), (L, 0), (cu, cv)).
+      const double e1 = (w.size_u - w.length) * b - w.size_v * (a - w.length);
+      const double e2 = w.size_v * a - w.size_u * b;
+      const double scale = w.length + std::hypot(w.size_u, w.size_v);
+      return std::abs(rel.dot(w.normal)) < tol && b > -tol && e1 > -tol * scale && e2 > -tol * scale;
+    }
   }
   return false;
 }
@@ -121,6 +132,14 @@ Vec3 surface_sample(const Wall& w, std::mt19937_64& rng) {
       const double rho = w.size_u + (w.size_v - w.size_u) * s;
       return w.point + s * w.length * w.normal + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
     }
+    case WallShape::triangle: {
+      const Vec3 v = w.normal.cross(w.axis_u);
+      const double r1 = std::sqrt(unit(rng));
+      const double r2 = unit(rng);
+      const Vec3 c1 = w.length * w.axis_u;
+      const Vec3 c2 = w.size_u * w.axis_u + w.size_v * v;
+      return w.point + r1 * (1.0 - r2) * c1 + r1 * r2 * c2;
+    }
     case WallShape::plane: break;
   }
   return w.point;
@@ -142,13 +161,19 @@ TEST(WallFrame, IsTheNearestPointOfTheSurfaceAtRandomPoints) {
     const Vec3 n = random_direction(rng);
     const Vec3 centre(unit(rng), unit(rng), unit(rng));
     Wall w;
-    switch (trial % 4) {
+    switch (trial % 5) {
       case 0: w = rectangle(centre, n, dem::any_orthogonal(n), 0.1 + unit(rng), 0.1 + unit(rng)); break;
       case 1: w = annulus(centre, n, 0.8 * unit(rng), 1.0 + unit(rng)); break;
       case 2: w = frustum(centre, n, 0.2 + 2.0 * unit(rng), 0.5 + unit(rng), 0.5 + unit(rng)); break;
-      default: w = frustum(centre, n, 0.2 + 2.0 * unit(rng), 0.0, 0.5 + unit(rng)); break;  // a pointed cone
+      case 3: w = frustum(centre, n, 0.2 + 2.0 * unit(rng), 0.0, 0.5 + unit(rng)); break;  // a pointed cone
+      default: {  // a triangle with random corners, obtuse ones among them
+        const Vec3 a = centre + Vec3(unit(rng), unit(rng), unit(rng)) - Vec3::Constant(0.5);
+        const Vec3 b = centre + Vec3(unit(rng), unit(rng), unit(rng)) - Vec3::Constant(0.5);
+        w = dem::triangle_wall(centre, a, b);
+        break;
+      }
     }
-    if (trial % 4 == 0) {  // turn the rectangle's first side by a random angle in its plane
+    if (trial % 5 == 0) {  // turn the rectangle's first side by a random angle in its plane
       const double a = 2.0 * std::numbers::pi * unit(rng);
       w.axis_u = std::cos(a) * w.axis_u + std::sin(a) * n.cross(w.axis_u);
     }

@@ -88,7 +88,10 @@ void check_setting(const cases::Scene& s, std::vector<std::string>& out) {
   for (const auto& m : s.materials) {
     if (!(m.density > 0.0) || !(m.density <= cases::kMaxDensity)) out.push_back(fmt::format("density {}", m.density));
   }
-  if (s.walls.size() > cases::kMaxWalls) out.push_back(fmt::format("{} walls", s.walls.size()));
+  std::size_t facets = 0;
+  for (const auto& w : s.walls) facets += w.mesh ? 1 : 0;
+  if (s.walls.size() - facets > cases::kMaxWalls) out.push_back(fmt::format("{} walls", s.walls.size() - facets));
+  if (facets > cases::kMaxMeshFacets) out.push_back(fmt::format("{} mesh facets", facets));
   for (const auto& w : s.walls) {
     if (w.material >= s.materials.size() || !finite(w.point) || std::fabs(norm(w.normal) - 1.0) > 1e-9 ||
         !(norm(w.velocity) < cases::kSpeedOfLight) || !wall_name(w.name)) {

@@ -201,6 +201,18 @@ TEST(LammpsWallMapping, TiltedOrMovingWallsAreNotMappedWithReasons) {
   EXPECT_NE(reasons[1].find("moves"), std::string::npos);
 }
 
+TEST(LammpsWallMapping, AMeshIsOneReasonForAllItsFacets) {
+  cases::WallSpec facet;
+  facet.name = "hopper.7";
+  facet.shape = dem::WallShape::triangle;
+  facet.mesh = 0;
+  EXPECT_TRUE(reference::lammps::unmapped_wall(facet, 9).empty());  // left to the mesh's reason
+  const cases::MeshSpec mesh{"hopper", "cone.stl", "", 512};
+  const std::string reason = reference::lammps::unmapped_mesh(mesh);
+  EXPECT_NE(reason.find("'hopper' is a triangle mesh (512 facets from cone.stl)"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("no mesh wall"), std::string::npos) << reason;
+}
+
 TEST(LammpsPrescribedMotion, PiecewiseDisplacementClampsEachStretch) {
   const std::vector<cases::MotionSegmentSpec> motion{{0.18, {-1e-3, 0.0, 0.0}},
                                                      {0.0, {1e-3, 0.0, 0.0}}};

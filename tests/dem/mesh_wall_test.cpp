@@ -1,0 +1,330 @@
+// SPDX-License-Identifier: MIT
+// Mesh walls: a sphere feels a triangulated surface as the surface itself — one contact per
+// point however many facets meet there. A flat floor cut into irregular triangles (fans, seams,
+// corners) pushes like a plane at random places and exactly on its seams and corners; outside a
+// subdivided cube a sphere feels the one nearest point of the solid; inside it, the faces it
+// touches and never an edge; and a sphere sliding over the seams of a floor without friction
+// follows the plane's trajectory.
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "dem/contact/mesh_topology.hpp"
+#include "dem/simulation/simulation.hpp"
+
+namespace mesh_wall_test {
+
+using dem::Vec3;
+using Facet = std::array<Vec3, 3>;
+
+constexpr double kStiffness = 2e3;  // N/m
+constexpr double kRadius = 3e-4;    // m
+
+dem::MaterialProperties elastic() {
+  dem::MaterialProperties m;
+  m.name = "elastic";
+  m.density = 2500.0;
+  m.normal_stiffness = kStiffness;
+  return m;
+}
+
+/// One sphere of radius r at x with velocity u, no gravity, elastic frictionless linear law.
+dem::SimulationSetup one_sphere(const Vec3& x, double r, const Vec3& u = Vec3::Zero()) {
+  dem::SimulationSetup s;
+  s.materials = {elastic()};
+  s.particles.push_back({r, r, 2500.0, 0, x, u, Vec3::Zero(), false});
+  s.timestep = 1e-6;
+  s.scheme_settings.rotation = false;
+  return s;
+}
+
+/// `s` with the facets as one mesh wall (after its other walls).
+void add_mesh(dem::SimulationSetup& s, const std::vector<Facet>& facets) {
+  const auto first = static_cast<std::uint32_t>(s.walls.size());
+  for (const Facet& f : facets) {
+    dem::Wall w = dem::triangle_wall(f[0], f[1], f[2]);
+    w.mesh = static_cast<std::uint32_t>(s.meshes.size());
+    s.walls.push_back(w);
+  }
+  s.meshes.push_back(dem::build_mesh_topology(facets, first));
+}
+
+/// The force on the single sphere at t = 0.
+Vec3 force_at_start(const dem::SimulationSetup& s) {
+  const dem::Simulation sim(s);
+  return sim.force_field().forces().col(0);
+}
+
+/// Corners of an n × n grid over [0, n·h]² at z = 0, the interior ones moved in the plane by up
+/// to a quarter cell, and its cells cut into triangles: diagonals alternating, and every fourth
+/// cell a fan of four around its centre (a corner shared by eight facets nearby).
+struct Floor {
+  std::vector<Facet> facets;
+  std::vector<Vec3> corners;  ///< every corner, cell centres of fans included
+};
+
+Floor jittered_floor(int n, double h, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> jitter(-0.25 * h, 0.25 * h);
+  std::vector<Vec3> grid;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const bool inner = i > 0 && j > 0 && i < n && j < n;
+      grid.emplace_back(i * h + (inner ? jitter(rng) : 0.0), j * h + (inner ? jitter(rng) : 0.0), 0.0);
+    }
+  }
+  const auto at = [&](int i, int j) { return grid[static_cast<std::size_t>(j * (n + 1) + i)]; };
+  Floor floor{{}, grid};
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const Vec3 a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+      if ((i + 2 * j) % 4 == 3) {
+        const Vec3 m = 0.25 * (a + b + c + d);
+        floor.corners.push_back(m);
+        floor.facets.insert(floor.facets.end(), {Facet{a, b, m}, Facet{b, c, m}, Facet{c, d, m}, Facet{d, a, m}});
+      } else if ((i + j) % 2 == 0) {
+        floor.facets.insert(floor.facets.end(), {Facet{a, b, c}, Facet{a, c, d}});
+      } else {
+        floor.facets.insert(floor.facets.end(), {Facet{a, b, d}, Facet{b, c, d}});
+      }
+    }
+  }
+  return floor;
+}
+
+/// Turns and moves a point: rotation R, then translation t.
+struct Placement {
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Vec3 shift = Vec3::Zero();
+  [[nodiscard]] Vec3 operator()(const Vec3& x) const { return rotation * x + shift; }
+};
+
+/// Compares the mesh floor with a plane at the same place, for a sphere above the floor point
+/// (a, b) at height z, under placement `place`.
+void expect_floor_is_plane(const Floor& floor, const Placement& place, double a, double b, double z, double r) {
+  std::vector<Facet> facets;
+  for (const Facet& f : floor.facets) facets.push_back({place(f[0]), place(f[1]), place(f[2])});
+  const Vec3 x = place(Vec3(a, b, z));
+  dem::SimulationSetup with_mesh = one_sphere(x, r);
+  add_mesh(with_mesh, facets);
+  dem::SimulationSetup with_plane = one_sphere(x, r);
+  with_plane.walls = {dem::Wall{place(Vec3::Zero()), place.rotation * Vec3::UnitZ()}};
+  const Vec3 expected = force_at_start(with_plane);
+  ASSERT_GT(expected.norm(), 0.0);
+  const Vec3 got = force_at_start(with_mesh);
+  EXPECT_LT((got - expected).norm(), 1e-9 * expected.norm())
+      << "sphere over (" << a << ", " << b << ") at height " << z << ": mesh " << got.transpose() << ", plane "
+      << expected.transpose();
+}
+
+TEST(MeshWall, AFlatFloorOfTrianglesPushesLikeAPlaneAtRandomPlacesAndOnEverySeamAndCorner) {
+  for (const std::uint32_t seed : {1U, 2U, 3U}) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double h = 1e-3;
+    const Floor floor = jittered_floor(6, h, rng);
+    // Level and at the origin; then turned by a random rotation and moved half a metre away,
+    // where the facets' frames round differently from the plane's.
+    std::vector<Placement> places(2);
+    places[1].rotation = Eigen::AngleAxisd(2.0 * std::numbers::pi * unit(rng),
+                                           Vec3(unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5).normalized())
+                             .toRotationMatrix();
+    places[1].shift = Vec3(0.5, -0.3, 0.2);
+    for (const Placement& place : places) {
+      for (const double r : {kRadius, 4.0 * h}) {  // smaller than a facet, and over many facets
+        const auto height = [&] { return r * (1.0 - 0.1 * unit(rng)); };
+        for (int q = 0; q < 40; ++q) {
+          expect_floor_is_plane(floor, place, 0.1 * h + 5.8 * h * unit(rng), 0.1 * h + 5.8 * h * unit(rng), height(), r);
+        }
+        // Exactly over every corner, and over the middle of every facet edge.
+        for (const Vec3& c : floor.corners) expect_floor_is_plane(floor, place, c.x(), c.y(), height(), r);
+        for (std::size_t f = 0; f < floor.facets.size(); f += 3) {
+          for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3 m = 0.5 * (floor.facets[f][k] + floor.facets[f][(k + 1) % 3]);
+            expect_floor_is_plane(floor, place, m.x(), m.y(), height(), r);
+          }
+        }
+      }
+    }
+  }
+}
+
+/// The surface of the cube [0, L]³ with each face cut into k × k squares of two triangles.
+std::vector<Facet> subdivided_cube(double length, int k) {
+  std::vector<Facet> facets;
+  const double h = length / k;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const double side : {0.0, length}) {
+      const int a1 = (axis + 1) % 3;
+      const int a2 = (axis + 2) % 3;
+      const auto corner = [&](int i, int j) {
+        Vec3 p;
+        p[axis] = side;
+        p[a1] = i * h;
+        p[a2] = j * h;
+        return p;
+      };
+      for (int j = 0; j < k; ++j) {
+        for (int i = 0; i < k; ++i) {
+          facets.push_back({corner(i, j), corner(i + 1, j), corner(i + 1, j + 1)});
+          facets.push_back({corner(i, j), corner(i + 1, j + 1), corner(i, j + 1)});
+        }
+      }
+    }
+  }
+  return facets;
+}
+
+TEST(MeshWall, OutsideASubdividedCubeASphereFeelsTheOneNearestPointOfTheSolid) {
+  // Outside a convex solid the distance to its surface has one minimum: on a face, an edge or a
+  // corner. The force is k (r − d) along the line from that point to the centre.
+  const double length = 2e-3;
+  const std::vector<Facet> cube = subdivided_cube(length, 3);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int edges_and_corners = 0;
+  for (int q = 0; q < 300; ++q) {
+    Vec3 x(length * (1.4 * unit(rng) - 0.2), length * (1.4 * unit(rng) - 0.2), length * (1.4 * unit(rng) - 0.2));
+    // Clamp to the cube: the solid's nearest point; keep centres outside and within reach.
+    const Vec3 nearest = x.cwiseMax(0.0).cwiseMin(length);
+    const double d = (x - nearest).norm();
+    if (!(d > 0.05 * kRadius && d < 0.95 * kRadius)) continue;
+    int outside_axes = 0;
+    for (int a = 0; a < 3; ++a) outside_axes += (x[a] < 0.0 || x[a] > length) ? 1 : 0;
+    if (outside_axes > 1) ++edges_and_corners;
+    dem::SimulationSetup s = one_sphere(x, kRadius);
+    add_mesh(s, cube);
+    const Vec3 expected = kStiffness * (kRadius - d) * (x - nearest) / d;
+    const Vec3 got = force_at_start(s);
+    EXPECT_LT((got - expected).norm(), 1e-9 * expected.norm()) << "centre " << x.transpose();
+  }
+  EXPECT_GT(edges_and_corners, 20);  // the draw reached the edges and corners, not only faces
+}
+
+TEST(MeshWall, InsideASubdividedCubeASphereFeelsTheFacesItTouchesAndNoEdge) {
+  // Inside the cube every face is a plane to the sphere; at a concave edge or corner it touches
+  // two or three faces, each once, and the edge itself is no contact.
+  const double length = 2e-3;
+  const std::vector<Facet> cube = subdivided_cube(length, 3);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int several = 0;
+  for (int q = 0; q < 300; ++q) {
+    const Vec3 x(length * unit(rng), length * unit(rng), length * unit(rng));
+    Vec3 expected = Vec3::Zero();
+    int touched = 0;
+    for (int a = 0; a < 3; ++a) {
+      for (const double side : {0.0, length}) {
+        const double d = std::abs(x[a] - side);
+        if (d >= kRadius) continue;
+        Vec3 n = Vec3::Zero();
+        n[a] = side == 0.0 ? 1.0 : -1.0;
+        expected += kStiffness * (kRadius - d) * n;
+        ++touched;
+      }
+    }
+    if (touched == 0) continue;
+    if (touched > 1) ++several;
+    dem::SimulationSetup s = one_sphere(x, kRadius);
+    add_mesh(s, cube);
+    const Vec3 got = force_at_start(s);
+    EXPECT_LT((got - expected).norm(), 1e-9 * expected.norm()) << "centre " << x.transpose();
+  }
+  EXPECT_GT(several, 10);
+}
+
+TEST(MeshWall, ASphereSlidingOverTheSeamsOfAFrictionlessFloorFollowsThePlanesTrajectory) {
+  // Thrown low over a floor of 36 irregular facets under gravity, it bounces and slides across
+  // seams and past corners; with no friction the floor is the plane to it all the way.
+  std::mt19937_64 rng(5);
+  const double h = 1e-3;
+  const Floor floor = jittered_floor(6, h, rng);
+  const auto setup = [&](bool mesh) {
+    dem::SimulationSetup s = one_sphere(Vec3(0.7e-3, 0.9e-3, 1.2 * kRadius), kRadius, Vec3(0.05, 0.031, -0.02));
+    s.fields.gravity = Vec3(0, 0, -9.81);
+    if (mesh) {
+      add_mesh(s, floor.facets);
+    } else {
+      s.walls = {dem::Wall{Vec3::Zero(), Vec3::UnitZ()}};
+    }
+    return s;
+  };
+  dem::Simulation on_mesh(setup(true));
+  dem::Simulation on_plane(setup(false));
+  double deepest = 0.0;
+  for (int step = 0; step < 60000; ++step) {
+    on_mesh.step();
+    on_plane.step();
+    deepest = std::max(deepest, kRadius - on_plane.state().position(2, 0));
+  }
+  const Vec3 travelled = on_plane.state().position.col(0) - Vec3(0.7e-3, 0.9e-3, 1.2 * kRadius);
+  ASSERT_GT(travelled.head<2>().norm(), 2.0 * h);  // it crossed several facets
+  ASSERT_GT(deepest, 0.0);                          // and pressed into the floor
+  EXPECT_LT((on_mesh.state().position.col(0) - on_plane.state().position.col(0)).norm(), 1e-9 * travelled.norm());
+}
+
+TEST(MeshWall, ASpringThatPassesToTheNextFacetIsBookedAsFrictionAndTheLedgerBalances) {
+  // Pressed hard onto the floor, it slides, then rolls over seams with its spring loaded; the
+  // spring restarts at every seam it crosses. What the old spring held leaves as friction, so the
+  // ledger's integration error stays as small as on the plane (where nothing restarts);
+  // unbooked, each crossing would add up to (μ m g)² / 2 k_t to it.
+  std::mt19937_64 rng(9);
+  const double h = 1e-3;
+  const Floor floor = jittered_floor(6, h, rng);
+  constexpr double kPress = 2000.0;  // m/s²: a body force that loads the spring well
+  struct Result {
+    dem::EnergyLedger ledger;
+    double worst_error = 0.0;
+  };
+  const auto run = [&](bool mesh) {
+    dem::SimulationSetup s = one_sphere(Vec3(0.7e-3, 0.9e-3, kRadius - 1e-7), kRadius, Vec3(0.04, 0.025, 0.0));
+    s.materials[0].tangential_stiffness = 1e3;
+    s.materials[0].friction = 0.3;
+    s.materials[0].tangential_damping_ratio = 0.0;
+    s.model.tangential = "spring_coulomb";
+    s.scheme_settings.rotation = true;
+    s.fields.gravity = Vec3(0, 0, -kPress);
+    if (mesh) {
+      add_mesh(s, floor.facets);
+    } else {
+      s.walls = {dem::Wall{Vec3::Zero(), Vec3::UnitZ()}};
+    }
+    dem::Simulation sim(s);
+    Result r;
+    for (int step = 0; step < 40000; ++step) {
+      sim.step();
+      r.worst_error = std::max(r.worst_error, std::abs(sim.energy().integration_error));
+    }
+    r.ledger = sim.energy();
+    return r;
+  };
+  const Result on_mesh = run(true);
+  const Result on_plane = run(false);
+  const double mass = 2500.0 * 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3);
+  const double one_crossing = std::pow(0.3 * mass * kPress, 2) / (2.0 * 1e3);
+  // The restarted springs' energy is friction the plane never books (here ~2 % more).
+  EXPECT_GT(on_mesh.ledger.dissipated_friction, on_plane.ledger.dissipated_friction + 0.01 * one_crossing);
+  EXPECT_LT(on_mesh.worst_error, 0.1 * one_crossing);
+  EXPECT_LT(on_mesh.worst_error, 10.0 * on_plane.worst_error + 1e-3 * one_crossing);
+}
+
+TEST(MeshTopology, WeldsCornersWithTheSameCoordinatesAndListsTheFacetsAroundEach) {
+  const std::vector<Facet> facets = {Facet{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)},
+                                     Facet{Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)},
+                                     Facet{Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)}};
+  const dem::MeshTopology m = dem::build_mesh_topology(facets, 4);
+  EXPECT_EQ(m.first_wall, 4U);
+  ASSERT_EQ(m.corners.size(), 5U);
+  EXPECT_EQ(m.facets[1], (std::array<std::uint32_t, 3>{1, 3, 2}));
+  const auto around = [&](std::uint32_t c) {
+    return std::vector<std::uint32_t>(m.around.begin() + m.around_offsets[c], m.around.begin() + m.around_offsets[c + 1]);
+  };
+  EXPECT_EQ(around(1), (std::vector<std::uint32_t>{0, 1, 2}));  // (1, 0, 0)
+  EXPECT_EQ(around(2), (std::vector<std::uint32_t>{0, 1}));     // (0, 1, 0)
+  EXPECT_EQ(around(4), (std::vector<std::uint32_t>{2}));        // (2, 0, 0)
+}
+
+}  // namespace mesh_wall_test
