@@ -164,6 +164,64 @@ bool ContactForceField::mesh_skips(std::uint32_t w, const Vec3& x, double t) con
   return !mesh.counts(setup_.walls, w - mesh.first_wall, x, t);
 }
 
+bool ContactForceField::plan_mesh_contacts(std::uint32_t i, const SphereState& p, double t, MeshPlan& plan) const {
+  const std::uint32_t first = wall_list_.begin(i);
+  const std::uint32_t end = wall_list_.begin(i + 1);
+  const std::span<const WallEntry> entries = wall_list_.entries();
+  bool any = false;
+  for (std::uint32_t k = first; k < end && !any; ++k) any = setup_.walls[entries[k].wall].mesh != kNoMesh;
+  if (!any) return false;
+  const std::size_t n = end - first;
+  plan.skipped.assign(n, 0);
+  plan.handed_over.assign(n, 0);
+  plan.continues.assign(n, 0);
+  plan.within.assign(n, 0);
+  bool new_contact = false;
+  for (std::uint32_t k = first; k < end; ++k) {
+    const Wall& wall = setup_.walls[entries[k].wall];
+    if (wall.mesh == kNoMesh || !wall.present(t)) continue;
+    if (wall_frame(wall, p.position, t).distance > wall_reach_of(i, entries[k].wall)) continue;
+    plan.within[k - first] = 1;
+    plan.skipped[k - first] = mesh_skips(entries[k].wall, p.position, t) ? 1 : 0;
+    new_contact = new_contact || (plan.skipped[k - first] == 0 && entries[k].active == 0);
+  }
+  if (!new_contact) return true;
+  // A contact that passes from facet to facet (rolling over a seam, sliding past a corner) keeps
+  // its tangential spring and neck: per mesh, the facets that count the sphere anew take over the
+  // committed histories of the facets that stopped counting it, paired in candidate order. A
+  // mesh's facets are consecutive walls, so its candidates are consecutive too.
+  plan.history.resize(n);
+  const std::span<const ExtendedHistory> ext = wall_list_.extended();
+  std::uint32_t k = first;
+  while (k < end) {
+    const std::uint32_t mesh = setup_.walls[entries[k].wall].mesh;
+    std::uint32_t run_end = k + 1;
+    while (run_end < end && setup_.walls[entries[run_end].wall].mesh == mesh) ++run_end;
+    if (mesh != kNoMesh) {
+      plan.receivers.clear();
+      plan.donors.clear();
+      for (std::uint32_t j = k; j < run_end; ++j) {
+        if (plan.within[j - first] == 0) continue;
+        if (plan.skipped[j - first] != 0) {
+          if (entries[j].active != 0) plan.donors.push_back(j);
+        } else if (entries[j].active == 0) {
+          plan.receivers.push_back(j);
+        }
+      }
+      const std::size_t pairs = std::min(plan.receivers.size(), plan.donors.size());
+      for (std::size_t q = 0; q < pairs; ++q) {
+        const std::uint32_t r = plan.receivers[q];
+        const std::uint32_t d = plan.donors[q];
+        plan.continues[r - first] = 1;
+        plan.history[r - first] = assemble(entries[d].slip, entries[d].active, ext, d);
+        plan.handed_over[d - first] = 1;
+      }
+    }
+    k = run_end;
+  }
+  return true;
+}
+
 double ContactForceField::wall_reach_of(std::uint32_t i, std::uint32_t w) const noexcept {
   return wall_reach(table_.law(props_.material[i], setup_.walls[w].material), props_.radius[i],
                     props_.effect_radius[i]);
@@ -431,6 +489,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   out.angular.resize(3, cols);
   const std::uint32_t chunks = std::max<std::uint32_t>(1, (n + kSphereChunk - 1) / kSphereChunk);
   chunk_totals_.assign(chunks, EnergyTotals{});
+  if (!setup_.meshes.empty() && mesh_plans_.size() < chunks) mesh_plans_.resize(chunks);
   chunk_totals_[0] = totals_;  // the running sums continue from the pair loop's
   const std::span<WallEntry> wall_entries = wall_list_.entries();
   const std::span<ExtendedHistory> wall_ext = wall_list_.extended();
@@ -462,18 +521,23 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
         continue;
       }
       // Sphere–wall contacts: the wall is an infinite-mass partner (m* = m, R* = r).
+      const std::uint32_t wall_begin = wall_list_.begin(i);
       const std::uint32_t wall_end = wall_list_.begin(i + 1);
-      if (wall_list_.begin(i) < wall_end) {
+      if (wall_begin < wall_end) {
         const SphereState p = sphere(state, i);
-        for (std::uint32_t k = wall_list_.begin(i); k < wall_end; ++k) {
+        MeshPlan* plan = nullptr;
+        if (!mesh_plans_.empty() && plan_mesh_contacts(i, p, t_now, mesh_plans_[chunk])) plan = &mesh_plans_[chunk];
+        for (std::uint32_t k = wall_begin; k < wall_end; ++k) {
           WallEntry& e = wall_entries[k];
           const Wall& wall = setup_.walls[e.wall];
           ContactGeometry g = wall_geometry(p, wall, t_now, lever);
           const bool removed = !wall.present(t_now);
           const double reach = wall_reach_of(i, e.wall);
-          const bool skipped = !removed && g.distance <= reach && mesh_skips(e.wall, p.position, t_now);
+          const bool skipped = plan != nullptr && plan->skipped[k - wall_begin] != 0;
           if (removed || skipped || g.distance > reach) {
-            if (commit && track && e.active != 0) {
+            // A spring another facet continues (MeshPlan) neither ends nor is booked here.
+            const bool handed_over = skipped && plan->handed_over[k - wall_begin] != 0;
+            if (commit && track && e.active != 0 && !handed_over) {
               // A contact of the last commit that ends here. Beyond reach, the ledger books what its
               // springs still held (the evaluation adds no force: nothing acts there); under a
               // removed wall, what they held leaves with the wall. A mesh facet whose contact
@@ -488,7 +552,9 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
             continue;
           }
           const PairLaw& law = table_.law(props_.material[i], wall.material);
-          const ContactOutcome o = evaluate_contact(law, g, assemble(e.slip, e.active, wall_ext, k), elapsed);
+          const bool continues = plan != nullptr && plan->continues[k - wall_begin] != 0;
+          const ContactOutcome o = evaluate_contact(
+              law, g, continues ? plan->history[k - wall_begin] : assemble(e.slip, e.active, wall_ext, k), elapsed);
           if (!o.interacting) {
             if (commit) e.active = 0;
             if (track) add_energies(sums, o);  // a neck that broke, springs that let go

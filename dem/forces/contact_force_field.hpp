@@ -140,6 +140,20 @@ class ContactForceField final : public ForceEvaluator {
   /// Whether wall w is a mesh facet whose contact with a sphere centred at x at time t another
   /// facet counts, or that is no local minimum of the mesh's distance (MeshTopology::counts).
   [[nodiscard]] bool mesh_skips(std::uint32_t w, const Vec3& x, double t) const;
+  /// One sphere's mesh-facet candidates for this evaluation (indexed from the sphere's first
+  /// candidate): which are skipped (another facet counts the point), and the contacts that pass
+  /// from one facet to another, whose committed history the new facet continues.
+  struct MeshPlan {
+    std::vector<std::uint8_t> within;         ///< a present facet within reach of the sphere
+    std::vector<std::uint8_t> skipped;        ///< within reach, but not counted
+    std::vector<std::uint8_t> handed_over;    ///< active, skipped, and its history goes on elsewhere
+    std::vector<std::uint8_t> continues;      ///< counted and new: `history` holds what it continues
+    std::vector<ContactHistory> history;
+    std::vector<std::uint32_t> receivers;     ///< scratch
+    std::vector<std::uint32_t> donors;        ///< scratch
+  };
+  /// Fills `plan` for sphere i (state p) at time t; false when it has no mesh-facet candidate.
+  bool plan_mesh_contacts(std::uint32_t i, const SphereState& p, double t, MeshPlan& plan) const;
   /// A kick folded into the accelerations' pass: u += kick·a (ω += kick·α when `rotation`).
   struct FoldedKick {
     double* velocity = nullptr;  ///< null: no kick
@@ -185,6 +199,7 @@ class ContactForceField final : public ForceEvaluator {
   EnergyTotals totals_;
   std::vector<EnergyTotals> slab_totals_;   // per slab, summed in slab order
   std::vector<EnergyTotals> chunk_totals_;  // per sphere chunk, summed in chunk order
+  std::vector<MeshPlan> mesh_plans_;         // per sphere chunk (empty without meshes)
   EnergyLedger ledger_;
   /// Forces of the evaluations of one step, each times its weight (ForceEvaluator::weigh).
   struct WorkSums {

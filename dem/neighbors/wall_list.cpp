@@ -47,7 +47,7 @@ void WallList::build(std::span<const PackedSphere> spheres, std::span<const std:
         const Wall& wall = walls[w];
         if (!wall.present(t)) continue;
         const double within = reach(i, w) + skin;
-        if ((x - bounds_[w].centre).norm() >= bounds_[w].radius + within) continue;
+        if (wall.shape == WallShape::triangle && (x - bounds_[w].centre).norm() >= bounds_[w].radius + within) continue;
         if (wall_frame(wall, x, t).distance < within) entries_.push_back({w, 0, Vec3::Zero()});
       }
     }

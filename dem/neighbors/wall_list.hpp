@@ -40,6 +40,7 @@ class WallList {
   [[nodiscard]] std::span<const WallEntry> entries() const noexcept { return entries_; }
   /// Extended history parallel to entries() (empty unless the build asked for it).
   [[nodiscard]] std::span<ExtendedHistory> extended() noexcept { return extended_; }
+  [[nodiscard]] std::span<const ExtendedHistory> extended() const noexcept { return extended_; }
   /// Candidate index of (sphere i, wall w), or −1.
   [[nodiscard]] std::int64_t find(std::uint32_t i, std::uint32_t w) const noexcept;
   /// The committed history of candidate k (fresh when not active).
