@@ -62,6 +62,12 @@ void add_energies(EnergyTotals& t, const ContactOutcome& c) noexcept {
   t.stiffness += c.stiffness_change;
 }
 
+/// The point of wall w's surface nearest x at time t.
+Vec3 nearest_point(const Wall& w, const Vec3& x, double t) noexcept {
+  const WallFrame f = wall_frame(w, x, t);
+  return x - f.distance * f.normal;
+}
+
 /// The geometry g of sphere p moved along its normal to twice the reach `reach` of its wall:
 /// where a contact ends with nothing acting.
 ContactGeometry beyond_reach(ContactGeometry g, const SphereState& p, double reach) noexcept {
@@ -188,7 +194,7 @@ bool ContactForceField::plan_mesh_contacts(std::uint32_t i, const SphereState& p
   if (!new_contact) return true;
   // A contact that passes from facet to facet (rolling over a seam, sliding past a corner) keeps
   // its tangential spring and neck: per mesh, the facets that count the sphere anew take over the
-  // committed histories of the facets that stopped counting it, paired in candidate order. A
+  // committed histories of the neighbouring facets that stopped counting it (pairing below). A
   // mesh's facets are consecutive walls, so its candidates are consecutive too.
   plan.history.resize(n);
   const std::span<const ExtendedHistory> ext = wall_list_.extended();
@@ -208,10 +214,29 @@ bool ContactForceField::plan_mesh_contacts(std::uint32_t i, const SphereState& p
           plan.receivers.push_back(j);
         }
       }
-      const std::size_t pairs = std::min(plan.receivers.size(), plan.donors.size());
-      for (std::size_t q = 0; q < pairs; ++q) {
-        const std::uint32_t r = plan.receivers[q];
-        const std::uint32_t d = plan.donors[q];
+      // Each donor (in candidate order) hands over to the receiver that shares a corner with it
+      // and whose nearest point lies nearest its own: the facet the contact point moved onto,
+      // not another facet the sphere happens to come within reach of in the same step.
+      const MeshTopology& topology = setup_.meshes[mesh];
+      for (const std::uint32_t d : plan.donors) {
+        const auto& dc = topology.facets[entries[d].wall - topology.first_wall];
+        const Vec3 from = nearest_point(setup_.walls[entries[d].wall], p.position, t);
+        std::int64_t best = -1;
+        double best_d2 = 0.0;
+        for (const std::uint32_t r : plan.receivers) {
+          if (plan.continues[r - first] != 0) continue;
+          const auto& rc = topology.facets[entries[r].wall - topology.first_wall];
+          bool neighbours = false;
+          for (const std::uint32_t a : dc) neighbours = neighbours || a == rc[0] || a == rc[1] || a == rc[2];
+          if (!neighbours) continue;
+          const double d2 = (nearest_point(setup_.walls[entries[r].wall], p.position, t) - from).squaredNorm();
+          if (best < 0 || d2 < best_d2) {
+            best = r;
+            best_d2 = d2;
+          }
+        }
+        if (best < 0) continue;
+        const auto r = static_cast<std::uint32_t>(best);
         plan.continues[r - first] = 1;
         plan.history[r - first] = assemble(entries[d].slip, entries[d].active, ext, d);
         plan.handed_over[d - first] = 1;

@@ -142,7 +142,8 @@ class ContactForceField final : public ForceEvaluator {
   [[nodiscard]] bool mesh_skips(std::uint32_t w, const Vec3& x, double t) const;
   /// One sphere's mesh-facet candidates for this evaluation (indexed from the sphere's first
   /// candidate): which are skipped (another facet counts the point), and the contacts that pass
-  /// from one facet to another, whose committed history the new facet continues.
+  /// from one facet to a neighbour (sharing a corner; the one whose nearest point is nearest the
+  /// old contact's), whose committed history the new facet continues.
   struct MeshPlan {
     std::vector<std::uint8_t> within;         ///< a present facet within reach of the sphere
     std::vector<std::uint8_t> skipped;        ///< within reach, but not counted
