@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "dem/contact/mesh_topology.hpp"
+#include "dem/neighbors/interaction_reach.hpp"
 #include "dem/simulation/simulation.hpp"
 
 namespace mesh_wall_test {
@@ -312,6 +313,62 @@ TEST(MeshWall, AFrictionalSphereKeepsItsSpringAcrossSeamsAndFollowsThePlanesTraj
   ASSERT_GT(friction, 3.0 * one_spring);
   EXPECT_NEAR(on_mesh.energy().dissipated_friction, friction, 1e-9 * friction);
   EXPECT_LT(worst_error, 1.01 * worst_plane_error + 1e-3 * one_spring);  // nothing booked twice or lost
+}
+
+TEST(MeshWall, AJkrNeckPassesToTheNextFloorFacetNotToAWallWithinReach) {
+  // A JKR sphere rolls along a floor beside a side wall of the same mesh, closer to it than the
+  // neck's rupture distance but not touching it: the wall's facets count it (within reach) yet
+  // hold no neck. When the sphere crosses a floor seam, the floor's neck passes to the next
+  // floor facet, not to the wall (which would then pull the sphere). Against two planes the
+  // path is the same to round-off.
+  const double r = 5e-4;
+  const double mm = 1e-3;
+  const std::vector<Facet> wall_and_floor = {
+      // the side wall x = 0 first (its facets have the lowest numbers)
+      Facet{Vec3(0, 0, 0), Vec3(0, 4 * mm, 0), Vec3(0, 4 * mm, 2 * mm)},
+      Facet{Vec3(0, 0, 0), Vec3(0, 4 * mm, 2 * mm), Vec3(0, 0, 2 * mm)},
+      // the floor z = 0, two squares of two triangles
+      Facet{Vec3(0, 0, 0), Vec3(4 * mm, 0, 0), Vec3(4 * mm, 2 * mm, 0)},
+      Facet{Vec3(0, 0, 0), Vec3(4 * mm, 2 * mm, 0), Vec3(0, 2 * mm, 0)},
+      Facet{Vec3(0, 2 * mm, 0), Vec3(4 * mm, 2 * mm, 0), Vec3(4 * mm, 4 * mm, 0)},
+      Facet{Vec3(0, 2 * mm, 0), Vec3(4 * mm, 4 * mm, 0), Vec3(0, 4 * mm, 0)}};
+  const auto setup = [&](bool mesh, double gap) {
+    dem::SimulationSetup s;
+    dem::MaterialProperties m;
+    m.name = "sticky";
+    m.density = 2500.0;
+    m.youngs_modulus = 1e7;
+    m.poisson_ratio = 0.3;
+    m.surface_energy = 0.05;
+    s.materials = {m};
+    s.model.normal = "hertz";
+    s.model.cohesion = "jkr";
+    s.particles.push_back({r, r, 2500.0, 0, Vec3(r + gap, 1.5 * mm, r - 1e-7), Vec3(0, 0.03, 0), Vec3::Zero(), false});
+    s.fields.gravity = Vec3(0, 0, -9.81);
+    s.timestep = 1e-6;
+    s.scheme_settings.rotation = false;
+    if (mesh) {
+      add_mesh(s, wall_and_floor);
+    } else {
+      s.walls = {dem::Wall{Vec3::Zero(), Vec3::UnitX()}, dem::Wall{Vec3::Zero(), Vec3::UnitZ()}};
+    }
+    return s;
+  };
+  // Half the rupture distance from the wall: within its reach, not touching.
+  const dem::Simulation probe(setup(false, 0.0));
+  const double reach = dem::wall_reach(probe.pair_table().law(0, 0), r, r);
+  ASSERT_GT(reach, r);
+  const double gap = 0.5 * (reach - r);
+  dem::Simulation on_mesh(setup(true, gap));
+  dem::Simulation on_planes(setup(false, gap));
+  for (int step = 0; step < 30000; ++step) {
+    on_mesh.step();
+    on_planes.step();
+  }
+  const Vec3 x = on_planes.state().position.col(0);
+  ASSERT_GT(x.y(), 2.2 * mm);  // it crossed the floor's seam at y = 2 mm
+  ASSERT_NEAR(x.x(), r + gap, 1e-3 * gap);  // and kept its distance from the wall
+  EXPECT_LT((on_mesh.state().position.col(0) - x).norm(), 1e-9 * mm);
 }
 
 TEST(MeshTopology, WeldsCornersWithTheSameCoordinatesAndListsTheFacetsAroundEach) {
