@@ -41,20 +41,21 @@ std::vector<dem::MeshTopology> core_meshes(const Scene& scene, std::vector<dem::
 }
 
 dem::Wall core_wall(const WallSpec& w) {
-  if (w.shape == dem::WallShape::triangle) {
-    dem::Wall out = dem::triangle_wall(to_vec(w.corners[0]), to_vec(w.corners[1]), to_vec(w.corners[2]));
-    out.velocity = to_vec(w.velocity);
-    out.material = static_cast<std::uint32_t>(w.material);
-    out.mesh = w.mesh ? static_cast<std::uint32_t>(*w.mesh) : dem::kNoMesh;
-    out.removed_at = w.removed_at.value_or(std::numeric_limits<double>::infinity());
-    return out;
+  // A facet's frame comes from its corners (the one formula, dem::triangle_wall); every other
+  // shape's from its keys.
+  dem::Wall out = w.shape == dem::WallShape::triangle
+                      ? dem::triangle_wall(to_vec(w.corners[0]), to_vec(w.corners[1]), to_vec(w.corners[2]))
+                      : dem::Wall{to_vec(w.point), to_vec(w.normal)};
+  if (w.shape != dem::WallShape::triangle) {
+    out.shape = w.shape;
+    out.axis_u = to_vec(w.axis_u);
+    out.size_u = w.size_u;
+    out.size_v = w.size_v;
+    out.length = w.length;
   }
-  dem::Wall out{to_vec(w.point), to_vec(w.normal), to_vec(w.velocity), static_cast<std::uint32_t>(w.material)};
-  out.shape = w.shape;
-  out.axis_u = to_vec(w.axis_u);
-  out.size_u = w.size_u;
-  out.size_v = w.size_v;
-  out.length = w.length;
+  out.velocity = to_vec(w.velocity);
+  out.material = static_cast<std::uint32_t>(w.material);
+  out.mesh = w.mesh ? static_cast<std::uint32_t>(*w.mesh) : dem::kNoMesh;
   out.removed_at = w.removed_at.value_or(std::numeric_limits<double>::infinity());
   return out;
 }

@@ -6,6 +6,7 @@
 #include <optional>
 #include <span>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "cases/loader_sections.hpp"
 #include "cases/mesh/stl_reader.hpp"
 #include "cases/names.hpp"
+#include "dem/contact/wall.hpp"
 #include "support/text_file.hpp"
 #include "support/sha256.hpp"
 
@@ -183,17 +185,18 @@ std::vector<WallSpec> read_mesh(const Table& t, Scene& scene, std::size_t index)
     for (std::size_t k = 0; k < 3; ++k) {
       for (std::size_t a = 0; a < 3; ++a) w.corners[k][a] = scale * mesh.triangles[f].vertex[k][a] + shift[a];
     }
-    const Vector3 e1{w.corners[1][0] - w.corners[0][0], w.corners[1][1] - w.corners[0][1], w.corners[1][2] - w.corners[0][2]};
-    const Vector3 e2{w.corners[2][0] - w.corners[0][0], w.corners[2][1] - w.corners[0][1], w.corners[2][2] - w.corners[0][2]};
-    const Vector3 n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
-    const double area2 = length(n);
-    if (!(area2 > 0.0) || !std::isfinite(area2)) {
+    dem::Wall frame{};
+    try {
+      frame = dem::triangle_wall({w.corners[0][0], w.corners[0][1], w.corners[0][2]},
+                                 {w.corners[1][0], w.corners[1][1], w.corners[1][2]},
+                                 {w.corners[2][0], w.corners[2][1], w.corners[2][2]});
+    } catch (const std::invalid_argument&) {
       file.fail(fmt::format("triangle {} has no area once scaled by {:.6g} and moved by [{:.6g}, {:.6g}, {:.6g}] "
                             "(its corners coincide in double precision)",
                             f + 1, scale, shift[0], shift[1], shift[2]));
     }
     w.point = w.corners[0];
-    w.normal = {n[0] / area2, n[1] / area2, n[2] / area2};
+    w.normal = {frame.normal.x(), frame.normal.y(), frame.normal.z()};
     walls.push_back(std::move(w));
   }
   scene.meshes.push_back(std::move(spec));

@@ -39,11 +39,7 @@ std::vector<int> snapshot_contacts(const cases::Scene& scene, const cases::Snaps
       const dem::Vec3 x(snap.position[i][0], snap.position[i][1], snap.position[i][2]);
       if (!(dem::wall_frame(w, x, snap.time).distance < radii[i])) continue;
       // A mesh counts a point that several facets share once, as the core does.
-      if (w.mesh != dem::kNoMesh) {
-        const dem::MeshTopology& m = meshes[w.mesh];
-        if (!m.counts(walls, static_cast<std::uint32_t>(k - m.first_wall), x, snap.time)) continue;
-      }
-      ++count[i];
+      if (dem::facet_counts(walls, meshes, static_cast<std::uint32_t>(k), x, snap.time)) ++count[i];
     }
   }
   return count;

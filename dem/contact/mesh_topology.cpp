@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <map>
-#include <stdexcept>
 
 namespace dem {
 namespace {
@@ -17,27 +16,15 @@ constexpr double kSnapShare = 1e-6;
 // not more than ~1e4 times smaller than the sphere).
 constexpr double kSlackShare = 1e-10;
 
+/// Marks the unused second id of a part that is one corner.
+constexpr std::uint32_t kNoCorner = 0xffffffffU;
+
 /// Whether corner id c is one of the part's ids.
 bool in_part(const std::array<std::uint32_t, 2>& part, std::uint32_t c) noexcept {
   return part[0] == c || part[1] == c;
 }
 
 }  // namespace
-
-Wall triangle_wall(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 e1 = b - a;
-  const Vec3 e2 = c - a;
-  const Vec3 n = e1.cross(e2);
-  if (!(n.norm() > 0.0)) throw std::invalid_argument("a mesh facet has no area");
-  Wall w{a, n.normalized()};
-  w.shape = WallShape::triangle;
-  w.length = e1.norm();
-  w.axis_u = e1 / w.length;
-  const Vec3 v = w.normal.cross(w.axis_u);
-  w.size_u = e2.dot(w.axis_u);
-  w.size_v = e2.dot(v);
-  return w;
-}
 
 MeshTopology build_mesh_topology(std::span<const std::array<Vec3, 3>> facets, std::uint32_t first_wall) {
   MeshTopology m;
@@ -80,7 +67,7 @@ void MeshTopology::for_each_sharing(std::uint32_t f, const std::array<std::uint3
   for (std::uint32_t k = around_offsets[part[0]]; k < around_offsets[part[0] + 1]; ++k) {
     const std::uint32_t g = around[k];
     if (g == f) continue;
-    if (part[1] != kNoMesh) {
+    if (part[1] != kNoCorner) {
       const auto& c = facets[g];
       if (c[0] != part[1] && c[1] != part[1] && c[2] != part[1]) continue;
     }
@@ -95,11 +82,11 @@ MeshTopology::Candidate MeshTopology::candidate(std::span<const Wall> walls, std
   const Vec3 rel = x_rest - w.point;
   const TriangleNearest near =
       nearest_on_triangle(PlaneTriangle{w.length, w.size_u, w.size_v}, rel.dot(w.axis_u), rel.dot(v), snap[f]);
-  Candidate out{w.point + near.u * w.axis_u + near.v * v, {kNoMesh, kNoMesh}, near.part == TrianglePart::face, true};
+  Candidate out{w.point + near.u * w.axis_u + near.v * v, {kNoCorner, kNoCorner}, near.part == TrianglePart::face, true};
   if (out.face) return out;
   const auto& c = facets[f];
   if (near.part == TrianglePart::corner) {
-    out.part = {c[near.index], kNoMesh};
+    out.part = {c[near.index], kNoCorner};
   } else {
     const std::uint32_t a = c[near.index];
     const std::uint32_t b = c[(near.index + 1) % 3];
@@ -125,7 +112,8 @@ bool MeshTopology::counts(std::span<const Wall> walls, std::uint32_t f, const Ve
   if (mine.face) return true;
   if (!mine.minimum) return false;
   // The point is shared: the lowest-numbered facet that names the same part and finds it a
-  // minimum counts it. Each facet decides from the same arithmetic, so exactly one counts.
+  // minimum counts it. Each facet decides from the same arithmetic, so one of them counts it
+  // (docs/walls.md names the slivers where tolerances tied to facet sizes can let two).
   bool lower_counts = false;
   for_each_sharing(f, mine.part, [&](std::uint32_t g) {
     if (lower_counts || g > f) return;
@@ -133,6 +121,14 @@ bool MeshTopology::counts(std::span<const Wall> walls, std::uint32_t f, const Ve
     if (!theirs.face && theirs.minimum && theirs.part == mine.part) lower_counts = true;
   });
   return !lower_counts;
+}
+
+bool facet_counts(std::span<const Wall> walls, std::span<const MeshTopology> meshes, std::uint32_t w, const Vec3& x,
+                  double t) {
+  const Wall& wall = walls[w];
+  if (wall.mesh == kNoMesh) return true;
+  const MeshTopology& mesh = meshes[wall.mesh];
+  return mesh.counts(walls, w - mesh.first_wall, x, t);
 }
 
 }  // namespace dem

@@ -33,8 +33,8 @@ struct MeshTopology {
   [[nodiscard]] bool counts(std::span<const Wall> walls, std::uint32_t f, const Vec3& x, double t) const;
 
  private:
-  /// A facet's nearest point to x (in the mesh's frame at t = 0), the mesh part it names (up to
-  /// two corner ids; kNoMesh when unused) and whether it is a local minimum over the mesh.
+  /// A facet's nearest point to x (in the mesh's frame at t = 0), the mesh part it names (one or
+  /// two corner ids) and whether it is a local minimum over the mesh.
   struct Candidate {
     Vec3 point;
     std::array<std::uint32_t, 2> part;
@@ -47,11 +47,13 @@ struct MeshTopology {
   void for_each_sharing(std::uint32_t f, const std::array<std::uint32_t, 2>& part, Visit&& visit) const;
 };
 
+/// Whether wall w's contact with a sphere centred at x at time t counts: always for a wall of no
+/// mesh, MeshTopology::counts for a facet (`meshes` indexed by Wall::mesh).
+[[nodiscard]] bool facet_counts(std::span<const Wall> walls, std::span<const MeshTopology> meshes, std::uint32_t w,
+                                const Vec3& x, double t);
+
 /// The facets' connectivity, from their corners (each facet's corners in its own order); a
 /// mesh whose facets are walls first_wall, first_wall + 1, ….
 [[nodiscard]] MeshTopology build_mesh_topology(std::span<const std::array<Vec3, 3>> facets, std::uint32_t first_wall);
-
-/// The wall of the triangle with corners a, b, c (normal (b − a) × (c − a), unit): its plane frame.
-[[nodiscard]] Wall triangle_wall(const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace dem

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 
 #include "dem/contact/triangle.hpp"
 #include "dem/core/vector.hpp"
@@ -42,6 +43,23 @@ struct Wall {
   /// Whether the wall exists at time t.
   [[nodiscard]] bool present(double t) const noexcept { return t < removed_at; }
 };
+
+/// The wall of the triangle with corners a, b, c: its plane frame (unit normal along
+/// (b − a) × (c − a), u along b − a, corner c's in-plane coordinates). Throws
+/// std::invalid_argument when the corners span no area.
+[[nodiscard]] inline Wall triangle_wall(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a;
+  const Vec3 e2 = c - a;
+  const Vec3 n = e1.cross(e2);
+  if (!(n.norm() > 0.0) || !std::isfinite(n.norm())) throw std::invalid_argument("the triangle has no area");
+  Wall w{a, n.normalized()};
+  w.shape = WallShape::triangle;
+  w.length = e1.norm();
+  w.axis_u = e1 / w.length;
+  w.size_u = e2.dot(w.axis_u);
+  w.size_v = e2.dot(w.normal.cross(w.axis_u));
+  return w;
+}
 
 /// Where a sphere centre sees a wall: the unit contact normal from the wall towards the centre
 /// and the centre's distance along it (signed for a plane; ≥ 0 for a bounded shape).

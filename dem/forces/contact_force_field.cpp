@@ -62,12 +62,6 @@ void add_energies(EnergyTotals& t, const ContactOutcome& c) noexcept {
   t.stiffness += c.stiffness_change;
 }
 
-/// The point of wall w's surface nearest x at time t.
-Vec3 nearest_point(const Wall& w, const Vec3& x, double t) noexcept {
-  const WallFrame f = wall_frame(w, x, t);
-  return x - f.distance * f.normal;
-}
-
 /// The geometry g of sphere p moved along its normal to twice the reach `reach` of its wall:
 /// where a contact ends with nothing acting.
 ContactGeometry beyond_reach(ContactGeometry g, const SphereState& p, double reach) noexcept {
@@ -163,13 +157,6 @@ SphereState ContactForceField::sphere(const KinematicState& s, std::uint32_t i) 
                      props_.charge[i]};
 }
 
-bool ContactForceField::mesh_skips(std::uint32_t w, const Vec3& x, double t) const {
-  const Wall& wall = setup_.walls[w];
-  if (wall.mesh == kNoMesh) return false;
-  const MeshTopology& mesh = setup_.meshes[wall.mesh];
-  return !mesh.counts(setup_.walls, w - mesh.first_wall, x, t);
-}
-
 bool ContactForceField::plan_mesh_contacts(std::uint32_t i, const SphereState& p, double t, MeshPlan& plan) const {
   const std::uint32_t first = wall_list_.begin(i);
   const std::uint32_t end = wall_list_.begin(i + 1);
@@ -177,74 +164,76 @@ bool ContactForceField::plan_mesh_contacts(std::uint32_t i, const SphereState& p
   bool any = false;
   for (std::uint32_t k = first; k < end && !any; ++k) any = setup_.walls[entries[k].wall].mesh != kNoMesh;
   if (!any) return false;
-  const std::size_t n = end - first;
-  plan.skipped.assign(n, 0);
-  plan.handed_over.assign(n, 0);
-  plan.continues.assign(n, 0);
-  plan.within.assign(n, 0);
+  plan.role.assign(end - first, FacetRole::other);
   bool new_contact = false;
   for (std::uint32_t k = first; k < end; ++k) {
     const Wall& wall = setup_.walls[entries[k].wall];
     if (wall.mesh == kNoMesh || !wall.present(t)) continue;
     if (wall_frame(wall, p.position, t).distance > wall_reach_of(i, entries[k].wall)) continue;
-    plan.within[k - first] = 1;
-    plan.skipped[k - first] = mesh_skips(entries[k].wall, p.position, t) ? 1 : 0;
-    new_contact = new_contact || (plan.skipped[k - first] == 0 && entries[k].active == 0);
+    const bool counted = facet_counts(setup_.walls, setup_.meshes, entries[k].wall, p.position, t);
+    plan.role[k - first] = counted ? FacetRole::counted : FacetRole::skipped;
+    new_contact = new_contact || (counted && entries[k].active == 0);
   }
   if (!new_contact) return true;
   // A contact that passes from facet to facet (rolling over a seam, sliding past a corner) keeps
   // its tangential spring and neck: per mesh, the facets that count the sphere anew take over the
-  // committed histories of the neighbouring facets that stopped counting it (pairing below). A
-  // mesh's facets are consecutive walls, so its candidates are consecutive too.
-  plan.history.resize(n);
+  // committed histories of the neighbouring facets that stopped counting it. A mesh's facets are
+  // consecutive walls, so its candidates are consecutive too.
+  plan.history.resize(end - first);
   const std::span<const ExtendedHistory> ext = wall_list_.extended();
-  std::uint32_t k = first;
-  while (k < end) {
+  for (std::uint32_t k = first; k < end;) {
     const std::uint32_t mesh = setup_.walls[entries[k].wall].mesh;
     std::uint32_t run_end = k + 1;
     while (run_end < end && setup_.walls[entries[run_end].wall].mesh == mesh) ++run_end;
-    if (mesh != kNoMesh) {
-      plan.receivers.clear();
-      plan.donors.clear();
-      for (std::uint32_t j = k; j < run_end; ++j) {
-        if (plan.within[j - first] == 0) continue;
-        if (plan.skipped[j - first] != 0) {
-          if (entries[j].active != 0) plan.donors.push_back(j);
-        } else if (entries[j].active == 0) {
-          plan.receivers.push_back(j);
-        }
-      }
-      // Each donor (in candidate order) hands over to the receiver that shares a corner with it
-      // and whose nearest point lies nearest its own: the facet the contact point moved onto,
-      // not another facet the sphere happens to come within reach of in the same step.
-      const MeshTopology& topology = setup_.meshes[mesh];
-      for (const std::uint32_t d : plan.donors) {
-        const auto& dc = topology.facets[entries[d].wall - topology.first_wall];
-        const Vec3 from = nearest_point(setup_.walls[entries[d].wall], p.position, t);
-        std::int64_t best = -1;
-        double best_d2 = 0.0;
-        for (const std::uint32_t r : plan.receivers) {
-          if (plan.continues[r - first] != 0) continue;
-          const auto& rc = topology.facets[entries[r].wall - topology.first_wall];
-          bool neighbours = false;
-          for (const std::uint32_t a : dc) neighbours = neighbours || a == rc[0] || a == rc[1] || a == rc[2];
-          if (!neighbours) continue;
-          const double d2 = (nearest_point(setup_.walls[entries[r].wall], p.position, t) - from).squaredNorm();
-          if (best < 0 || d2 < best_d2) {
-            best = r;
-            best_d2 = d2;
-          }
-        }
-        if (best < 0) continue;
-        const auto r = static_cast<std::uint32_t>(best);
-        plan.continues[r - first] = 1;
-        plan.history[r - first] = assemble(entries[d].slip, entries[d].active, ext, d);
-        plan.handed_over[d - first] = 1;
-      }
-    }
+    if (mesh != kNoMesh) hand_over(first, k, run_end, p, t, plan, ext);
     k = run_end;
   }
   return true;
+}
+
+void ContactForceField::hand_over(std::uint32_t first, std::uint32_t begin, std::uint32_t end, const SphereState& p,
+                                  double t, MeshPlan& plan, std::span<const ExtendedHistory> ext) const {
+  const std::span<const WallEntry> entries = wall_list_.entries();
+  plan.receivers.clear();
+  plan.donors.clear();
+  for (std::uint32_t j = begin; j < end; ++j) {
+    const FacetRole role = plan.role[j - first];
+    if (role == FacetRole::counted && entries[j].active == 0) plan.receivers.push_back(j);
+    if (role == FacetRole::skipped && entries[j].active != 0) plan.donors.push_back(j);
+  }
+  // Each donor (in candidate order) hands over to the receiver that shares a corner with it and
+  // whose nearest point lies nearest its own: the facet the contact point moved onto, not another
+  // facet the sphere happens to come within reach of in the same step.
+  const MeshTopology& mesh = setup_.meshes[setup_.walls[entries[begin].wall].mesh];
+  const auto corners = [&](std::uint32_t k) { return mesh.facets[entries[k].wall - mesh.first_wall]; };
+  const auto nearest = [&](std::uint32_t k) {
+    const WallFrame f = wall_frame(setup_.walls[entries[k].wall], p.position, t);
+    return Vec3(p.position - f.distance * f.normal);
+  };
+  for (const std::uint32_t d : plan.donors) {
+    const auto dc = corners(d);
+    const Vec3 from = nearest(d);
+    std::int64_t best = -1;
+    double best_d2 = 0.0;
+    for (const std::uint32_t r : plan.receivers) {
+      if (plan.role[r - first] != FacetRole::counted) continue;  // taken by an earlier donor
+      const auto rc = corners(r);
+      const bool neighbours = std::any_of(dc.begin(), dc.end(), [&](std::uint32_t c) {
+        return c == rc[0] || c == rc[1] || c == rc[2];
+      });
+      if (!neighbours) continue;
+      const double d2 = (nearest(r) - from).squaredNorm();
+      if (best < 0 || d2 < best_d2) {
+        best = r;
+        best_d2 = d2;
+      }
+    }
+    if (best < 0) continue;
+    const auto r = static_cast<std::uint32_t>(best);
+    plan.role[r - first] = FacetRole::continues;
+    plan.history[r - first] = assemble(entries[d].slip, entries[d].active, ext, d);
+    plan.role[d - first] = FacetRole::handed_over;
+  }
 }
 
 double ContactForceField::wall_reach_of(std::uint32_t i, std::uint32_t w) const noexcept {
@@ -558,11 +547,11 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
           ContactGeometry g = wall_geometry(p, wall, t_now, lever);
           const bool removed = !wall.present(t_now);
           const double reach = wall_reach_of(i, e.wall);
-          const bool skipped = plan != nullptr && plan->skipped[k - wall_begin] != 0;
+          const FacetRole role = plan != nullptr ? plan->role[k - wall_begin] : FacetRole::other;
+          const bool skipped = role == FacetRole::skipped || role == FacetRole::handed_over;
           if (removed || skipped || g.distance > reach) {
             // A spring another facet continues (MeshPlan) neither ends nor is booked here.
-            const bool handed_over = skipped && plan->handed_over[k - wall_begin] != 0;
-            if (commit && track && e.active != 0 && !handed_over) {
+            if (commit && track && e.active != 0 && role != FacetRole::handed_over) {
               // A contact of the last commit that ends here. Beyond reach, the ledger books what its
               // springs still held (the evaluation adds no force: nothing acts there); under a
               // removed wall, what they held leaves with the wall. A mesh facet whose contact
@@ -577,9 +566,10 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
             continue;
           }
           const PairLaw& law = table_.law(props_.material[i], wall.material);
-          const bool continues = plan != nullptr && plan->continues[k - wall_begin] != 0;
-          const ContactOutcome o = evaluate_contact(
-              law, g, continues ? plan->history[k - wall_begin] : assemble(e.slip, e.active, wall_ext, k), elapsed);
+          const ContactOutcome o = evaluate_contact(law, g,
+                                                    role == FacetRole::continues ? plan->history[k - wall_begin]
+                                                                                 : assemble(e.slip, e.active, wall_ext, k),
+                                                    elapsed);
           if (!o.interacting) {
             if (commit) e.active = 0;
             if (track) add_energies(sums, o);  // a neck that broke, springs that let go
@@ -643,7 +633,7 @@ void ContactForceField::observe(const KinematicState& state, double elapsed) {
       const ContactGeometry g = wall_geometry(sphere(state, o.p), wall, state.time, setup_.wall_lever_arm);
       o.overlap = g.overlap;
       if (props_.fixed[o.p] != 0 || !wall.present(state.time) || g.distance > wall_reach_of(o.p, o.q)) continue;
-      if (mesh_skips(o.q, sphere(state, o.p).position, state.time)) continue;
+      if (!facet_counts(setup_.walls, setup_.meshes, o.q, sphere(state, o.p).position, state.time)) continue;
       const std::int64_t k = wall_list_.find(o.p, o.q);
       const ContactHistory h = k >= 0 ? wall_list_.history(static_cast<std::size_t>(k)) : ContactHistory{};
       const ContactOutcome c = evaluate_contact(table_.law(props_.material[o.p], wall.material), g, h, elapsed);

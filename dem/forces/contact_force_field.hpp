@@ -137,24 +137,30 @@ class ContactForceField final : public ForceEvaluator {
   void permute(std::span<const std::uint32_t> order, const KinematicState& state);
 
  private:
-  /// Whether wall w is a mesh facet whose contact with a sphere centred at x at time t another
-  /// facet counts, or that is no local minimum of the mesh's distance (MeshTopology::counts).
-  [[nodiscard]] bool mesh_skips(std::uint32_t w, const Vec3& x, double t) const;
-  /// One sphere's mesh-facet candidates for this evaluation (indexed from the sphere's first
-  /// candidate): which are skipped (another facet counts the point), and the contacts that pass
-  /// from one facet to a neighbour (sharing a corner; the one whose nearest point is nearest the
-  /// old contact's), whose committed history the new facet continues.
-  struct MeshPlan {
-    std::vector<std::uint8_t> within;         ///< a present facet within reach of the sphere
-    std::vector<std::uint8_t> skipped;        ///< within reach, but not counted
-    std::vector<std::uint8_t> handed_over;    ///< active, skipped, and its history goes on elsewhere
-    std::vector<std::uint8_t> continues;      ///< counted and new: `history` holds what it continues
-    std::vector<ContactHistory> history;
-    std::vector<std::uint32_t> receivers;     ///< scratch
-    std::vector<std::uint32_t> donors;        ///< scratch
+  /// What one of a sphere's wall candidates is to this evaluation when it is a mesh facet.
+  enum class FacetRole : std::uint8_t {
+    other,        ///< no facet, absent, or beyond reach: the wall loop's own tests apply
+    counted,      ///< its contact counts, with its own history
+    continues,    ///< its contact counts anew and continues a neighbour's history (MeshPlan::history)
+    skipped,      ///< within reach but counted by another facet, or no local minimum: it ends
+    handed_over,  ///< skipped, and its history goes on in a neighbour that `continues`
   };
-  /// Fills `plan` for sphere i (state p) at time t; false when it has no mesh-facet candidate.
+  /// The roles of one sphere's candidates (indexed from its first candidate) and the histories the
+  /// continuing facets take over; scratch for the pairing.
+  struct MeshPlan {
+    std::vector<FacetRole> role;
+    std::vector<ContactHistory> history;
+    std::vector<std::uint32_t> receivers;
+    std::vector<std::uint32_t> donors;
+  };
+  /// Fills `plan` for sphere i (state p) at time t: which facet contacts count, and which pass
+  /// from a facet to a neighbour (sharing a corner; the one whose nearest point is nearest the old
+  /// contact's). False when the sphere has no mesh-facet candidate.
   bool plan_mesh_contacts(std::uint32_t i, const SphereState& p, double t, MeshPlan& plan) const;
+  /// The pairing of plan_mesh_contacts for one mesh's candidates [begin, end) of a sphere whose
+  /// first candidate is `first`.
+  void hand_over(std::uint32_t first, std::uint32_t begin, std::uint32_t end, const SphereState& p, double t,
+                 MeshPlan& plan, std::span<const ExtendedHistory> ext) const;
   /// A kick folded into the accelerations' pass: u += kick·a (ω += kick·α when `rotation`).
   struct FoldedKick {
     double* velocity = nullptr;  ///< null: no kick

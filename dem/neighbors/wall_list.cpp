@@ -2,7 +2,6 @@
 #include "dem/neighbors/wall_list.hpp"
 
 #include <algorithm>
-#include <limits>
 
 namespace dem {
 
@@ -25,10 +24,7 @@ void WallList::build(std::span<const PackedSphere> spheres, std::span<const std:
   bounds_.resize(walls.size());
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const Wall& wall = walls[w];
-    if (wall.shape != WallShape::triangle) {
-      bounds_[w] = {Vec3::Zero(), std::numeric_limits<double>::infinity()};
-      continue;
-    }
+    if (wall.shape != WallShape::triangle) continue;  // other shapes go straight to the exact test
     const Vec3 v = wall.normal.cross(wall.axis_u);
     const Vec3 c1 = wall.length * wall.axis_u;
     const Vec3 c2 = wall.size_u * wall.axis_u + wall.size_v * v;

@@ -59,7 +59,7 @@ class WallList {
   std::vector<WallEntry> entries_;
   std::vector<ExtendedHistory> extended_;
   std::vector<Carried> carried_;
-  /// A sphere holding a wall's surface at the build's time (infinite for every shape but the triangle).
+  /// Per wall, a sphere holding a triangle's surface at the build's time (set for triangles only).
   struct Bounds {
     Vec3 centre;
     double radius;

@@ -60,7 +60,8 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
           "LAMMPS driver: wall {} ('{}') is a rectangle; fix wall/gran/region has no thin plate (a block region "
           "has a thickness and one side)",
           index, wall.name));
-      break;    case dem::WallShape::triangle:
+      break;
+    case dem::WallShape::triangle:
       return reasons;  // a mesh's facets: one reason for the whole mesh (unmapped_mesh)
   }
   if (wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0) {

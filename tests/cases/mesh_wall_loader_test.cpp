@@ -175,9 +175,9 @@ TEST_F(MeshCase, TheFilesBytesEnterTheScenesFingerprint) {
 TEST_F(MeshCase, BadFilesAndKeysAreErrorsNamingTheKey) {
   expect_error("file = \"floor.stl\"", "file = \"absent.stl\"", "walls[0].file", "absent.stl");
   expect_error("file = \"floor.stl\"", "file = \"\"", "walls[0].file", "must name an STL file");
-  expect_error("scale = 1.0e-3", "scale = -1.0", "walls[0].scale", "");
-  expect_error("scale = 1.0e-3", "scale = 1.0e-3\nrotate = 1.0", "walls[0].rotate", "");
-  expect_error("file = \"floor.stl\"\n", "", "walls[0].file", "");
+  expect_error("scale = 1.0e-3", "scale = -1.0", "walls[0].scale", "must be > 0, got -1");
+  expect_error("scale = 1.0e-3", "scale = 1.0e-3\nrotate = 1.0", "walls[0].rotate", "unknown key 'rotate'");
+  expect_error("file = \"floor.stl\"\n", "", "walls[0].file", "missing required");
   support::write_file(dir_ / "broken.stl", std::string(kFloorStl.substr(0, 120)));
   expect_error("file = \"floor.stl\"", "file = \"broken.stl\"", "walls[0].file", "broken.stl");
   // A facet that collapses once moved far away: 4 µm triangles at 1e12 m.

@@ -22,6 +22,12 @@ namespace mesh_wall_test {
 using dem::Vec3;
 using Facet = std::array<Vec3, 3>;
 
+// Tolerances: a facet meets a sphere through its own frame (corner 0, normal, in-plane axes),
+// the plane or cube face it tiles through another, so the two agree to rounding — distances to
+// ~1e-16 of the coordinates, forces to ~1e-12 of themselves at the overlaps used here. The
+// tests allow 1e-9 of the force or of the path: room for that rounding to grow over tens of
+// thousands of steps, and six orders below what a missed or doubled contact does (a whole
+// contact's force, or the 3e-8 m a restarted spring puts on the path).
 constexpr double kStiffness = 2e3;  // N/m
 constexpr double kRadius = 3e-4;    // m
 
@@ -54,10 +60,28 @@ void add_mesh(dem::SimulationSetup& s, const std::vector<Facet>& facets) {
   s.meshes.push_back(dem::build_mesh_topology(facets, first));
 }
 
+/// Adds the floor to `s`: its facets as one mesh, or (mesh false) the plane z = 0 they tile.
+void add_floor(dem::SimulationSetup& s, bool mesh, const std::vector<Facet>& facets) {
+  if (mesh) {
+    add_mesh(s, facets);
+  } else {
+    s.walls.push_back(dem::Wall{Vec3::Zero(), Vec3::UnitZ()});
+  }
+}
+
 /// The force on the single sphere at t = 0.
 Vec3 force_at_start(const dem::SimulationSetup& s) {
   const dem::Simulation sim(s);
   return sim.force_field().forces().col(0);
+}
+
+/// Expects the force of the mesh `facets` on a sphere of radius r at x to be `expected`.
+void expect_mesh_force(const std::vector<Facet>& facets, const Vec3& x, double r, const Vec3& expected) {
+  dem::SimulationSetup s = one_sphere(x, r);
+  add_mesh(s, facets);
+  const Vec3 got = force_at_start(s);
+  EXPECT_LT((got - expected).norm(), 1e-9 * expected.norm())
+      << "centre " << x.transpose() << ": mesh " << got.transpose() << ", expected " << expected.transpose();
 }
 
 /// Corners of an n × n grid over [0, n·h]² at z = 0, the interior ones moved in the plane by up
@@ -109,16 +133,12 @@ void expect_floor_is_plane(const Floor& floor, const Placement& place, double a,
   std::vector<Facet> facets;
   for (const Facet& f : floor.facets) facets.push_back({place(f[0]), place(f[1]), place(f[2])});
   const Vec3 x = place(Vec3(a, b, z));
-  dem::SimulationSetup with_mesh = one_sphere(x, r);
-  add_mesh(with_mesh, facets);
   dem::SimulationSetup with_plane = one_sphere(x, r);
   with_plane.walls = {dem::Wall{place(Vec3::Zero()), place.rotation * Vec3::UnitZ()}};
   const Vec3 expected = force_at_start(with_plane);
   ASSERT_GT(expected.norm(), 0.0);
-  const Vec3 got = force_at_start(with_mesh);
-  EXPECT_LT((got - expected).norm(), 1e-9 * expected.norm())
-      << "sphere over (" << a << ", " << b << ") at height " << z << ": mesh " << got.transpose() << ", plane "
-      << expected.transpose();
+  SCOPED_TRACE(::testing::Message() << "sphere over (" << a << ", " << b << ") at height " << z);
+  expect_mesh_force(facets, x, r, expected);
 }
 
 TEST(MeshWall, AFlatFloorOfTrianglesPushesLikeAPlaneAtRandomPlacesAndOnEverySeamAndCorner) {
@@ -196,11 +216,7 @@ TEST(MeshWall, OutsideASubdividedCubeASphereFeelsTheOneNearestPointOfTheSolid) {
     int outside_axes = 0;
     for (int a = 0; a < 3; ++a) outside_axes += (x[a] < 0.0 || x[a] > length) ? 1 : 0;
     if (outside_axes > 1) ++edges_and_corners;
-    dem::SimulationSetup s = one_sphere(x, kRadius);
-    add_mesh(s, cube);
-    const Vec3 expected = kStiffness * (kRadius - d) * (x - nearest) / d;
-    const Vec3 got = force_at_start(s);
-    EXPECT_LT((got - expected).norm(), 1e-9 * expected.norm()) << "centre " << x.transpose();
+    expect_mesh_force(cube, x, kRadius, kStiffness * (kRadius - d) * (x - nearest) / d);
   }
   EXPECT_GT(edges_and_corners, 20);  // the draw reached the edges and corners, not only faces
 }
@@ -229,10 +245,7 @@ TEST(MeshWall, InsideASubdividedCubeASphereFeelsTheFacesItTouchesAndNoEdge) {
     }
     if (touched == 0) continue;
     if (touched > 1) ++several;
-    dem::SimulationSetup s = one_sphere(x, kRadius);
-    add_mesh(s, cube);
-    const Vec3 got = force_at_start(s);
-    EXPECT_LT((got - expected).norm(), 1e-9 * expected.norm()) << "centre " << x.transpose();
+    expect_mesh_force(cube, x, kRadius, expected);
   }
   EXPECT_GT(several, 10);
 }
@@ -246,11 +259,7 @@ TEST(MeshWall, ASphereSlidingOverTheSeamsOfAFrictionlessFloorFollowsThePlanesTra
   const auto setup = [&](bool mesh) {
     dem::SimulationSetup s = one_sphere(Vec3(0.7e-3, 0.9e-3, 1.2 * kRadius), kRadius, Vec3(0.05, 0.031, -0.02));
     s.fields.gravity = Vec3(0, 0, -9.81);
-    if (mesh) {
-      add_mesh(s, floor.facets);
-    } else {
-      s.walls = {dem::Wall{Vec3::Zero(), Vec3::UnitZ()}};
-    }
+    add_floor(s, mesh, floor.facets);
     return s;
   };
   dem::Simulation on_mesh(setup(true));
@@ -284,11 +293,7 @@ TEST(MeshWall, AFrictionalSphereKeepsItsSpringAcrossSeamsAndFollowsThePlanesTraj
     s.model.tangential = "spring_coulomb";
     s.scheme_settings.rotation = true;
     s.fields.gravity = Vec3(0, 0, -kPress);
-    if (mesh) {
-      add_mesh(s, floor.facets);
-    } else {
-      s.walls = {dem::Wall{Vec3::Zero(), Vec3::UnitZ()}};
-    }
+    add_floor(s, mesh, floor.facets);
     return s;
   };
   dem::Simulation on_mesh(setup(true));
