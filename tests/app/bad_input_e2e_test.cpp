@@ -57,9 +57,9 @@ TEST(DemwbBadInput, AMissingOrUnreadableCaseFileIsAnErrorNamingIt) {
 }
 
 TEST(DemwbBadInput, ACoarseTimestepIsAWarningNamingTheKeyNotAnError) {
-  std::string text = demwb_e2e::canonical("single_collision");
-  std::ifstream in(text);
-  std::string body((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The core alone: the warning is the in-house run's (the reference codes' runs, which the case's
+  // matched line would add, warn too but are not what is checked).
+  std::string body = demwb_e2e::canonical_text_unmatched("single_collision");
   const std::string from = "timestep = 5.0e-6";
   const auto at = body.find(from);
   ASSERT_NE(at, std::string::npos) << "single_collision.toml no longer sets " << from;

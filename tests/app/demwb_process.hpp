@@ -3,6 +3,7 @@
 // Running the demwb program from end-to-end tests: real process, real files.
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <map>
@@ -55,6 +56,31 @@ inline fs::path scratch(const std::string& name) {
   const fs::path p = fs::temp_directory_path() / ("demwb_e2e_out_" + std::to_string(::getpid())) / name;
   fs::remove_all(p);
   return p;
+}
+
+/// The text of canonical case `name` without its `matched = [...]` line: a run of it goes to the
+/// engines a test names and no further (the line adds the reference codes and the core in their
+/// numerics to every run, and with them their time-step checks).
+inline std::string canonical_text_unmatched(const std::string& name) {
+  const std::string text = support::read_file(canonical(name));
+  std::string kept;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::string line = text.substr(at, end - at);
+    if (line.rfind("matched = ", 0) != 0) kept += line + "\n";
+    at = end + 1;
+  }
+  EXPECT_NE(kept.size(), text.size()) << name << " has no matched line to drop";
+  return kept;
+}
+
+/// A scratch copy of canonical case `name` without its `matched` line (canonical_text_unmatched).
+inline std::string canonical_unmatched(const std::string& name) {
+  const fs::path file = scratch("unmatched_" + name) / (name + ".toml");
+  fs::create_directories(file.parent_path());
+  support::write_file(file, canonical_text_unmatched(name));
+  return file.string();
 }
 
 }  // namespace demwb_e2e

@@ -66,8 +66,9 @@ fs::path case_entry(const fs::path& cache, const std::string& engine) {
 TEST(Cache, ATamperedEntryIsDetectedRunAgainAndReplaced) {
   if (!have_lammps()) GTEST_SKIP() << "lmp is not installed (scripts/setup.sh installs it)";
   const fs::path cache = scratch("tamper-cache");
-  const std::vector<std::string> base{"run", canonical("single_collision"), "--engine", "analytic,lammps", "--cache",
-                                      cache.string()};
+  // Without the case's matched line: LAMMPS' entry is the one under test, YADE's runs add nothing.
+  const std::vector<std::string> base{"run", demwb_e2e::canonical_unmatched("single_collision"), "--engine",
+                                      "analytic,lammps", "--cache", cache.string()};
   const fs::path first = scratch("tamper-first");
   const fs::path second_out = scratch("tamper-second");
   const fs::path third_out = scratch("tamper-third");
