@@ -6,13 +6,16 @@
 
 #include "dem/contact/laws/hertz.hpp"
 #include "dem/contact/laws/linear_spring.hpp"
+#include "dem/contact/laws/mindlin_stiffness.hpp"
+#include "dem/contact/laws/nonlinear_dashpots.hpp"
 
 namespace dem {
 namespace {
 
 // Every line below restates one step of pair_geometry and evaluate_contact_in (with
 // LinearNormal or HertzNormal, LammpsMassVelocityDamping, SpringCoulombTangential, NoCohesion,
-// NoRolling) in the same operation order, so that each result is rounded exactly as there.
+// NoRolling; or HertzNormal, TsujiDamping, Mindlin8GTangential in its incremental form,
+// NoCohesion, NoRolling) in the same operation order, so that each result is rounded exactly as there.
 // Branches become selects: a lane computes both sides and keeps one, which is what lets the
 // compiler evaluate four lanes per instruction. No fused multiply–add: the file is compiled
 // with -ffp-contract=off, and the AVX2 clone does not enable FMA.
@@ -36,12 +39,82 @@ struct V3 {
   return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z};
 }
 
+/// The pair geometry of one lane (pair_geometry's arithmetic). Fields filled by lane_geometry
+/// one by one: a returned aggregate stops GCC vectorising the lane loop.
+struct LaneGeometry {
+  V3 normal;                ///< unit normal from q to p
+  double overlap;           ///< δ [m]
+  V3 branch_p, branch_q;    ///< centre-to-contact vectors [m]
+  V3 tangential_velocity;   ///< [m/s]
+  double normal_speed;      ///< contact velocity along the normal [m/s]
+  double reduced_mass;      ///< m* [kg], ∞ between two fixed spheres
+};
+
+/// pair_geometry for lane g into `geo`; `arm_factor` ½ or 0 gives the lever arm r − δ/2 or r.
+[[gnu::always_inline]] inline void lane_geometry(const ContactBatch& b, std::uint32_t g, double arm_factor,
+                                                 LaneGeometry& geo) noexcept {
+  const double rp = b.rp[g];
+  const double rq = b.rq[g];
+  const V3 x{b.dx[g], b.dy[g], b.dz[g]};
+  const double distance = std::sqrt(dot(x, x));
+  geo.normal = select(distance > 0.0, x / distance, V3{1.0, 0.0, 0.0});
+  geo.overlap = rp + rq - distance;
+  const double half = arm_factor * geo.overlap;
+  geo.branch_p = -(rp - half) * geo.normal;
+  geo.branch_q = (rq - half) * geo.normal;
+  const V3 up{b.upx[g], b.upy[g], b.upz[g]};
+  const V3 uq{b.uqx[g], b.uqy[g], b.uqz[g]};
+  const V3 wp{b.wpx[g], b.wpy[g], b.wpz[g]};
+  const V3 wq{b.wqx[g], b.wqy[g], b.wqz[g]};
+  const V3 contact_velocity = (up + cross(wp, geo.branch_p)) - (uq + cross(wq, geo.branch_q));
+  geo.normal_speed = dot(contact_velocity, geo.normal);
+  geo.tangential_velocity = contact_velocity - geo.normal_speed * geo.normal;
+  geo.reduced_mass = 1.0 / (b.mp[g] + b.mq[g]);
+}
+
+/// The committed slip of lane g carried into the current tangent plane (carried_slip under
+/// TangentialHistory::increment_project, or project_rescale).
+template <bool IncrementProject>
+[[gnu::always_inline]] inline V3 lane_carried_slip(const ContactBatch& b, std::uint32_t g, V3 normal) noexcept {
+  const V3 slip{b.sx[g], b.sy[g], b.sz[g]};
+  const double along = dot(slip, normal);
+  const V3 projected = slip - along * normal;
+  if constexpr (IncrementProject) return projected;
+  const double projected_norm = std::sqrt(dot(projected, projected));
+  const double slip_norm = std::sqrt(dot(slip, slip));
+  const V3 rescaled = select(projected_norm > 0.0, projected * (slip_norm / projected_norm), V3{0.0, 0.0, 0.0});
+  return select(along == 0.0, slip, rescaled);
+}
+
+/// Writes lane g's outputs: the assembled force on p (normal force along n plus friction), the
+/// torques of the friction about both centres (NoRolling adds zero torques, kept for the sign of
+/// zero) and the proposed slip.
+[[gnu::always_inline]] inline void store_lane(ContactBatch& b, std::uint32_t g, const LaneGeometry& geo,
+                                              double normal_force, V3 friction, V3 next_slip) noexcept {
+  const V3 force = normal_force * geo.normal + friction;
+  const V3 torque_p = cross(geo.branch_p, friction) + V3{0.0, 0.0, 0.0};
+  const V3 torque_q = cross(geo.branch_q, -friction) + V3{0.0, 0.0, 0.0};
+  b.overlap[g] = geo.overlap;
+  b.fx[g] = force.x;
+  b.fy[g] = force.y;
+  b.fz[g] = force.z;
+  b.tpx[g] = torque_p.x;
+  b.tpy[g] = torque_p.y;
+  b.tpz[g] = torque_p.z;
+  b.tqx[g] = torque_q.x;
+  b.tqy[g] = torque_q.y;
+  b.tqz[g] = torque_q.z;
+  b.sx[g] = next_slip.x;
+  b.sy[g] = next_slip.y;
+  b.sz[g] = next_slip.z;
+}
+
 /// The loop over lanes for one normal law and one tangential-history rule. The other policies
 /// enter as numbers, so that no select depends on a condition that is the same for every lane
 /// (which the vectoriser cannot mask): the lever arm r − f δ with f = ½ or 0 (exactly r − δ/2,
 /// or r), the Coulomb basis |F_e + d F_d| with d = 1 or 0, the tensile clamp as F_e + F_d below
 /// 0 or below −∞ (never), the unloaded-slider drop as |ς| ≤ 0 or ≤ −1 (never).
-template <BatchNormal Normal, bool IncrementProject>
+template <BatchLawKind Normal, bool IncrementProject>
 [[gnu::always_inline]] inline void evaluate_lanes(ContactBatch& b, std::uint32_t n, const BatchPolicies& p,
                                                   double elapsed) noexcept {
   const double arm_factor = p.lever_arm_radius ? 0.0 : 0.5;
@@ -55,49 +128,27 @@ template <BatchNormal Normal, bool IncrementProject>
     const double kt = b.kt[g];
     const double mu = b.mu[g];
     const double ratio = b.ratio[g];
-    const double rp = b.rp[g];
-    const double rq = b.rq[g];
-
-    // pair_geometry.
-    const V3 x{b.dx[g], b.dy[g], b.dz[g]};
-    const double distance = std::sqrt(dot(x, x));
-    const V3 normal = select(distance > 0.0, x / distance, V3{1.0, 0.0, 0.0});
-    const double overlap = rp + rq - distance;
-    const double half = arm_factor * overlap;
-    const V3 branch_p = -(rp - half) * normal;
-    const V3 branch_q = (rq - half) * normal;
-    const V3 up{b.upx[g], b.upy[g], b.upz[g]};
-    const V3 uq{b.uqx[g], b.uqy[g], b.uqz[g]};
-    const V3 wp{b.wpx[g], b.wpy[g], b.wpz[g]};
-    const V3 wq{b.wqx[g], b.wqy[g], b.wqz[g]};
-    const V3 contact_velocity = (up + cross(wp, branch_p)) - (uq + cross(wq, branch_q));
-    const double normal_speed = dot(contact_velocity, normal);
-    const V3 tangential_velocity = contact_velocity - normal_speed * normal;
-    const double reduced_mass = 1.0 / (b.mp[g] + b.mq[g]);
+    LaneGeometry geo;
+    lane_geometry(b, g, arm_factor, geo);
+    const double overlap = geo.overlap;
 
     // Normal spring (zero force where the lane is not in contact; such lanes are discarded).
     double elastic = 0.0;
-    if constexpr (Normal == BatchNormal::linear) {
+    if constexpr (Normal == BatchLawKind::linear) {
       elastic = laws::linear_spring_force(k_normal, overlap);
     } else {
-      elastic = laws::hertz_force(k_normal, rp * rq / (rp + rq), overlap);
+      elastic = laws::hertz_force(k_normal, b.rp[g] * b.rq[g] / (b.rp[g] + b.rq[g]), overlap);
     }
     // Mass-scaled dashpot; none between two fixed spheres (m* = ∞).
-    const double eta = std::isfinite(reduced_mass) ? rate * reduced_mass : 0.0;
-    double damping = -eta * normal_speed;
+    const double eta = std::isfinite(geo.reduced_mass) ? rate * geo.reduced_mass : 0.0;
+    double damping = -eta * geo.normal_speed;
     damping = elastic + damping < clamp_below ? -elastic : damping;
     const double normal_force = elastic + damping + 0.0;
     const double basis = std::abs(elastic + basis_damping * damping);
 
     // Spring–Coulomb friction on the slip carried into the tangent plane.
-    const V3 slip{b.sx[g], b.sy[g], b.sz[g]};
-    const double along = dot(slip, normal);
-    const V3 projected = slip - along * normal;
-    const double projected_norm = std::sqrt(dot(projected, projected));
-    const double slip_norm = std::sqrt(dot(slip, slip));
-    const V3 rescaled = select(projected_norm > 0.0, projected * (slip_norm / projected_norm), V3{0.0, 0.0, 0.0});
-    V3 carried = projected;
-    if constexpr (!IncrementProject) carried = select(along == 0.0, slip, rescaled);
+    const V3 carried = lane_carried_slip<IncrementProject>(b, g, geo.normal);
+    const V3 tangential_velocity = geo.tangential_velocity;
     const double eta_t = ratio * eta;
     const double limit = mu * basis;
     const bool spring = kt > 0.0;
@@ -114,24 +165,62 @@ template <BatchNormal Normal, bool IncrementProject>
     const V3 friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
     const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
     const V3 next_slip = select(sliding && spring && !dropped, truncated, stored);
+    store_lane(b, g, geo, normal_force, friction, next_slip);
+  }
+}
 
-    // Assembly (NoRolling adds zero torques, kept for the sign of zero).
-    const V3 force = normal_force * normal + friction;
-    const V3 torque_p = cross(branch_p, friction) + V3{0.0, 0.0, 0.0};
-    const V3 torque_q = cross(branch_q, -friction) + V3{0.0, 0.0, 0.0};
-    b.overlap[g] = overlap;
-    b.fx[g] = force.x;
-    b.fy[g] = force.y;
-    b.fz[g] = force.z;
-    b.tpx[g] = torque_p.x;
-    b.tpy[g] = torque_p.y;
-    b.tpz[g] = torque_p.z;
-    b.tqx[g] = torque_q.x;
-    b.tqy[g] = torque_q.y;
-    b.tqz[g] = torque_q.z;
-    b.sx[g] = next_slip.x;
-    b.sy[g] = next_slip.y;
-    b.sz[g] = next_slip.z;
+/// The loop over lanes for Hertz with Tsuji's dashpot and incremental Mindlin friction (the
+/// arithmetic of HertzNormal, TsujiDamping and incremental_mindlin_response), for one
+/// tangential-history rule; the other policies enter as numbers, as in evaluate_lanes.
+template <bool IncrementProject>
+[[gnu::always_inline]] inline void evaluate_mindlin_lanes(ContactBatch& b, std::uint32_t n, const BatchPolicies& p,
+                                                          double elapsed) noexcept {
+  const double arm_factor = p.lever_arm_radius ? 0.0 : 0.5;
+  const double basis_damping = p.limit_elastic ? 0.0 : 1.0;
+  const double clamp_below = p.clamp_tensile ? 0.0 : -std::numeric_limits<double>::infinity();
+  const double unloaded_below = p.zero_when_unloaded ? 0.0 : -1.0;
+  for (std::uint32_t g = 0; g < n; ++g) {
+    const double modulus = b.normal[g];
+    const double alpha = b.rate[g];
+    const double c = b.kt[g];
+    const double mu = b.mu[g];
+    const double ratio = b.ratio[g];
+    const double rp = b.rp[g];
+    const double rq = b.rq[g];
+    LaneGeometry geo;
+    lane_geometry(b, g, arm_factor, geo);
+    const double overlap = geo.overlap;
+    const double reduced_radius = rp * rq / (rp + rq);
+
+    // Hertz spring and its tangent stiffness (both zero out of contact).
+    const double elastic = laws::hertz_force(modulus, reduced_radius, overlap);
+    const double tangent = laws::hertz_stiffness(modulus, reduced_radius, overlap);
+    // Tsuji's dashpot on the secant stiffness F/δ; none between two fixed spheres (m* = ∞).
+    const double secant = laws::secant_stiffness(elastic, overlap, tangent);
+    const double coefficient = laws::tsuji_damping_coefficient(alpha, geo.reduced_mass, secant);
+    const double eta = std::isfinite(geo.reduced_mass) ? coefficient : 0.0;
+    double damping = -eta * geo.normal_speed;
+    damping = elastic + damping < clamp_below ? -elastic : damping;
+    const double normal_force = elastic + damping + 0.0;
+    const double basis = std::abs(elastic + basis_damping * damping);
+
+    // Incremental Mindlin: σ ← σ + a u_t Δt at the contact radius a = √(R* δ), F = −c σ − η_t u_t.
+    const double a = laws::mindlin_contact_radius(reduced_radius, overlap);
+    const V3 tangential_velocity = geo.tangential_velocity;
+    const V3 start = lane_carried_slip<IncrementProject>(b, g, geo.normal);
+    const V3 integrated = start + (a * elapsed) * tangential_velocity;
+    const double eta_t = ratio * eta;
+    const double limit = mu * basis;
+    const double cap = limit < 0.0 ? 0.0 : limit;
+    const V3 trial = -c * integrated - eta_t * tangential_velocity;
+    const double magnitude = std::sqrt(dot(trial, trial));
+    const bool sliding = magnitude > cap;
+    const bool dropped = sliding & (dot(integrated, integrated) <= unloaded_below);
+    const V3 capped = trial * (cap / magnitude);
+    const V3 friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
+    const V3 truncated = select(c > 0.0, -(capped + eta_t * tangential_velocity) / c, V3{0.0, 0.0, 0.0});
+    const V3 next_slip = select(sliding & !dropped, truncated, integrated);
+    store_lane(b, g, geo, normal_force, friction, next_slip);
   }
 }
 
@@ -142,17 +231,25 @@ template <BatchNormal Normal, bool IncrementProject>
 [[gnu::target_clones("avx2", "default")]] void evaluate_contact_batch(ContactBatch& batch, std::uint32_t n,
                                                                       const BatchPolicies& policies,
                                                                       double elapsed) noexcept {
-  const bool linear = policies.normal == BatchNormal::linear;
+  if (policies.kind == BatchLawKind::hertz_mindlin) {
+    if (policies.increment_project) {
+      evaluate_mindlin_lanes<true>(batch, n, policies, elapsed);
+    } else {
+      evaluate_mindlin_lanes<false>(batch, n, policies, elapsed);
+    }
+    return;
+  }
+  const bool linear = policies.kind == BatchLawKind::linear;
   if (policies.increment_project) {
     if (linear) {
-      evaluate_lanes<BatchNormal::linear, true>(batch, n, policies, elapsed);
+      evaluate_lanes<BatchLawKind::linear, true>(batch, n, policies, elapsed);
     } else {
-      evaluate_lanes<BatchNormal::hertz, true>(batch, n, policies, elapsed);
+      evaluate_lanes<BatchLawKind::hertz, true>(batch, n, policies, elapsed);
     }
   } else if (linear) {
-    evaluate_lanes<BatchNormal::linear, false>(batch, n, policies, elapsed);
+    evaluate_lanes<BatchLawKind::linear, false>(batch, n, policies, elapsed);
   } else {
-    evaluate_lanes<BatchNormal::hertz, false>(batch, n, policies, elapsed);
+    evaluate_lanes<BatchLawKind::hertz, false>(batch, n, policies, elapsed);
   }
 }
 

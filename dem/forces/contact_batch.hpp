@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The many-body pair loop's batched contact evaluation: the same arithmetic as evaluate_contact
-// for one family of laws (linear or Hertz spring, mass-scaled dashpot, spring–Coulomb friction,
-// no cohesion, no rolling resistance), laid out as one structure of arrays per batch of pairs so
+// for two families of laws without cohesion or rolling resistance — a linear or Hertz spring with
+// the mass-scaled dashpot and spring–Coulomb friction (LAMMPS' granular benchmarks), and Hertz
+// with Tsuji's dashpot and incremental Mindlin friction (the packing and hopper cases) — laid
+// out as one structure of arrays per batch of pairs so
 // that the compiler evaluates several pairs per instruction. A test holds it bit-for-bit to
 // evaluate_contact on random pairs under every policy (tests/dem/contact_batch_test.cpp); the
 // pair loop uses it only for runs that keep no energy ledger, and evaluate_contact otherwise —
@@ -17,18 +19,21 @@ namespace dem {
 /// Pairs per batch (the pair loop's gather chunk; 240, not 256: see pair_loop.cpp).
 inline constexpr std::uint32_t kContactBatch = 240;
 
-/// Which normal spring a batch evaluates.
-enum class BatchNormal : std::uint8_t {
-  linear,  ///< F = k δ (LinearNormal, thesis eq 3.10)
-  hertz,   ///< F = 4/3 E* √R* δ^{3/2}, stiffness 2 E* √(R* δ) (HertzNormal, eq 3.12–3.13)
+/// Which law a batch evaluates.
+enum class BatchLawKind : std::uint8_t {
+  linear,  ///< F = k δ (LinearNormal, thesis eq 3.10), mass-scaled dashpot, spring–Coulomb friction
+  hertz,   ///< F = 4/3 E* √R* δ^{3/2} (HertzNormal, eq 3.12–3.13), mass-scaled dashpot, spring–Coulomb
+  /// Hertz, Tsuji's dashpot η = α √(m* F/δ) (TsujiDamping) and Mindlin friction k_t = 8 G* a loaded
+  /// increment by increment (Mindlin8GTangential under MindlinForm::incremental)
+  hertz_mindlin,
 };
 
 /// The contact model's policies as the batch kernel reads them (values of ContactPolicies and
 /// PairLeverArm, docs/physics.md). The kernel handles every combination except the lever arm
 /// PairLeverArm::radius_velocity and yade_incident and the history rule yade_rotate, which the
-/// pair loop leaves to evaluate_contact.
+/// pair loop leaves to evaluate_contact; of the Mindlin law, the incremental form only.
 struct BatchPolicies {
-  BatchNormal normal = BatchNormal::linear;
+  BatchLawKind kind = BatchLawKind::linear;  ///< the law the batch evaluates
   bool lever_arm_radius = false;          ///< PairLeverArm::radius (else contact_point, r − δ/2)
   bool increment_project = false;         ///< TangentialHistory::increment_project (else project_rescale)
   bool limit_elastic = false;             ///< FrictionLimit::elastic (else |F_e + F_d|: the others without cohesion)
@@ -40,8 +45,8 @@ struct BatchPolicies {
 /// One material pair's parameters in the batch family.
 struct BatchLaw {
   double normal;         ///< k_e [N/m] (linear) or E* [Pa] (Hertz)
-  double damping_rate;   ///< η/m* [1/s] (LammpsMassVelocityDamping)
-  double tangential;     ///< k_f [N/m]
+  double damping_rate;   ///< η/m* [1/s] (LammpsMassVelocityDamping); hertz_mindlin: Tsuji's α(ε) [-]
+  double tangential;     ///< k_f [N/m]; hertz_mindlin: k_t per unit contact radius, 8 G* [N/m²]
   double friction;       ///< μ [-]
   double damping_ratio;  ///< η_t/η_n [-]
 };
@@ -75,8 +80,8 @@ struct ContactBatch {
   alignas(64) double sz[kContactBatch];
   /// Per-lane law parameters (BatchLaw; set_law).
   alignas(64) double normal[kContactBatch];
-  alignas(64) double rate[kContactBatch];
-  alignas(64) double kt[kContactBatch];
+  alignas(64) double rate[kContactBatch];  ///< BatchLaw::damping_rate
+  alignas(64) double kt[kContactBatch];    ///< BatchLaw::tangential
   alignas(64) double mu[kContactBatch];
   alignas(64) double ratio[kContactBatch];
   // Outputs.

@@ -23,41 +23,66 @@ using HertzMindlinLaw = StaticSlots<HertzNormal, TsujiDamping, Mindlin8GTangenti
 using LinearCohesiveLaw = StaticSlots<LinearNormal, RestitutionDamping, SpringCoulombTangential, LinearCohesion, NoRolling>;
 using JkrLaw = StaticSlots<HertzNormal, TsujiDamping, SpringCoulombTangential, JkrCohesion, NoRolling>;
 
-/// The law kinds the batched kernel evaluates (contact_batch.hpp) and their normal spring: the
-/// slot type and the kernel's name for it. Other kinds are not batched.
+/// The law kinds the batched kernel evaluates (contact_batch.hpp): their normal spring's slot type
+/// and the kernel's name for the law. Other kinds are not batched.
 template <class Slots> struct BatchFamily {
   static constexpr bool kBatched = false;
 };
 template <> struct BatchFamily<ChuteLaw> {
   static constexpr bool kBatched = true;
   using Normal = LinearNormal;
-  static constexpr BatchNormal kNormal = BatchNormal::linear;
+  static constexpr BatchLawKind kKind = BatchLawKind::linear;
 };
 template <> struct BatchFamily<HertzBoxLaw> {
   static constexpr bool kBatched = true;
   using Normal = HertzNormal;
-  static constexpr BatchNormal kNormal = BatchNormal::hertz;
+  static constexpr BatchLawKind kKind = BatchLawKind::hertz;
+};
+template <> struct BatchFamily<HertzMindlinLaw> {
+  static constexpr bool kBatched = true;
+  using Normal = HertzNormal;
+  static constexpr BatchLawKind kKind = BatchLawKind::hertz_mindlin;
 };
 
-/// A batched law's parameters (the caller knows it holds the batch family's sub-models).
-template <class Normal>
-[[nodiscard]] BatchLaw batch_law(const PairLaw& law) noexcept {
-  const auto& normal = *std::get_if<Normal>(&law.normal);
-  const auto& damping = *std::get_if<LammpsMassVelocityDamping>(&law.damping);
-  const auto& tangential = *std::get_if<SpringCoulombTangential>(&law.tangential);
-  double spring = 0.0;
-  if constexpr (std::is_same_v<Normal, LinearNormal>) {
-    spring = normal.stiffness;
+/// True when the batched kernel evaluates a law of batch family `Family` under these policies: the
+/// r − δ/2 and r lever arms, the two LAMMPS history rules, and of Mindlin the incremental form.
+template <class Family>
+[[nodiscard]] bool batch_covers(const ContactPolicies& p, PairLeverArm arm) noexcept {
+  if constexpr (!Family::kBatched) {
+    return false;
   } else {
-    spring = normal.effective_modulus;
+    return arm != PairLeverArm::radius_velocity && arm != PairLeverArm::yade_incident &&
+           p.tangential_history != TangentialHistory::yade_rotate &&
+           (Family::kKind != BatchLawKind::hertz_mindlin || p.mindlin_form == MindlinForm::incremental);
   }
-  return {spring, damping.rate, tangential.stiffness, tangential.friction, tangential.damping_ratio};
+}
+
+/// A batched law's parameters (the caller knows it holds the batch family's sub-models).
+template <class Normal, BatchLawKind Kind>
+[[nodiscard]] BatchLaw batch_law(const PairLaw& law) noexcept {
+  if constexpr (Kind == BatchLawKind::hertz_mindlin) {
+    const auto& tangential = *std::get_if<Mindlin8GTangential>(&law.tangential);
+    return {std::get_if<HertzNormal>(&law.normal)->effective_modulus, std::get_if<TsujiDamping>(&law.damping)->factor,
+            laws::mindlin_stiffness_at_radius(tangential.p.shear_modulus, 1.0), tangential.p.friction,
+            tangential.p.damping_ratio};
+  } else {
+    const auto& normal = *std::get_if<Normal>(&law.normal);
+    const auto& damping = *std::get_if<LammpsMassVelocityDamping>(&law.damping);
+    const auto& tangential = *std::get_if<SpringCoulombTangential>(&law.tangential);
+    double spring = 0.0;
+    if constexpr (std::is_same_v<Normal, LinearNormal>) {
+      spring = normal.stiffness;
+    } else {
+      spring = normal.effective_modulus;
+    }
+    return {spring, damping.rate, tangential.stiffness, tangential.friction, tangential.damping_ratio};
+  }
 }
 
 /// The batch kernel's view of the model's policies.
-[[nodiscard]] BatchPolicies batch_policies(BatchNormal normal, const ContactPolicies& p, PairLeverArm arm) noexcept {
+[[nodiscard]] BatchPolicies batch_policies(BatchLawKind kind, const ContactPolicies& p, PairLeverArm arm) noexcept {
   BatchPolicies b;
-  b.normal = normal;
+  b.kind = kind;
   b.lever_arm_radius = arm == PairLeverArm::radius;
   b.increment_project = p.tangential_history == TangentialHistory::increment_project;
   b.limit_elastic = p.friction_limit == FrictionLimit::elastic;
@@ -173,7 +198,7 @@ inline void evaluate_pair(const PairLoopInput& in, const ListView& list, std::ui
 /// Evaluates gathered pairs [0, count) through the batched kernel: loads each pair's inputs into
 /// the batch's lanes, evaluates them all, then applies forces and commits history in list order
 /// exactly as evaluate_pair does (the kernel's arithmetic is evaluate_contact's, bit for bit).
-template <class Normal>
+template <class Normal, BatchLawKind Kind>
 void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::uint32_t* owners,
                     const std::uint32_t* entries, std::uint32_t count, double* __restrict force,
                     double* __restrict torque, std::uint32_t& next, ContactBatch& b, const BatchPolicies& policies,
@@ -219,7 +244,7 @@ void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::ui
     const std::uint32_t slot = list.contact[k];
     const Vec3 slip = slot == kNoContact ? Vec3::Zero() : list.slips[slot];
     set_lane(b.sx, b.sy, b.sz, g, slip.data());
-    if (!uniform) set_law(b, g, batch_law<Normal>(in.table->law(in.material[i], in.material[j])));
+    if (!uniform) set_law(b, g, batch_law<Normal, Kind>(in.table->law(in.material[i], in.material[j])));
   }
   evaluate_contact_batch(b, count, policies, in.elapsed);
   for (std::uint32_t g = 0; g < count; ++g) {
@@ -295,23 +320,22 @@ template <class Slots, bool Energies, bool Periodic>
   [[maybe_unused]] BatchPolicies policies;
   [[maybe_unused]] bool uniform = true;
   std::conditional_t<kBatchable, ContactBatch, char> batch;
-  // The kernel knows the r − δ/2 and r lever arms and the two LAMMPS history rules only.
+  // The kernel proposes slips only: a model that keeps an extended history is not batched.
   [[maybe_unused]] const bool batched =
-      kBatchable && in.lever_arm != PairLeverArm::radius_velocity && in.lever_arm != PairLeverArm::yade_incident &&
-      in.table->law(0, 0).policies.tangential_history != TangentialHistory::yade_rotate;
+      kBatchable && !extended && batch_covers<Family>(in.table->law(0, 0).policies, in.lever_arm);
   if constexpr (kBatchable) {
     const PairLaw& first = in.table->law(0, 0);
-    policies = batch_policies(Family::kNormal, first.policies, in.lever_arm);
+    policies = batch_policies(Family::kKind, first.policies, in.lever_arm);
     uniform = in.table->material_count() == 1;
     if (batched && uniform) {
-      const BatchLaw law = batch_law<typename Family::Normal>(first);
+      const BatchLaw law = batch_law<typename Family::Normal, Family::kKind>(first);
       for (std::uint32_t g = 0; g < kContactBatch; ++g) set_law(batch, g, law);
     }
   }
   const auto flush = [&] {
     if constexpr (kBatchable) {
       if (batched) {
-        evaluate_batch<typename Family::Normal>(in, view, gathered_owner.data(), gathered_entry.data(), count,
+        evaluate_batch<typename Family::Normal, Family::kKind>(in, view, gathered_owner.data(), gathered_entry.data(), count,
                                                 force, torque, next, batch, policies, uniform);
         count = 0;
         return;

@@ -17,8 +17,9 @@
 
 namespace {
 
-/// A settling box of two materials with LAMMPS's mass-scaled dashpot: the law family the batched
-/// kernel evaluates (linear or Hertz spring, spring–Coulomb friction).
+/// A settling box of two materials in a law the batched kernel evaluates: `normal` "linear" or
+/// "hertz" with LAMMPS's mass-scaled dashpot and spring–Coulomb friction, or "hertz_mindlin"
+/// (Hertz, Tsuji's dashpot, incremental Mindlin friction, the tensile clamp).
 dem::SimulationSetup batched_box(std::uint32_t seed, const std::string& normal, dem::PairLeverArm arm,
                                  dem::TangentialHistory history) {
   dem::SimulationSetup s =
@@ -35,9 +36,18 @@ dem::SimulationSetup batched_box(std::uint32_t seed, const std::string& normal, 
   b.poisson_ratio = 0.25;
   s.materials = {a, b};
   for (std::size_t k = 0; k < s.particles.size(); k += 3) s.particles[k].material = 1;
-  s.model.normal = normal;
-  s.model.damping = "lammps_mass_velocity";
-  s.model.tangential = "spring_coulomb";
+  if (normal == "hertz_mindlin") {  // the packing cases' law: Tsuji's dashpot, incremental Mindlin
+    s.model.normal = "hertz";
+    s.model.damping = "tsuji";
+    s.model.tangential = "mindlin_8g";
+    s.model.mindlin_form = dem::MindlinForm::incremental;
+    s.model.clamp_tensile = true;
+    s.materials[1].restitution = 0.8;
+  } else {
+    s.model.normal = normal;
+    s.model.damping = "lammps_mass_velocity";
+    s.model.tangential = "spring_coulomb";
+  }
   s.model.pair_lever_arm = arm;
   s.model.tangential_history = history;
   s.model.friction_limit = dem::FrictionLimit::elastic_damping;
@@ -74,7 +84,7 @@ void expect_same(const Snapshot& a, const Snapshot& b, const std::string& what) 
 TEST(BatchedPairLoop, ALedgerNeverChangesTheTrajectory) {
   const int steps = test_support::full_or_sanitized(300, 100);
   std::uint32_t seed = 31;
-  for (const char* normal : {"linear", "hertz"}) {
+  for (const char* normal : {"linear", "hertz", "hertz_mindlin"}) {
     for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius}) {
       for (const auto history : {dem::TangentialHistory::project_rescale, dem::TangentialHistory::increment_project}) {
         const dem::SimulationSetup setup = batched_box(seed++, normal, arm, history);

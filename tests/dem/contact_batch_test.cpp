@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <iostream>
 #include <memory>
 #include <vector>
 #include <cstdint>
@@ -15,13 +16,15 @@
 
 #include "dem/contact/contact_geometry.hpp"
 #include "dem/contact/contact_model.hpp"
+#include "dem/contact/laws/dashpot_restitution.hpp"
 #include "dem/contact/laws/hertz.hpp"
+#include "dem/contact/laws/mindlin_stiffness.hpp"
 
 namespace {
 
 /// One combination of the policies the kernel reads.
 struct Case {
-  dem::BatchNormal normal;
+  dem::BatchLawKind normal;
   dem::PairLeverArm arm;
   dem::TangentialHistory history;
   dem::FrictionLimit limit;
@@ -41,7 +44,9 @@ struct RandomPair {
   dem::Vec3 slip;
 };
 
-RandomPair random_pair(std::mt19937_64& rng) {
+/// `slip_scale` sets the committed slips' size: 1 for a displacement [m], smaller for Mindlin's
+/// incremental history σ = −F/c [m²].
+RandomPair random_pair(std::mt19937_64& rng, double slip_scale) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::uniform_real_distribution<double> size(0.5e-3, 2.0e-3);
   std::uniform_int_distribution<int> pick(0, 9);
@@ -70,22 +75,32 @@ RandomPair random_pair(std::mt19937_64& rng) {
   r.p.angular_velocity = vec(500.0);
   r.q.angular_velocity = vec(500.0);
   const int slip_kind = pick(rng);
-  r.slip = slip_kind == 0 ? dem::Vec3(dem::Vec3::Zero()) : dem::Vec3(vec(slip_kind <= 4 ? 1e-7 : 1e-4));
+  r.slip = slip_kind == 0 ? dem::Vec3(dem::Vec3::Zero()) : dem::Vec3(vec(slip_scale * (slip_kind <= 4 ? 1e-7 : 1e-4)));
   return r;
 }
 
 dem::PairLaw law_for(const Case& c, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   dem::PairLaw law;
-  if (c.normal == dem::BatchNormal::linear) {
-    law.normal = dem::LinearNormal{1e4 + 1e5 * unit(rng)};
-  } else {
-    law.normal = dem::HertzNormal{1e8 + 1e9 * unit(rng)};
-  }
-  law.damping = dem::LammpsMassVelocityDamping{100.0 * unit(rng)};
   const double ratio = unit(rng) < 0.3 ? 0.0 : unit(rng);
-  const double kt = unit(rng) < 0.1 ? 0.0 : 1e4 * unit(rng);
-  law.tangential = dem::SpringCoulombTangential{kt, unit(rng) < 0.1 ? 0.0 : unit(rng), ratio};
+  if (c.normal == dem::BatchLawKind::hertz_mindlin) {
+    const double modulus = 1e8 + 1e9 * unit(rng);
+    law.normal = dem::HertzNormal{modulus};
+    const double e = 0.05 + 0.95 * unit(rng);
+    law.damping = dem::TsujiDamping{e, dem::laws::tsuji_factor(e)};
+    const double shear = unit(rng) < 0.1 ? 0.0 : modulus / (2.0 + unit(rng));
+    law.tangential = dem::Mindlin8GTangential{{shear, unit(rng) < 0.1 ? 0.0 : unit(rng), ratio}};
+    law.policies.mindlin_form = dem::MindlinForm::incremental;
+  } else {
+    if (c.normal == dem::BatchLawKind::linear) {
+      law.normal = dem::LinearNormal{1e4 + 1e5 * unit(rng)};
+    } else {
+      law.normal = dem::HertzNormal{1e8 + 1e9 * unit(rng)};
+    }
+    law.damping = dem::LammpsMassVelocityDamping{100.0 * unit(rng)};
+    const double kt = unit(rng) < 0.1 ? 0.0 : 1e4 * unit(rng);
+    law.tangential = dem::SpringCoulombTangential{kt, unit(rng) < 0.1 ? 0.0 : unit(rng), ratio};
+  }
   law.cohesion = dem::NoCohesion{};
   law.rolling = dem::NoRolling{};
   law.policies.tangential_history = c.history;
@@ -96,7 +111,13 @@ dem::PairLaw law_for(const Case& c, std::mt19937_64& rng) {
   return law;
 }
 
+/// The kernel's parameters of `law`, as the pair loop sets them.
 dem::BatchLaw batch_law_of(const dem::PairLaw& law) {
+  if (const auto* mindlin = std::get_if<dem::Mindlin8GTangential>(&law.tangential)) {
+    return {std::get<dem::HertzNormal>(law.normal).effective_modulus, std::get<dem::TsujiDamping>(law.damping).factor,
+            dem::laws::mindlin_stiffness_at_radius(mindlin->p.shear_modulus, 1.0), mindlin->p.friction,
+            mindlin->p.damping_ratio};
+  }
   const auto* linear = std::get_if<dem::LinearNormal>(&law.normal);
   const auto* hertz = std::get_if<dem::HertzNormal>(&law.normal);
   const auto& damping = std::get<dem::LammpsMassVelocityDamping>(law.damping);
@@ -121,7 +142,7 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
   std::vector<RandomPair> pairs;
   std::vector<dem::PairLaw> laws;
   dem::BatchPolicies policies;
-  policies.normal = c.normal;
+  policies.kind = c.normal;
   policies.lever_arm_radius = c.arm == dem::PairLeverArm::radius;
   policies.increment_project = c.history == dem::TangentialHistory::increment_project;
   policies.limit_elastic = c.limit == dem::FrictionLimit::elastic;
@@ -129,7 +150,7 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
   policies.contact_at_zero_overlap = c.zero_overlap;
   policies.zero_when_unloaded = c.unloaded == dem::UnloadedSlider::zero;
   for (std::uint32_t g = 0; g < lanes; ++g) {
-    pairs.push_back(random_pair(rng));
+    pairs.push_back(random_pair(rng, c.normal == dem::BatchLawKind::hertz_mindlin ? 1e-5 : 1.0));
     laws.push_back(law_for(c, rng));
     const RandomPair& r = pairs.back();
     dem::ContactBatch& b = *batch;
@@ -163,12 +184,23 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
       continue;
     }
     // Sliding when the tangential force sits at the Coulomb cap μ·basis.
-    const double elastic = c.normal == dem::BatchNormal::linear
+    const double elastic = c.normal == dem::BatchLawKind::linear
                                ? std::get<dem::LinearNormal>(laws[g].normal).stiffness * geometry.overlap
                                : dem::laws::hertz_force(std::get<dem::HertzNormal>(laws[g].normal).effective_modulus,
                                                         geometry.reduced_radius, geometry.overlap);
     const double basis = c.limit == dem::FrictionLimit::elastic ? std::abs(elastic) : std::abs(elastic + o.damping_force);
-    const double cap = std::get<dem::SpringCoulombTangential>(laws[g].tangential).friction * basis;
+    const double friction = std::visit(
+        [](const auto& t) {
+          if constexpr (requires { t.p.friction; }) {
+            return t.p.friction;
+          } else if constexpr (requires { t.friction; }) {
+            return t.friction;
+          } else {
+            return 0.0;
+          }
+        },
+        laws[g].tangential);
+    const double cap = friction * basis;
     const double tangential = (o.force_on_p - o.normal_force * geometry.normal).norm();
     const bool slid = cap > 0.0 && tangential >= cap * (1.0 - 1e-9);
     (slid ? reached.sliding : reached.sticking) += 1;
@@ -194,9 +226,10 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
 }
 
 TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
-  Reached reached;
+  Reached reached;  // the spring–Coulomb families
+  Reached mindlin;  // Hertz with Tsuji's dashpot and incremental Mindlin friction
   std::uint64_t seed = 20261204;
-  for (const auto normal : {dem::BatchNormal::linear, dem::BatchNormal::hertz}) {
+  for (const auto normal : {dem::BatchLawKind::linear, dem::BatchLawKind::hertz, dem::BatchLawKind::hertz_mindlin}) {
     for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius}) {
       for (const auto history : {dem::TangentialHistory::project_rescale, dem::TangentialHistory::increment_project}) {
         for (const auto limit : {dem::FrictionLimit::total, dem::FrictionLimit::elastic,
@@ -209,9 +242,10 @@ TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
                 // Batches of every length up to a full one, so the vector loops' tails run too;
                 // one step into the contact, and at its first evaluation (elapsed 0).
                 const auto lanes = static_cast<std::uint32_t>(1 + seed % dem::kContactBatch);
-                check_case(c, seed++, lanes, 1e-6, reached);
-                check_case(c, seed++, dem::kContactBatch, 1e-6, reached);
-                check_case(c, seed++, dem::kContactBatch, 0.0, reached);
+                Reached& tally = normal == dem::BatchLawKind::hertz_mindlin ? mindlin : reached;
+                check_case(c, seed++, lanes, 1e-6, tally);
+                check_case(c, seed++, dem::kContactBatch, 1e-6, tally);
+                check_case(c, seed++, dem::kContactBatch, 0.0, tally);
               }
             }
           }
@@ -224,6 +258,13 @@ TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
   EXPECT_GT(reached.sticking, 1000);
   EXPECT_GT(reached.apart, 1000);
   EXPECT_GT(reached.dropped, 20);
+  EXPECT_GT(mindlin.sliding, 1000);
+  EXPECT_GT(mindlin.sticking, 1000);
+  EXPECT_GT(mindlin.apart, 1000);
+  EXPECT_GT(mindlin.dropped, 20);
+  std::cout << "spring-Coulomb: " << reached.sliding << " sliding, " << reached.sticking << " sticking, " << reached.apart
+            << " apart, " << reached.dropped << " dropped; Mindlin: " << mindlin.sliding << ", " << mindlin.sticking
+            << ", " << mindlin.apart << ", " << mindlin.dropped << "\n";
 }
 
 }  // namespace
