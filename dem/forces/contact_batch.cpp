@@ -51,6 +51,9 @@ struct LaneGeometry {
 };
 
 /// pair_geometry for lane g into `geo`; `arm_factor` ½ or 0 gives the lever arm r − δ/2 or r.
+/// `RadiusVelocity` (PairLeverArm::radius_velocity): the contact-point velocity takes the radii
+/// r, the torques the lever arms.
+template <bool RadiusVelocity = false>
 [[gnu::always_inline]] inline void lane_geometry(const ContactBatch& b, std::uint32_t g, double arm_factor,
                                                  LaneGeometry& geo) noexcept {
   const double rp = b.rp[g];
@@ -66,7 +69,12 @@ struct LaneGeometry {
   const V3 uq{b.uqx[g], b.uqy[g], b.uqz[g]};
   const V3 wp{b.wpx[g], b.wpy[g], b.wpz[g]};
   const V3 wq{b.wqx[g], b.wqy[g], b.wqz[g]};
-  const V3 contact_velocity = (up + cross(wp, geo.branch_p)) - (uq + cross(wq, geo.branch_q));
+  V3 contact_velocity;
+  if constexpr (RadiusVelocity) {
+    contact_velocity = (up - rp * cross(wp, geo.normal)) - (uq + rq * cross(wq, geo.normal));
+  } else {
+    contact_velocity = (up + cross(wp, geo.branch_p)) - (uq + cross(wq, geo.branch_q));
+  }
   geo.normal_speed = dot(contact_velocity, geo.normal);
   geo.tangential_velocity = contact_velocity - geo.normal_speed * geo.normal;
   geo.reduced_mass = 1.0 / (b.mp[g] + b.mq[g]);
@@ -109,6 +117,44 @@ template <bool IncrementProject>
   b.sz[g] = next_slip.z;
 }
 
+/// The yes/no policies as the numbers the lane loops read (see evaluate_lanes).
+struct PolicyNumbers {
+  double arm_factor;      ///< lever arm r − f δ: f = ½, or 0 under PairLeverArm::radius
+  double basis_damping;   ///< Coulomb basis |F_e + d F_d|: d = 0 under FrictionLimit::elastic, else 1
+  double clamp_below;     ///< the tensile clamp acts when F_e + F_d is below this: 0, or −∞ (never)
+  double unloaded_below;  ///< |ς|² at or below this drops a capped force: 0 under UnloadedSlider::zero, −1 (never) else
+};
+
+/// The policies' numbers.
+[[nodiscard]] inline PolicyNumbers policy_numbers(const BatchPolicies& p) noexcept {
+  return {p.lever_arm_radius ? 0.0 : 0.5, p.limit_elastic ? 0.0 : 1.0,
+          p.clamp_tensile ? 0.0 : -std::numeric_limits<double>::infinity(), p.zero_when_unloaded ? 0.0 : -1.0};
+}
+
+/// A lane's normal force, spring F_e plus dashpot −η u_n (the dashpot reduced to −F_e where the
+/// clamp applies), and the Coulomb basis |F_e + d F_d| (evaluate_contact_in's order).
+[[gnu::always_inline]] inline void normal_force_and_basis(double elastic, double eta, double normal_speed,
+                                                          const PolicyNumbers& k, double& normal_force,
+                                                          double& basis) noexcept {
+  double damping = -eta * normal_speed;
+  damping = elastic + damping < k.clamp_below ? -elastic : damping;
+  normal_force = elastic + damping + 0.0;
+  basis = std::abs(elastic + k.basis_damping * damping);
+}
+
+/// Coulomb's cap on a trial tangential force: `sliding` when |trial| exceeds the cap, `capped` the
+/// trial scaled to the cap, `dropped` when UnloadedSlider::zero removes the force of a slider with
+/// nothing stored (|ς|² = 0 exactly when |ς| = 0), `friction` the force that acts.
+[[gnu::always_inline]] inline void coulomb_cap(V3 trial, V3 integrated, double cap, const PolicyNumbers& k,
+                                               bool& sliding, bool& dropped, V3& capped, V3& friction) noexcept {
+  const double magnitude = std::sqrt(dot(trial, trial));
+  sliding = magnitude > cap;
+  // `&`, not `&&`: a short circuit stops GCC vectorising the loop.
+  dropped = sliding & (dot(integrated, integrated) <= k.unloaded_below);
+  capped = trial * (cap / magnitude);
+  friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
+}
+
 /// The loop over lanes for one normal law and one tangential-history rule. The other policies
 /// enter as numbers, so that no select depends on a condition that is the same for every lane
 /// (which the vectoriser cannot mask): the lever arm r − f δ with f = ½ or 0 (exactly r − δ/2,
@@ -117,11 +163,7 @@ template <bool IncrementProject>
 template <BatchLawKind Normal, bool IncrementProject>
 [[gnu::always_inline]] inline void evaluate_lanes(ContactBatch& b, std::uint32_t n, const BatchPolicies& p,
                                                   double elapsed) noexcept {
-  const double arm_factor = p.lever_arm_radius ? 0.0 : 0.5;
-  const double basis_damping = p.limit_elastic ? 0.0 : 1.0;
-  const double clamp_below = p.clamp_tensile ? 0.0 : -std::numeric_limits<double>::infinity();
-  // |ς|² at or below this drops a capped force: 0 under UnloadedSlider::zero, never (−1) else.
-  const double unloaded_below = p.zero_when_unloaded ? 0.0 : -1.0;
+  const PolicyNumbers k = policy_numbers(p);
   for (std::uint32_t g = 0; g < n; ++g) {
     const double k_normal = b.normal[g];
     const double rate = b.rate[g];
@@ -129,7 +171,7 @@ template <BatchLawKind Normal, bool IncrementProject>
     const double mu = b.mu[g];
     const double ratio = b.ratio[g];
     LaneGeometry geo;
-    lane_geometry(b, g, arm_factor, geo);
+    lane_geometry(b, g, k.arm_factor, geo);
     const double overlap = geo.overlap;
 
     // Normal spring (zero force where the lane is not in contact; such lanes are discarded).
@@ -141,10 +183,9 @@ template <BatchLawKind Normal, bool IncrementProject>
     }
     // Mass-scaled dashpot; none between two fixed spheres (m* = ∞).
     const double eta = std::isfinite(geo.reduced_mass) ? rate * geo.reduced_mass : 0.0;
-    double damping = -eta * geo.normal_speed;
-    damping = elastic + damping < clamp_below ? -elastic : damping;
-    const double normal_force = elastic + damping + 0.0;
-    const double basis = std::abs(elastic + basis_damping * damping);
+    double normal_force = 0.0;
+    double basis = 0.0;
+    normal_force_and_basis(elastic, eta, geo.normal_speed, k, normal_force, basis);
 
     // Spring–Coulomb friction on the slip carried into the tangent plane.
     const V3 carried = lane_carried_slip<IncrementProject>(b, g, geo.normal);
@@ -155,14 +196,13 @@ template <BatchLawKind Normal, bool IncrementProject>
     const V3 integrated = carried + tangential_velocity * elapsed;
     const V3 stored = select(spring, integrated, V3{0.0, 0.0, 0.0});
     const V3 trial = -kt * stored - eta_t * tangential_velocity;
-    const double magnitude = std::sqrt(dot(trial, trial));
     const double cap = limit < 0.0 ? 0.0 : limit;
-    const bool sliding = magnitude > cap;
     // UnloadedSlider::zero: a capped slider with nothing stored gives no force and keeps ς = 0.
-    // |ς|² = 0 exactly when |ς| = 0. `&`, not `&&`: a short circuit stops GCC vectorising the loop.
-    const bool dropped = sliding & (dot(integrated, integrated) <= unloaded_below);
-    const V3 capped = trial * (cap / magnitude);
-    const V3 friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
+    bool sliding = false;
+    bool dropped = false;
+    V3 capped;
+    V3 friction;
+    coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
     const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
     const V3 next_slip = select(sliding && spring && !dropped, truncated, stored);
     store_lane(b, g, geo, normal_force, friction, next_slip);
@@ -171,14 +211,12 @@ template <BatchLawKind Normal, bool IncrementProject>
 
 /// The loop over lanes for Hertz with Tsuji's dashpot and incremental Mindlin friction (the
 /// arithmetic of HertzNormal, TsujiDamping and incremental_mindlin_response), for one
-/// tangential-history rule; the other policies enter as numbers, as in evaluate_lanes.
-template <bool IncrementProject>
+/// tangential-history rule and one contact-velocity rule (lane_geometry); the other policies
+/// enter as numbers, as in evaluate_lanes.
+template <bool IncrementProject, bool RadiusVelocity>
 [[gnu::always_inline]] inline void evaluate_mindlin_lanes(ContactBatch& b, std::uint32_t n, const BatchPolicies& p,
                                                           double elapsed) noexcept {
-  const double arm_factor = p.lever_arm_radius ? 0.0 : 0.5;
-  const double basis_damping = p.limit_elastic ? 0.0 : 1.0;
-  const double clamp_below = p.clamp_tensile ? 0.0 : -std::numeric_limits<double>::infinity();
-  const double unloaded_below = p.zero_when_unloaded ? 0.0 : -1.0;
+  const PolicyNumbers k = policy_numbers(p);
   for (std::uint32_t g = 0; g < n; ++g) {
     const double modulus = b.normal[g];
     const double alpha = b.rate[g];
@@ -188,7 +226,7 @@ template <bool IncrementProject>
     const double rp = b.rp[g];
     const double rq = b.rq[g];
     LaneGeometry geo;
-    lane_geometry(b, g, arm_factor, geo);
+    lane_geometry<RadiusVelocity>(b, g, k.arm_factor, geo);
     const double overlap = geo.overlap;
     const double reduced_radius = rp * rq / (rp + rq);
 
@@ -199,10 +237,9 @@ template <bool IncrementProject>
     const double secant = laws::secant_stiffness(elastic, overlap, tangent);
     const double coefficient = laws::tsuji_damping_coefficient(alpha, geo.reduced_mass, secant);
     const double eta = std::isfinite(geo.reduced_mass) ? coefficient : 0.0;
-    double damping = -eta * geo.normal_speed;
-    damping = elastic + damping < clamp_below ? -elastic : damping;
-    const double normal_force = elastic + damping + 0.0;
-    const double basis = std::abs(elastic + basis_damping * damping);
+    double normal_force = 0.0;
+    double basis = 0.0;
+    normal_force_and_basis(elastic, eta, geo.normal_speed, k, normal_force, basis);
 
     // Incremental Mindlin: σ ← σ + a u_t Δt at the contact radius a = √(R* δ), F = −c σ − η_t u_t.
     const double a = laws::mindlin_contact_radius(reduced_radius, overlap);
@@ -213,11 +250,11 @@ template <bool IncrementProject>
     const double limit = mu * basis;
     const double cap = limit < 0.0 ? 0.0 : limit;
     const V3 trial = -c * integrated - eta_t * tangential_velocity;
-    const double magnitude = std::sqrt(dot(trial, trial));
-    const bool sliding = magnitude > cap;
-    const bool dropped = sliding & (dot(integrated, integrated) <= unloaded_below);
-    const V3 capped = trial * (cap / magnitude);
-    const V3 friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
+    bool sliding = false;
+    bool dropped = false;
+    V3 capped;
+    V3 friction;
+    coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
     const V3 truncated = select(c > 0.0, -(capped + eta_t * tangential_velocity) / c, V3{0.0, 0.0, 0.0});
     const V3 next_slip = select(sliding & !dropped, truncated, integrated);
     store_lane(b, g, geo, normal_force, friction, next_slip);
@@ -233,9 +270,15 @@ template <bool IncrementProject>
                                                                       double elapsed) noexcept {
   if (policies.kind == BatchLawKind::hertz_mindlin) {
     if (policies.increment_project) {
-      evaluate_mindlin_lanes<true>(batch, n, policies, elapsed);
+      if (policies.radius_velocity) {
+        evaluate_mindlin_lanes<true, true>(batch, n, policies, elapsed);
+      } else {
+        evaluate_mindlin_lanes<true, false>(batch, n, policies, elapsed);
+      }
+    } else if (policies.radius_velocity) {
+      evaluate_mindlin_lanes<false, true>(batch, n, policies, elapsed);
     } else {
-      evaluate_mindlin_lanes<false>(batch, n, policies, elapsed);
+      evaluate_mindlin_lanes<false, false>(batch, n, policies, elapsed);
     }
     return;
   }

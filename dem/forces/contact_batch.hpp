@@ -30,11 +30,13 @@ enum class BatchLawKind : std::uint8_t {
 
 /// The contact model's policies as the batch kernel reads them (values of ContactPolicies and
 /// PairLeverArm, docs/physics.md). The kernel handles every combination except the lever arm
-/// PairLeverArm::radius_velocity and yade_incident and the history rule yade_rotate, which the
-/// pair loop leaves to evaluate_contact; of the Mindlin law, the incremental form only.
+/// PairLeverArm::yade_incident (and radius_velocity outside the Mindlin law) and the history rule
+/// yade_rotate, which the pair loop leaves to evaluate_contact; of the Mindlin law, the
+/// incremental form only.
 struct BatchPolicies {
   BatchLawKind kind = BatchLawKind::linear;  ///< the law the batch evaluates
   bool lever_arm_radius = false;          ///< PairLeverArm::radius (else contact_point, r − δ/2)
+  bool radius_velocity = false;           ///< PairLeverArm::radius_velocity (hertz_mindlin only)
   bool increment_project = false;         ///< TangentialHistory::increment_project (else project_rescale)
   bool limit_elastic = false;             ///< FrictionLimit::elastic (else |F_e + F_d|: the others without cohesion)
   bool clamp_tensile = false;             ///< ContactPolicies::clamp_tensile

@@ -45,15 +45,17 @@ template <> struct BatchFamily<HertzMindlinLaw> {
 };
 
 /// True when the batched kernel evaluates a law of batch family `Family` under these policies: the
-/// r − δ/2 and r lever arms, the two LAMMPS history rules, and of Mindlin the incremental form.
+/// r − δ/2 and r lever arms (and for Mindlin the radius_velocity one), the two LAMMPS history
+/// rules, and of Mindlin the incremental form.
 template <class Family>
 [[nodiscard]] bool batch_covers(const ContactPolicies& p, PairLeverArm arm) noexcept {
   if constexpr (!Family::kBatched) {
     return false;
   } else {
-    return arm != PairLeverArm::radius_velocity && arm != PairLeverArm::yade_incident &&
+    constexpr bool kMindlin = Family::kKind == BatchLawKind::hertz_mindlin;
+    return arm != PairLeverArm::yade_incident && (kMindlin || arm != PairLeverArm::radius_velocity) &&
            p.tangential_history != TangentialHistory::yade_rotate &&
-           (Family::kKind != BatchLawKind::hertz_mindlin || p.mindlin_form == MindlinForm::incremental);
+           (!kMindlin || p.mindlin_form == MindlinForm::incremental);
   }
 }
 
@@ -84,6 +86,7 @@ template <class Normal, BatchLawKind Kind>
   BatchPolicies b;
   b.kind = kind;
   b.lever_arm_radius = arm == PairLeverArm::radius;
+  b.radius_velocity = arm == PairLeverArm::radius_velocity;
   b.increment_project = p.tangential_history == TangentialHistory::increment_project;
   b.limit_elastic = p.friction_limit == FrictionLimit::elastic;
   b.clamp_tensile = p.clamp_tensile;

@@ -144,6 +144,7 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
   dem::BatchPolicies policies;
   policies.kind = c.normal;
   policies.lever_arm_radius = c.arm == dem::PairLeverArm::radius;
+  policies.radius_velocity = c.arm == dem::PairLeverArm::radius_velocity;
   policies.increment_project = c.history == dem::TangentialHistory::increment_project;
   policies.limit_elastic = c.limit == dem::FrictionLimit::elastic;
   policies.clamp_tensile = c.clamp;
@@ -230,7 +231,10 @@ TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
   Reached mindlin;  // Hertz with Tsuji's dashpot and incremental Mindlin friction
   std::uint64_t seed = 20261204;
   for (const auto normal : {dem::BatchLawKind::linear, dem::BatchLawKind::hertz, dem::BatchLawKind::hertz_mindlin}) {
-    for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius}) {
+    for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius,
+                           dem::PairLeverArm::radius_velocity}) {
+      // The r contact velocity with r − δ/2 lever arms: the Mindlin family's only.
+      if (arm == dem::PairLeverArm::radius_velocity && normal != dem::BatchLawKind::hertz_mindlin) continue;
       for (const auto history : {dem::TangentialHistory::project_rescale, dem::TangentialHistory::increment_project}) {
         for (const auto limit : {dem::FrictionLimit::total, dem::FrictionLimit::elastic,
                                  dem::FrictionLimit::elastic_damping, dem::FrictionLimit::jkr_shifted,
