@@ -85,16 +85,22 @@ TEST(BatchedPairLoop, ALedgerNeverChangesTheTrajectory) {
   const int steps = test_support::full_or_sanitized(300, 100);
   std::uint32_t seed = 31;
   for (const char* normal : {"linear", "hertz", "hertz_mindlin"}) {
+    int arm_index = 0;
     for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius,
                            dem::PairLeverArm::radius_velocity}) {
+      ++arm_index;
       if (arm == dem::PairLeverArm::radius_velocity && std::string(normal) != "hertz_mindlin") continue;
+      int history_index = 0;
       for (const auto history : {dem::TangentialHistory::project_rescale, dem::TangentialHistory::increment_project}) {
         const dem::SimulationSetup setup = batched_box(seed++, normal, arm, history);
+        // Under the sanitizers every law meets every arm and both history rules, the rules
+        // alternating over the arms, without the 2-thread rerun (thread counts: ManyBodyDeterminism).
+        if (test_support::kSanitized && (arm_index + history_index++) % 2 == 0) continue;
         const std::string what = std::string(normal) + " arm " + std::to_string(static_cast<int>(arm)) +
                                  " history " + std::to_string(static_cast<int>(history));
         const Snapshot batched = run(setup, false, 1, steps);
         expect_same(batched, run(setup, true, 1, steps), what + ", ledger");
-        expect_same(batched, run(setup, false, 2, steps), what + ", 2 threads");
+        if (!test_support::kSanitized) expect_same(batched, run(setup, false, 2, steps), what + ", 2 threads");
       }
     }
   }
