@@ -48,6 +48,7 @@ struct LaneGeometry {
   V3 tangential_velocity;   ///< [m/s]
   double normal_speed;      ///< contact velocity along the normal [m/s]
   double reduced_mass;      ///< m* [kg], ∞ between two fixed spheres
+  double reduced_radius;    ///< R* = r_p r_q / (r_p + r_q) [m]
 };
 
 /// pair_geometry for lane g into `geo`; `arm_factor` ½ or 0 gives the lever arm r − δ/2 or r.
@@ -78,6 +79,7 @@ template <bool RadiusVelocity = false>
   geo.normal_speed = dot(contact_velocity, geo.normal);
   geo.tangential_velocity = contact_velocity - geo.normal_speed * geo.normal;
   geo.reduced_mass = 1.0 / (b.mp[g] + b.mq[g]);
+  geo.reduced_radius = rp * rq / (rp + rq);
 }
 
 /// The committed slip of lane g carried into the current tangent plane (carried_slip under
@@ -179,7 +181,7 @@ template <BatchLawKind Normal, bool IncrementProject>
     if constexpr (Normal == BatchLawKind::linear) {
       elastic = laws::linear_spring_force(k_normal, overlap);
     } else {
-      elastic = laws::hertz_force(k_normal, b.rp[g] * b.rq[g] / (b.rp[g] + b.rq[g]), overlap);
+      elastic = laws::hertz_force(k_normal, geo.reduced_radius, overlap);
     }
     // Mass-scaled dashpot; none between two fixed spheres (m* = ∞).
     const double eta = std::isfinite(geo.reduced_mass) ? rate * geo.reduced_mass : 0.0;
@@ -223,12 +225,10 @@ template <bool IncrementProject, bool RadiusVelocity>
     const double c = b.kt[g];
     const double mu = b.mu[g];
     const double ratio = b.ratio[g];
-    const double rp = b.rp[g];
-    const double rq = b.rq[g];
     LaneGeometry geo;
     lane_geometry<RadiusVelocity>(b, g, k.arm_factor, geo);
     const double overlap = geo.overlap;
-    const double reduced_radius = rp * rq / (rp + rq);
+    const double reduced_radius = geo.reduced_radius;
 
     // Hertz spring and its tangent stiffness (both zero out of contact).
     const double elastic = laws::hertz_force(modulus, reduced_radius, overlap);

@@ -65,8 +65,7 @@ template <class Normal, BatchLawKind Kind>
   if constexpr (Kind == BatchLawKind::hertz_mindlin) {
     const auto& tangential = *std::get_if<Mindlin8GTangential>(&law.tangential);
     return {std::get_if<HertzNormal>(&law.normal)->effective_modulus, std::get_if<TsujiDamping>(&law.damping)->factor,
-            laws::mindlin_stiffness_at_radius(tangential.p.shear_modulus, 1.0), tangential.p.friction,
-            tangential.p.damping_ratio};
+            tangential.stiffness_per_radius(), tangential.p.friction, tangential.p.damping_ratio};
   } else {
     const auto& normal = *std::get_if<Normal>(&law.normal);
     const auto& damping = *std::get_if<LammpsMassVelocityDamping>(&law.damping);
@@ -81,19 +80,6 @@ template <class Normal, BatchLawKind Kind>
   }
 }
 
-/// The batch kernel's view of the model's policies.
-[[nodiscard]] BatchPolicies batch_policies(BatchLawKind kind, const ContactPolicies& p, PairLeverArm arm) noexcept {
-  BatchPolicies b;
-  b.kind = kind;
-  b.lever_arm_radius = arm == PairLeverArm::radius;
-  b.radius_velocity = arm == PairLeverArm::radius_velocity;
-  b.increment_project = p.tangential_history == TangentialHistory::increment_project;
-  b.limit_elastic = p.friction_limit == FrictionLimit::elastic;
-  b.clamp_tensile = p.clamp_tensile;
-  b.contact_at_zero_overlap = p.contact_at_zero_overlap;
-  b.zero_when_unloaded = p.unloaded_slider == UnloadedSlider::zero;
-  return b;
-}
 
 /// The per-sphere inputs of the geometry, with a prescribed motion's velocity when it has one.
 inline SphereState sphere_at(const PairLoopInput& in, std::uint32_t i, double x, double y, double z) noexcept {
@@ -385,6 +371,25 @@ EnergyTotals pair_loop_for(const PairLoopInput& in, NeighborList& list, std::uin
 }
 
 }  // namespace
+
+BatchPolicies batch_policies(BatchLawKind kind, const ContactPolicies& p, PairLeverArm arm) noexcept {
+  BatchPolicies b;
+  b.kind = kind;
+  b.lever_arm_radius = arm == PairLeverArm::radius;
+  b.radius_velocity = arm == PairLeverArm::radius_velocity;
+  b.increment_project = p.tangential_history == TangentialHistory::increment_project;
+  b.limit_elastic = p.friction_limit == FrictionLimit::elastic;
+  b.clamp_tensile = p.clamp_tensile;
+  b.contact_at_zero_overlap = p.contact_at_zero_overlap;
+  b.zero_when_unloaded = p.unloaded_slider == UnloadedSlider::zero;
+  return b;
+}
+
+BatchLaw batch_law_of(const PairLaw& law) noexcept {
+  if (ChuteLaw::holds(law)) return batch_law<LinearNormal, BatchLawKind::linear>(law);
+  if (HertzBoxLaw::holds(law)) return batch_law<HertzNormal, BatchLawKind::hertz>(law);
+  return batch_law<HertzNormal, BatchLawKind::hertz_mindlin>(law);
+}
 
 EnergyTotals run_pair_loop(const PairLoopInput& in, NeighborList& list, std::uint32_t slab, double* force,
                            double* torque) {

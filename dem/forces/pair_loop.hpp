@@ -5,6 +5,7 @@
 #include <span>
 
 #include "dem/contact/pair_table.hpp"
+#include "dem/forces/contact_batch.hpp"
 #include "dem/forces/energy_ledger.hpp"
 #include "dem/neighbors/neighbor_list.hpp"
 
@@ -48,5 +49,13 @@ struct PairLoopInput {
 /// current once every slab has run.
 EnergyTotals run_pair_loop(const PairLoopInput& in, NeighborList& list, std::uint32_t slab, double* force,
                            double* torque);
+
+/// The batched kernel's parameters of `law`, as the pair loop gives them to its lanes; `law`
+/// holds one of the kernel's families (linear or Hertz, mass-scaled dashpot, spring–Coulomb; or
+/// Hertz, Tsuji, Mindlin 8 G*), with no cohesion and no rolling resistance.
+[[nodiscard]] BatchLaw batch_law_of(const PairLaw& law) noexcept;
+
+/// The batched kernel's view of a model's policies, for a law of kind `kind` under lever arm `arm`.
+[[nodiscard]] BatchPolicies batch_policies(BatchLawKind kind, const ContactPolicies& p, PairLeverArm arm) noexcept;
 
 }  // namespace dem

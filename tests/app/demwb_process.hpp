@@ -60,18 +60,30 @@ inline fs::path scratch(const std::string& name) {
 
 /// The text of canonical case `name` without its `matched = [...]` line: a run of it goes to the
 /// engines a test names and no further (the line adds the reference codes and the core in their
-/// numerics to every run, and with them their time-step checks).
-inline std::string canonical_text_unmatched(const std::string& name) {
+/// numerics to every run, and with them their time-step checks). A non-empty `engines` (a TOML
+/// array, e.g. `["inhouse", "analytic"]`) also replaces the case's `engines = [...]` line.
+inline std::string canonical_text_unmatched(const std::string& name, const std::string& engines = "") {
   const std::string text = support::read_file(canonical(name));
   std::string kept;
+  bool dropped = false;
+  bool listed = false;
   std::size_t at = 0;
   while (at < text.size()) {
     const std::size_t end = std::min(text.find('\n', at), text.size());
-    const std::string line = text.substr(at, end - at);
-    if (line.rfind("matched = ", 0) != 0) kept += line + "\n";
+    std::string line = text.substr(at, end - at);
     at = end + 1;
+    if (line.rfind("matched = ", 0) == 0) {
+      dropped = true;
+      continue;
+    }
+    if (!engines.empty() && line.rfind("engines = ", 0) == 0) {
+      line = "engines = " + engines;
+      listed = true;
+    }
+    kept += line + "\n";
   }
-  EXPECT_NE(kept.size(), text.size()) << name << " has no matched line to drop";
+  EXPECT_TRUE(dropped) << name << " has no matched line to drop";
+  EXPECT_TRUE(engines.empty() || listed) << name << " has no engines line to replace";
   return kept;
 }
 

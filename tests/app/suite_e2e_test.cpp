@@ -27,16 +27,8 @@ bool installed(const std::string& program) { return support::find_program(progra
 /// A one-case suite: the canonical single collision on the in-house core, the closed form and
 /// LAMMPS only (no matched runs), whatever engines the canonical file lists.
 fs::path lammps_suite() {
-  std::string text = support::read_file(canonical("single_collision"));
-  std::string kept;
-  for (std::size_t at = 0; at < text.size();) {
-    const auto end = std::min(text.find('\n', at), text.size());
-    std::string line = text.substr(at, end - at);
-    if (line.rfind("engines = ", 0) == 0) line = "engines = [\"inhouse\", \"analytic\", \"lammps\"]";
-    if (line.rfind("matched = ", 0) != 0) kept += line + "\n";
-    at = end + 1;
-  }
-  EXPECT_NE(kept.find("engines = [\"inhouse\", \"analytic\", \"lammps\"]"), std::string::npos);
+  const std::string kept =
+      demwb_e2e::canonical_text_unmatched("single_collision", R"(["inhouse", "analytic", "lammps"])");
   const fs::path dir = scratch("suite_cached_cases");
   support::write_file(dir / "single_collision.toml", kept);
   return dir;

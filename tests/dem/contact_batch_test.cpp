@@ -3,6 +3,7 @@
 // every policy it accepts: the pair loop swaps one for the other depending on whether a run keeps
 // an energy ledger, so any difference would make a ledger change a trajectory.
 #include "dem/forces/contact_batch.hpp"
+#include "dem/forces/pair_loop.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +19,6 @@
 #include "dem/contact/contact_model.hpp"
 #include "dem/contact/laws/dashpot_restitution.hpp"
 #include "dem/contact/laws/hertz.hpp"
-#include "dem/contact/laws/mindlin_stiffness.hpp"
 
 namespace {
 
@@ -111,21 +111,6 @@ dem::PairLaw law_for(const Case& c, std::mt19937_64& rng) {
   return law;
 }
 
-/// The kernel's parameters of `law`, as the pair loop sets them.
-dem::BatchLaw batch_law_of(const dem::PairLaw& law) {
-  if (const auto* mindlin = std::get_if<dem::Mindlin8GTangential>(&law.tangential)) {
-    return {std::get<dem::HertzNormal>(law.normal).effective_modulus, std::get<dem::TsujiDamping>(law.damping).factor,
-            dem::laws::mindlin_stiffness_at_radius(mindlin->p.shear_modulus, 1.0), mindlin->p.friction,
-            mindlin->p.damping_ratio};
-  }
-  const auto* linear = std::get_if<dem::LinearNormal>(&law.normal);
-  const auto* hertz = std::get_if<dem::HertzNormal>(&law.normal);
-  const auto& damping = std::get<dem::LammpsMassVelocityDamping>(law.damping);
-  const auto& tangential = std::get<dem::SpringCoulombTangential>(law.tangential);
-  return {linear != nullptr ? linear->stiffness : hertz->effective_modulus, damping.rate, tangential.stiffness,
-          tangential.friction, tangential.damping_ratio};
-}
-
 /// Tallies of the branches the random pairs reached.
 struct Reached {
   int sliding = 0;
@@ -141,18 +126,13 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
   auto batch = std::make_unique<dem::ContactBatch>();
   std::vector<RandomPair> pairs;
   std::vector<dem::PairLaw> laws;
+  // The kernel's policies and parameters as the pair loop gives them (every law of a case has its
+  // policies); the comparison with evaluate_contact below checks that mapping too.
   dem::BatchPolicies policies;
-  policies.kind = c.normal;
-  policies.lever_arm_radius = c.arm == dem::PairLeverArm::radius;
-  policies.radius_velocity = c.arm == dem::PairLeverArm::radius_velocity;
-  policies.increment_project = c.history == dem::TangentialHistory::increment_project;
-  policies.limit_elastic = c.limit == dem::FrictionLimit::elastic;
-  policies.clamp_tensile = c.clamp;
-  policies.contact_at_zero_overlap = c.zero_overlap;
-  policies.zero_when_unloaded = c.unloaded == dem::UnloadedSlider::zero;
   for (std::uint32_t g = 0; g < lanes; ++g) {
     pairs.push_back(random_pair(rng, c.normal == dem::BatchLawKind::hertz_mindlin ? 1e-5 : 1.0));
     laws.push_back(law_for(c, rng));
+    policies = dem::batch_policies(c.normal, laws.back().policies, c.arm);
     const RandomPair& r = pairs.back();
     dem::ContactBatch& b = *batch;
     const dem::Vec3 d = r.p.position - r.q.position;
@@ -166,7 +146,7 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
     dem::set_lane(b.wpx, b.wpy, b.wpz, g, r.p.angular_velocity.data());
     dem::set_lane(b.wqx, b.wqy, b.wqz, g, r.q.angular_velocity.data());
     dem::set_lane(b.sx, b.sy, b.sz, g, r.slip.data());
-    dem::set_law(b, g, batch_law_of(laws.back()));
+    dem::set_law(b, g, dem::batch_law_of(laws.back()));
   }
   dem::evaluate_contact_batch(*batch, lanes, policies, elapsed);
   for (std::uint32_t g = 0; g < lanes; ++g) {

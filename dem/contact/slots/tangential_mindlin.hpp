@@ -125,12 +125,16 @@ struct MindlinTangential {
   static MindlinTangential from_pair(const PairProperties& pair) {
     return {MindlinParameters::from_pair(pair, "tangential = 'mindlin'")};
   }
+  /// The stiffness per unit contact radius, k_f / a = 16/3 G* [N/m²] (the incremental form's c).
+  [[nodiscard]] double stiffness_per_radius() const noexcept {
+    return laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, 1.0);
+  }
   /// Tangential force on p; updates next.tangential_slip.
   [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
                                             ContactHistory& next) const noexcept {
     const double a = mindlin_radius(in, t_in);
     if (in.policies.mindlin_form == MindlinForm::incremental) {
-      return incremental_mindlin_response(laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, 1.0), a,
+      return incremental_mindlin_response(stiffness_per_radius(), a,
                                           p.friction, p.damping_ratio, in, t_in, next);
     }
     const double k = laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, a);
@@ -138,7 +142,7 @@ struct MindlinTangential {
   }
   /// Energy the spring still holds when the bodies part (mindlin_committed_energy) [J].
   [[nodiscard]] double released_at_separation(const ContactInput& in) const noexcept {
-    return mindlin_committed_energy(laws::mindlin_thesis_stiffness_at_radius(p.shear_modulus, 1.0), in);
+    return mindlin_committed_energy(stiffness_per_radius(), in);
   }
 };
 
@@ -163,12 +167,16 @@ struct Mindlin8GTangential {
   static Mindlin8GTangential from_pair(const PairProperties& pair) {
     return {MindlinParameters::from_pair(pair, "tangential = 'mindlin_8g'")};
   }
+  /// The stiffness per unit contact radius, k_t / a = 8 G* [N/m²] (the incremental form's c).
+  [[nodiscard]] double stiffness_per_radius() const noexcept {
+    return laws::mindlin_stiffness_at_radius(p.shear_modulus, 1.0);
+  }
   /// Tangential force on p; updates next.tangential_slip.
   [[nodiscard]] TangentialResponse evaluate(const ContactInput& in, const TangentialInput& t_in,
                                             ContactHistory& next) const noexcept {
     const double a = mindlin_radius(in, t_in);
     if (in.policies.mindlin_form == MindlinForm::incremental) {
-      return incremental_mindlin_response(laws::mindlin_stiffness_at_radius(p.shear_modulus, 1.0), a, p.friction,
+      return incremental_mindlin_response(stiffness_per_radius(), a, p.friction,
                                           p.damping_ratio, in, t_in, next);
     }
     const double k = laws::mindlin_stiffness_at_radius(p.shear_modulus, a);
@@ -176,7 +184,7 @@ struct Mindlin8GTangential {
   }
   /// Energy the spring still holds when the bodies part (mindlin_committed_energy) [J].
   [[nodiscard]] double released_at_separation(const ContactInput& in) const noexcept {
-    return mindlin_committed_energy(laws::mindlin_stiffness_at_radius(p.shear_modulus, 1.0), in);
+    return mindlin_committed_energy(stiffness_per_radius(), in);
   }
 };
 
