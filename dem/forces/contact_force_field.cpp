@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include <fmt/format.h>
@@ -243,10 +244,6 @@ double ContactForceField::wall_reach_of(std::uint32_t i, std::uint32_t w) const 
 
 double ContactForceField::pack(const KinematicState& state) {
   const double t = state.time;
-  for (std::size_t m = 0; m < setup_.motions.size(); ++m) {
-    motion_position_[m] = setup_.motions[m].position(t);
-    motion_velocity_[m] = setup_.motions[m].velocity(t);
-  }
   const auto n = static_cast<std::int64_t>(packed_.size());
   const double* position = state.position.data();
   const double* built = built_position_.data();
@@ -276,15 +273,157 @@ double ContactForceField::pack(const KinematicState& state) {
     }
     return dx * dx + dy * dy + dz * dz;
   });
+  return pack_motions(t, worst);
+}
+
+double ContactForceField::pack_motions(double t, double worst) {
+  if (setup_.motions.empty()) return worst;
+  for (std::size_t m = 0; m < setup_.motions.size(); ++m) {
+    motion_position_[m] = setup_.motions[m].position(t);
+    motion_velocity_[m] = setup_.motions[m].velocity(t);
+  }
   // A sphere under prescribed motion is where its motion says, whatever the integrator did.
+  const bool wrapped = wrap_offset_.size() > 0;
   for (std::size_t m = 0; m < setup_.motions.size(); ++m) {
     const std::uint32_t i = setup_.motions[m].particle;
     Vec3 x = motion_position_[m];
-    if (offset != nullptr) x -= wrap_offset_.col(i);
+    if (wrapped) x -= wrap_offset_.col(i);
     packed_[i] = {x[0], x[1], x[2], half_reach_[i]};
     worst = std::max(worst, (x - built_position_.col(i)).squaredNorm());
   }
   return worst;
+}
+
+double ContactForceField::kick_drift_pack(KinematicState& state, const Accelerations& acc, double kick,
+                                          double drift, bool rotation) {
+  state.time += drift;
+  const auto n = static_cast<std::int64_t>(packed_.size());
+  double* const x = state.position.data();
+  double* const u = state.velocity.data();
+  double* const w = state.angular_velocity.data();
+  // a and α: as stored by the last step, or, when it owes its closing kick, derived from the
+  // forces it committed exactly as its accelerations' pass derived them (zero when fixed).
+  const bool derive = owed_.active;
+  const double close = owed_.kick;
+  const double* const stored_a = derive ? nullptr : acc.linear.data();
+  const double* const stored_alpha = derive ? nullptr : acc.angular.data();
+  const double* const committed_f = committed_force_.data();
+  const double* const committed_t = committed_torque_.data();
+  const double* const inverse_inertia = props_.inverse_inertia.data();
+  const std::uint8_t* const fixed = props_.fixed.data();
+  const double* const built = built_position_.data();
+  const double* const offset = wrap_offset_.size() > 0 ? wrap_offset_.data() : nullptr;
+  const double* const h = half_reach_.data();
+  PackedSphere* const out = packed_.data();
+  double* const force = force_.data();
+  double* const torque = torque_.data();
+  const bool gravity_only = setup_.fields.gravity_only();
+  const int threads = std::max(setup_.threads, 1);
+  // One component of one sphere: the owed closing kick and the opening kick of its velocity and
+  // spin, then the drift; returns the new coordinate.
+  const auto advance = [=](std::int64_t e, double a, double alpha, bool mobile) {
+    double v = u[e];
+    if (derive) v += close * a;
+    v += kick * a;
+    u[e] = v;
+    if (rotation) {
+      double spin = w[e];
+      if (derive) spin += close * alpha;
+      w[e] = spin + kick * alpha;
+    }
+    double p = x[e];
+    if (mobile) {
+      p += drift * v;
+      x[e] = p;
+    }
+    return p;
+  };
+  const double worst = parallel_max(threads, n, 0.0, [=, this](std::int64_t i) {
+    // Component by component in scalars: with the three as small arrays, GCC kept them on the
+    // stack and stored and reloaded them in mixed widths, stalling on store forwarding.
+    const std::int64_t c = 3 * i;
+    const bool mobile = fixed[i] == 0;
+    double a0 = 0.0, a1 = 0.0, a2 = 0.0;
+    double b0 = 0.0, b1 = 0.0, b2 = 0.0;
+    if (!derive) {
+      a0 = stored_a[c];
+      a1 = stored_a[c + 1];
+      a2 = stored_a[c + 2];
+      b0 = stored_alpha[c];
+      b1 = stored_alpha[c + 1];
+      b2 = stored_alpha[c + 2];
+    } else if (mobile) {
+      // As the accelerations' pass derived them from these forces (zero when fixed).
+      const double m = inertia_mass(i, gravity_only);
+      a0 = committed_f[c] / m;
+      a1 = committed_f[c + 1] / m;
+      a2 = committed_f[c + 2] / m;
+      b0 = inverse_inertia[i] * committed_t[c];
+      b1 = inverse_inertia[i] * committed_t[c + 1];
+      b2 = inverse_inertia[i] * committed_t[c + 2];
+    }
+    double px = advance(c, a0, b0, mobile);
+    double py = advance(c + 1, a1, b1, mobile);
+    double pz = advance(c + 2, a2, b2, mobile);
+    if (offset != nullptr) {
+      px -= offset[c];
+      py -= offset[c + 1];
+      pz -= offset[c + 2];
+    }
+    out[i] = {px, py, pz, h[i]};
+    // The evaluation's sums start from zero (cleared here, in the same pass over the spheres).
+    for (int k = 0; k < 3; ++k) {
+      force[c + k] = 0.0;
+      torque[c + k] = 0.0;
+    }
+    const double dx = px - built[c];
+    const double dy = py - built[c + 1];
+    const double dz = pz - built[c + 2];
+    return dx * dx + dy * dy + dz * dz;
+  });
+  owed_.active = false;
+  return pack_motions(state.time, worst);
+}
+
+bool ContactForceField::verlet_step(KinematicState& state, Accelerations& acc, double dt, bool rotation) {
+  // An owed kick belongs to the same scheme: the rotation flag cannot change between steps.
+  double worst = 0.0;
+  {
+    const ScopedSeconds timer(timing_.other);
+    worst = kick_drift_pack(state, acc, 0.5 * dt, dt, rotation);
+  }
+  weigh(0.5, 0.5);
+  // Forces see v(t + Δt/2), as in LAMMPS; the closing half kick rides on the last pass, or is owed.
+  if (defer_close_) {
+    evaluate_packed(state, dt, nullptr, true, FoldedKick{}, worst);
+    owed_ = {true, 0.5 * dt, rotation};
+    ++deferred_kicks_;
+  } else {
+    evaluate_packed(state, dt, &acc, true,
+                    FoldedKick{state.velocity.data(), state.angular_velocity.data(), 0.5 * dt, rotation}, worst);
+  }
+  return true;
+}
+
+void ContactForceField::settle(KinematicState& state, Accelerations& acc) {
+  if (!owed_.active) return;
+  const auto n = static_cast<Eigen::Index>(packed_.size());
+  acc.linear.resize(3, n);
+  acc.angular.resize(3, n);
+  const bool gravity_only = setup_.fields.gravity_only();
+  for (Eigen::Index c = 0; c < n; ++c) {
+    if (props_.fixed[static_cast<std::size_t>(c)] != 0) {
+      acc.linear.col(c).setZero();
+      acc.angular.col(c).setZero();
+    } else {
+      acc.linear.col(c) = committed_force_.col(c) / inertia_mass(c, gravity_only);
+      acc.angular.col(c) = props_.inverse_inertia[c] * committed_torque_.col(c);
+    }
+    for (Eigen::Index k = 0; k < 3; ++k) state.velocity(k, c) += owed_.kick * acc.linear(k, c);
+    if (!owed_.rotation) continue;
+    for (Eigen::Index k = 0; k < 3; ++k) state.angular_velocity(k, c) += owed_.kick * acc.angular(k, c);
+  }
+  owed_.active = false;
 }
 
 void ContactForceField::build_wall_list(double time, std::span<const std::uint32_t> new_of_old) {
@@ -324,11 +463,17 @@ void ContactForceField::rebuild(const KinematicState& state, std::span<const std
 
 void ContactForceField::evaluate(const KinematicState& state, double elapsed, Accelerations& out,
                                  bool commit, const FoldedKick& kick) {
+  if (owed_.active) throw std::logic_error("ContactForceField: an evaluation while a closing kick is owed (settle first)");
   double worst = 0.0;
   {
     const ScopedSeconds timer(timing_.other);
     worst = pack(state);
   }
+  evaluate_packed(state, elapsed, &out, commit, kick, worst);
+}
+
+void ContactForceField::evaluate_packed(const KinematicState& state, double elapsed, Accelerations* out,
+                                        bool commit, const FoldedKick& kick, double worst) {
   const double half_skin = 0.5 * setup_.neighbors.skin;
   double wall_travel = 0.0;
   for (const Wall& w : setup_.walls) {
@@ -496,11 +641,13 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
 }
 
 void ContactForceField::run_walls_and_fields(const KinematicState& state, double elapsed,
-                                             Accelerations& out, bool commit, const FoldedKick& kick) {
+                                             Accelerations* out, bool commit, const FoldedKick& kick) {
   const auto n = static_cast<std::uint32_t>(packed_.size());
   const auto cols = static_cast<Eigen::Index>(n);
-  out.linear.resize(3, cols);
-  out.angular.resize(3, cols);
+  if (out != nullptr) {
+    out->linear.resize(3, cols);
+    out->angular.resize(3, cols);
+  }
   const std::uint32_t chunks = std::max<std::uint32_t>(1, (n + kSphereChunk - 1) / kSphereChunk);
   chunk_totals_.assign(chunks, EnergyTotals{});
   if (!setup_.meshes.empty() && mesh_plans_.size() < chunks) mesh_plans_.resize(chunks);
@@ -513,25 +660,28 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   const int threads = std::max(setup_.threads, 1);
   const bool gravity_only = setup_.fields.gravity_only();
 
-  // The scheme's closing kick of sphere c, once its accelerations are known (as the scheme's
-  // own kick pass would do it, fixed spheres included).
-  const auto kick_sphere = [&](Eigen::Index c) {
+  // Stores sphere c's accelerations (when asked to) and gives it the scheme's closing kick (as
+  // the scheme's own kick pass would do it, fixed spheres included).
+  const auto finish_sphere = [&](Eigen::Index c, const Vec3& a, const Vec3& alpha) {
+    if (out != nullptr) {
+      out->linear.col(c) = a;
+      out->angular.col(c) = alpha;
+    }
     if (kick.velocity == nullptr) return;
     double* u = kick.velocity + 3 * c;
-    for (Eigen::Index k = 0; k < 3; ++k) u[k] += kick.kick * out.linear(k, c);
+    for (Eigen::Index k = 0; k < 3; ++k) u[k] += kick.kick * a[k];
     if (!kick.rotation) return;
     double* w = kick.angular_velocity + 3 * c;
-    for (Eigen::Index k = 0; k < 3; ++k) w[k] += kick.kick * out.angular(k, c);
+    for (Eigen::Index k = 0; k < 3; ++k) w[k] += kick.kick * alpha[k];
   };
+  const bool finishes = out != nullptr || kick.velocity != nullptr;
   parallel_for(threads, chunks, [&](std::uint32_t chunk) {
     EnergyTotals& sums = chunk_totals_[chunk];
     const std::uint32_t end = std::min(n, (chunk + 1) * kSphereChunk);
     for (std::uint32_t i = chunk * kSphereChunk; i < end; ++i) {
       const auto c = static_cast<Eigen::Index>(i);
       if (props_.fixed[i] != 0) {
-        out.linear.col(c).setZero();
-        out.angular.col(c).setZero();
-        kick_sphere(c);
+        if (finishes) finish_sphere(c, Vec3::Zero(), Vec3::Zero());
         continue;
       }
       // Sphere–wall contacts: the wall is an infinite-mass partner (m* = m, R* = r).
@@ -587,7 +737,6 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
         }
       }
       // External fields and accelerations of the mobile spheres.
-      double inertia_mass = props_.mass[c];
       if (gravity_only) {
         force_.col(c) += setup_.fields.weight(props_.mass[c]);
       } else {
@@ -595,11 +744,11 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
                             props_.density[c], props_.mass[c], t_now};
         force_.col(c) += setup_.fields.force(in);
         if (track) field_force_.col(c) = setup_.fields.work_force(in);
-        inertia_mass += setup_.fields.added_mass(props_.radius[c]);
       }
-      out.linear.col(c) = force_.col(c) / inertia_mass;
-      out.angular.col(c) = props_.inverse_inertia[c] * torque_.col(c);
-      kick_sphere(c);
+      // With the closing kick owed, kick_drift_pack derives a and α from these forces instead.
+      if (finishes) {
+        finish_sphere(c, force_.col(c) / inertia_mass(c, gravity_only), props_.inverse_inertia[c] * torque_.col(c));
+      }
     }
   });
   totals_ = EnergyTotals{};

@@ -69,6 +69,22 @@ class ContactForceField final : public ForceEvaluator {
   /// spheres fewer per step; the same arithmetic per sphere).
   void commit_and_kick(KinematicState& state, double elapsed, Accelerations& out, double kick,
                        bool rotation) override;
+  /// The velocity-Verlet step with the kick and drift fused into the packing pass and the
+  /// closing kick into the accelerations' pass (ForceEvaluator::verlet_step). Always fuses.
+  bool verlet_step(KinematicState& state, Accelerations& acc, double dt, bool rotation) override;
+  /// Asks verlet_step to leave the closing kick of the steps that follow owed (`defer` true) or
+  /// to give it (false): an owed kick rides on the next step's opening pass, where a_n is derived
+  /// again from the committed forces (bit for bit the stored one), so the step stores no
+  /// accelerations and the velocities get one pass fewer. Between steps the velocities then lack
+  /// the kick: only a caller that reads nothing before settle() may defer (Simulation::advance).
+  void defer_closing_kick(bool defer) noexcept { defer_close_ = defer; }
+  /// True when the last step left its closing kick owed.
+  [[nodiscard]] bool owes_closing_kick() const noexcept { return owed_.active; }
+  /// Steps so far that left their closing kick owed.
+  [[nodiscard]] std::uint64_t deferred_kicks() const noexcept { return deferred_kicks_; }
+  /// Gives an owed closing kick now (and stores the accelerations it used in `acc`); no-op when
+  /// none is owed.
+  void settle(KinematicState& state, Accelerations& acc);
   void weigh(double now, double next) noexcept override;
 
   /// Starts the work booking afresh: the forces of the next commit enter the first step with
@@ -170,13 +186,31 @@ class ContactForceField final : public ForceEvaluator {
   };
   void evaluate(const KinematicState& state, double elapsed, Accelerations& out, bool commit,
                 const FoldedKick& kick);
+  /// evaluate once the centres are packed (`worst`: the largest squared travel since the build);
+  /// `out` null: the accelerations are kicked with but not stored.
+  void evaluate_packed(const KinematicState& state, double elapsed, Accelerations* out, bool commit,
+                       const FoldedKick& kick, double worst);
+  /// Packs the wrapped centres, clears the force sums; returns the largest squared travel since
+  /// the last build.
   double pack(const KinematicState& state);
+  /// The spheres under prescribed motion at time t: their packed centres, and the travel `worst`
+  /// grown by theirs.
+  double pack_motions(double t, double worst);
+  /// velocity Verlet's opening pass, fused with pack: an owed closing kick, then u += kick·a
+  /// (ω += kick·α when `rotation`), x += drift·u unless fixed, time += drift, then packs. a and
+  /// α are `acc`'s, or, with a kick owed, derived from the committed forces.
+  double kick_drift_pack(KinematicState& state, const Accelerations& acc, double kick, double drift, bool rotation);
+  /// The mass sphere c accelerates with: its own, plus the fluid's added mass unless the only
+  /// field is gravity.
+  [[nodiscard]] double inertia_mass(Eigen::Index c, bool gravity_only) const noexcept {
+    return gravity_only ? props_.mass[c] : props_.mass[c] + setup_.fields.added_mass(props_.radius[c]);
+  }
   void rebuild(const KinematicState& state, std::span<const std::uint32_t> new_of_old);
   /// Builds the sphere–wall candidates from the packed centres at `time` (new_of_old: as rebuild).
   void build_wall_list(double time, std::span<const std::uint32_t> new_of_old);
   void observe(const KinematicState& state, double elapsed);
   void run_pairs(const KinematicState& state, double elapsed, bool commit);
-  void run_walls_and_fields(const KinematicState& state, double elapsed, Accelerations& out, bool commit,
+  void run_walls_and_fields(const KinematicState& state, double elapsed, Accelerations* out, bool commit,
                             const FoldedKick& kick);
   [[nodiscard]] SphereState sphere(const KinematicState& s, std::uint32_t i) const noexcept;
   [[nodiscard]] double wall_reach_of(std::uint32_t i, std::uint32_t w) const noexcept;
@@ -236,6 +270,15 @@ class ContactForceField final : public ForceEvaluator {
   void add_weighted_forces(double now, double next);
   std::vector<ContactObservation> observations_;
   LoopTiming timing_;
+  /// A closing kick owed by the last step (defer_closing_kick).
+  struct OwedKick {
+    bool active = false;
+    double kick = 0.0;
+    bool rotation = false;
+  };
+  OwedKick owed_;
+  bool defer_close_ = false;
+  std::uint64_t deferred_kicks_ = 0;
 };
 
 }  // namespace dem

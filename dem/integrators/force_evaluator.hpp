@@ -28,6 +28,19 @@ class ForceEvaluator {
       for (Eigen::Index k = 0; k < 3; ++k) state.angular_velocity(k, i) += kick * out.angular(k, i);
     }
   }
+  /// A whole velocity-Verlet step fused into the evaluator's own passes over the spheres, when it
+  /// offers one: u += ½Δt·a_n (ω += ½Δt·α_n when `rotation`) for every sphere, x += Δt·u for
+  /// those not fixed, time += Δt, then commit_and_kick(state, Δt, acc, ½Δt, rotation) — each
+  /// sphere's arithmetic exactly the scheme's. `acc` holds a_n on entry and a_{n+1} on return
+  /// (unless the evaluator was asked to defer the closing kick, which it then owes). False, with
+  /// nothing done, when it offers no such step.
+  virtual bool verlet_step(KinematicState& state, Accelerations& acc, double dt, bool rotation) {
+    static_cast<void>(state);
+    static_cast<void>(acc);
+    static_cast<void>(dt);
+    static_cast<void>(rotation);
+    return false;
+  }
   /// Says how the forces of the next evaluation (trial or commit) enter the velocity change:
   /// with weight `now` in the step under way and `next` in the following one (so that
   /// u_{n+1} − u_n = Δt Σ weight·F/m). An energy ledger books work with these weights; a scheme

@@ -48,6 +48,8 @@ class KickDrift : public Scheme {
   }
   /// True when the scheme integrates spins.
   [[nodiscard]] bool rotation() const noexcept { return rotation_; }
+  /// True when the scheme turns orientations (which the evaluator's fused step does not).
+  [[nodiscard]] bool turns_orientations() const noexcept { return rotation_ && orientation_; }
 
  private:
   bool rotation_;
@@ -62,6 +64,11 @@ class VelocityVerlet final : public KickDrift {
   [[nodiscard]] double start_weight() const noexcept override { return 0.5; }
   [[nodiscard]] bool books_work_exactly() const noexcept override { return true; }
   void step(KinematicState& state, Accelerations& acc, double dt, ForceEvaluator& f) override {
+    // An evaluator may fuse the kick and drift into its own pass over the spheres.
+    if (!turns_orientations() && f.verlet_step(state, acc, dt, rotation())) {
+      ++diagnostics_.force_evaluations;
+      return;
+    }
     kick_and_drift(state, acc, 0.5 * dt, dt);
     f.weigh(0.5, 0.5);
     // Forces see v(t + Δt/2), as in LAMMPS; the closing half kick rides on the evaluation's

@@ -92,8 +92,20 @@ void Simulation::step() {
     field_->book_step(velocity_before_, angular_before_, state_, dt_, rotation_, gravitational_energy());
   }
   if (sorts() && field_->list_builds() >= builds_at_last_sort_ + neighbors_.sort_every) {
+    field_->settle(state_, acc_);  // the reorder takes stored accelerations along
     reorder();
   }
+}
+
+void Simulation::advance(std::uint64_t count) {
+  // A ledger books velocities after every step, and a prescribed motion overwrites them there:
+  // both need each step's closing kick given at its end.
+  const bool defer = !track_energy_ && field_->motions().empty();
+  for (std::uint64_t k = 1; k <= count; ++k) {
+    field_->defer_closing_kick(defer && k < count);
+    step();
+  }
+  field_->defer_closing_kick(false);
 }
 
 void Simulation::reorder() {
