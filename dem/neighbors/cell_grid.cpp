@@ -44,15 +44,23 @@ void CellGrid::assign(std::span<const PackedSphere> spheres, std::span<const std
   for (std::size_t m = 0; m < members.size(); ++m) members_[cursor_[cell_of_[m]]++] = members[m];
 }
 
-std::array<int, 3> CellGrid::coordinates(double x, double y, double z) const noexcept {
-  const double p[3] = {x, y, z};
-  std::array<int, 3> c{};
-  for (int k = 0; k < 3; ++k) {
-    const double f = std::floor((p[k] - origin_[k]) / edge_[k]);
-    // NaN and points below the grid go to cell 0, points above it to the last cell.
-    c[k] = !(f >= 0.0) ? 0 : (f >= dims_[k] ? dims_[k] - 1 : static_cast<int>(f));
+void CellGrid::summarise(std::span<const std::uint32_t> tag) {
+  const std::size_t cells = start_.size() - 1;
+  tag_range_.resize(cells);
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (start_[c] == start_[c + 1]) {
+      tag_range_[c] = 0xFFFFU << 16U;  // empty: any tag (there is nothing to scan anyway)
+      continue;
+    }
+    std::uint32_t lo = 0xFFFFU;
+    std::uint32_t hi = 0;
+    for (std::uint32_t m = start_[c]; m < start_[c + 1]; ++m) {
+      const std::uint32_t t = tag[members_[m]];
+      lo = std::min(lo, t);
+      hi = std::max(hi, t);
+    }
+    tag_range_[c] = lo | (hi << 16U);
   }
-  return c;
 }
 
 }  // namespace dem

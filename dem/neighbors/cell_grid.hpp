@@ -25,7 +25,26 @@ class CellGrid {
               const Vec3& lo, const Vec3& hi, const PeriodicBox& box, double min_edge);
 
   /// Cell coordinates of a point (clamped into the grid).
-  [[nodiscard]] std::array<int, 3> coordinates(double x, double y, double z) const noexcept;
+  [[nodiscard]] std::array<int, 3> coordinates(double x, double y, double z) const noexcept {
+    const double p[3] = {x, y, z};
+    std::array<int, 3> c{};
+    for (int k = 0; k < 3; ++k) {
+      const double f = (p[k] - origin_[k]) / edge_[k];
+      // floor(f), which for 0 ≤ f < dims is the truncation (no call to floor); NaN and points
+      // below the grid go to cell 0, points at or above its top to the last cell.
+      c[k] = !(f >= 0.0) ? 0 : (f >= dims_[k] ? dims_[k] - 1 : static_cast<int>(f));
+    }
+    return c;
+  }
+  /// Records, per cell, the smallest and largest `tag` (indexed by sphere, each < 65,536) of its
+  /// members: the neighbour search skips cells that cannot hold a sphere it is looking for.
+  void summarise(std::span<const std::uint32_t> tag);
+  /// False when no member of cell c has tag a or tag b (by the range summarise() recorded).
+  [[nodiscard]] bool may_hold(std::size_t c, std::uint32_t a, std::uint32_t b) const noexcept {
+    const std::uint32_t lo = tag_range_[c] & 0xFFFFU;
+    const std::uint32_t hi = tag_range_[c] >> 16U;
+    return (a - lo <= hi - lo) | (b - lo <= hi - lo);  // unsigned: lo ≤ a ≤ hi, or lo ≤ b ≤ hi
+  }
   /// Linear index of cell coordinates.
   [[nodiscard]] std::size_t index(int cx, int cy, int cz) const noexcept {
     return (static_cast<std::size_t>(cz) * static_cast<std::size_t>(dims_[1]) +
@@ -42,7 +61,7 @@ class CellGrid {
   [[nodiscard]] const Vec3& edge() const noexcept { return edge_; }
   /// Bytes held.
   [[nodiscard]] std::size_t bytes() const noexcept {
-    return (start_.capacity() + members_.capacity()) * sizeof(std::uint32_t);
+    return (start_.capacity() + members_.capacity() + tag_range_.capacity()) * sizeof(std::uint32_t);
   }
 
  private:
@@ -53,6 +72,7 @@ class CellGrid {
   std::vector<std::uint32_t> members_;
   std::vector<std::uint32_t> cell_of_;  // scratch: cell of each member
   std::vector<std::uint32_t> cursor_;   // scratch: next free slot per cell
+  std::vector<std::uint32_t> tag_range_;  // per cell: smallest tag | largest tag << 16
 };
 
 }  // namespace dem

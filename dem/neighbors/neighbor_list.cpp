@@ -67,10 +67,8 @@ SizeClasses size_classes(std::span<const double> half_reach) {
   return out;
 }
 
-void AxisCells::fill(int c, int dims, double edge, double reach, bool periodic) {
-  // Successive owners (spatially sorted) mostly sit in the same cell row: reuse the last stencil.
-  const Request request{c, dims, edge, reach, periodic};
-  if (!cell.empty() && request == last_) return;
+void AxisCells::fill_anew(const Request& request) {
+  const auto [c, dims, edge, reach, periodic] = request;
   last_ = request;
   cell.clear();
   gap.clear();
@@ -145,6 +143,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
       if (c != b && class_members_[c].empty()) continue;
       const double edge = in.class_half_reach[b] + in.class_half_reach[c] + skin;
       grids_[b * classes + c].assign(spheres, class_members_[b], lo, hi, box, edge);
+      // Each cell's range of slabs: a search skips the cells that hold no sphere of the owner's
+      // slab or the next, whose pairs with it the owner never owns (the list is the same).
+      grids_[b * classes + c].summarise(slabs_.all());
     }
   }
   const Vec3 length = box.length();
@@ -261,8 +262,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
               std::uint32_t run_code = kNoShift;
               for (std::size_t kx = 0; kx < ax.cell.size(); ++kx) {
                 if (gyz + ax.gap[kx] * ax.gap[kx] > reach2) continue;
-                ++cells;
                 const std::size_t cell = grid.index(ax.cell[kx], ay.cell[ky], az.cell[kz]);
+                if (!grid.may_hold(cell, slab_i, next_slab)) continue;  // ends the run
+                ++cells;
                 const std::uint32_t code = yz_code + static_cast<std::uint32_t>(ax.digit[kx]);
                 if (run_to > run_from && cell == run_last + 1 && code == run_code) {
                   run_to = grid.first(cell + 1);

@@ -90,7 +90,12 @@ struct AxisCells {
   /// then visited once and the nearest image must be found sphere by sphere.
   bool imaged = true;
   /// Cells within `reach` of cell `c` of a row of `dims` cells of edge `edge`.
-  void fill(int c, int dims, double edge, double reach, bool periodic);
+  void fill(int c, int dims, double edge, double reach, bool periodic) {
+    // Successive owners (spatially sorted) mostly sit in the same cell row: reuse the last stencil.
+    const Request request{c, dims, edge, reach, periodic};
+    if (!cell.empty() && request == last_) return;
+    fill_anew(request);
+  }
 
  private:
   /// The arguments of a fill.
@@ -103,6 +108,8 @@ struct AxisCells {
     bool operator==(const Request&) const = default;
   };
   Request last_;  ///< the arguments of the fill the members hold
+  /// fill for arguments other than the last ones.
+  void fill_anew(const Request& request);
 };
 
 /// A half Verlet list in CSR form (offsets + partner codes) built from per-class cell grids, with
