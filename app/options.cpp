@@ -71,6 +71,9 @@ void add_run_options(po::options_description& opts) {
       "leave wall times out of results.json (they stay in report.md) so that two runs compare byte for byte")(
       "match", po::value<std::vector<std::string>>()->composing(),
       "also run the core with this reference code's numerics (lammps, yade) and compare the two")(
+      "no-match",
+      "leave out the matched runs the case names in compare.matched (and their reference codes, unless "
+      "asked for): only the engines of compare.engines or --engine run")(
       "threads", po::value<int>()->default_value(1),
       "OpenMP threads of the core (results are bit-identical for any count)")(
       "max-memory", po::value<std::string>(),
@@ -172,6 +175,11 @@ reference::ExternalPrograms external_programs(const po::variables_map& vm, doubl
 }
 
 cases::Scene with_matches(cases::Scene scene, const po::variables_map& vm) {
+  if (vm.count("no-match") != 0) {
+    if (vm.count("match") != 0) throw std::invalid_argument("--match and --no-match: give one of them, not both");
+    scene.compare.matched.clear();
+    return scene;
+  }
   if (vm.count("match") == 0) return scene;
   for (const auto& code : split_names(vm["match"].as<std::vector<std::string>>())) {
     if (!cases::is_reference_code(code)) {

@@ -46,7 +46,7 @@ void add_program_options(boost::program_options::options_description& opts);
 reference::ExternalPrograms external_programs(const boost::program_options::variables_map& vm, double timeout_s);
 
 /// `scene` with the reference codes of --match added to compare.matched (engines_to_run then adds
-/// each code and its matched engine to the engines run).
+/// each code and its matched engine to the engines run), or with none under --no-match.
 cases::Scene with_matches(cases::Scene scene, const boost::program_options::variables_map& vm);
 
 /// The run context those options describe; `work_dir` holds the engines' scratch files.

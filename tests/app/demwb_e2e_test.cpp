@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -44,6 +46,26 @@ TEST(DemwbRun, SingleCollisionMatchesTheClosedFormAndEveryComparisonPasses) {
       EXPECT_NE(support::read_file(vtk).find("POINTS 2 double"), std::string::npos);
     }
   }
+}
+
+TEST(DemwbRun, NoMatchRunsOnlyTheNamedEnginesAndRefusesMatchBesideIt) {
+  // single_collision names matched = ["lammps", "yade"]: without --no-match this run would add
+  // LAMMPS, YADE and the two matched in-house engines.
+  const fs::path out = scratch("no_match");
+  const auto r = demwb({"run", canonical("single_collision"), "--engine", "inhouse,analytic", "--no-match", "-o",
+                        out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(support::read_file(out / "results.json"));
+  std::vector<std::string> engines;
+  for (const auto& [name, _] : j["engines"].items()) engines.push_back(name);
+  EXPECT_EQ(engines, (std::vector<std::string>{"analytic", "inhouse"}));
+  ASSERT_FALSE(j["comparisons"].empty());
+  for (const auto& c : j["comparisons"]) EXPECT_EQ(c["status"], "pass") << c.dump();
+
+  const auto both = demwb({"run", canonical("single_collision"), "--match", "lammps", "--no-match", "-o",
+                           scratch("no_match_both").string()});
+  EXPECT_NE(both.exit_code, 0);
+  EXPECT_NE(both.err.find("--match and --no-match"), std::string::npos) << both.out << both.err;
 }
 
 TEST(DemwbRun, SameCaseTwiceGivesBitIdenticalTraces) {
