@@ -18,6 +18,9 @@ using dem::Vec3;
 /// Reorders in the last run of expect_advance_matches_steps.
 std::uint64_t reorders_seen = 0;
 
+/// Steps of a run: a third under the sanitizers (there the core steps ~190 times slower).
+std::uint64_t steps(std::uint64_t full) { return test_support::full_or_sanitized<std::uint64_t>(full, full / 3); }
+
 /// The state after `steps` steps, sphere by sphere in setup order, and the forces of the last commit.
 struct Snapshot {
   dem::Vec3Array position, velocity, spin, force, torque;
@@ -79,7 +82,7 @@ std::uint64_t expect_advance_matches_steps(const dem::SimulationSetup& setup, st
 
 /// A settling box small enough for every kind of scene below, with Morton reorders within the run.
 dem::SimulationSetup box(std::uint32_t seed, int threads = 1) {
-  dem::SimulationSetup s = test_support::settling_box(seed, test_support::full_or_sanitized<std::size_t>(600, 200),
+  dem::SimulationSetup s = test_support::settling_box(seed, test_support::full_or_sanitized<std::size_t>(600, 300),
                                                       1e-3, 0.3, threads, 1.6);
   s.neighbors.sort_every = 2;
   s.track_energy = false;                   // a run without a ledger: the one that defers
@@ -92,8 +95,8 @@ TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingInAWalledBoxWithGravity
     dem::SimulationSetup s = box(3, threads);
     // A few fixed spheres: never kicked nor drifted, whatever their forces.
     for (std::size_t k = 0; k < s.particles.size(); k += 9) s.particles[k].fixed = true;
-    const std::uint64_t deferred = expect_advance_matches_steps(s, 300, threads == 1 ? "1 thread" : "2 threads");
-    EXPECT_GT(deferred, 200U) << "the stretches deferred their closing kicks";
+    const std::uint64_t deferred = expect_advance_matches_steps(s, steps(300), threads == 1 ? "1 thread" : "2 threads");
+    EXPECT_GT(deferred, steps(200)) << "the stretches deferred their closing kicks";
     EXPECT_GT(reorders_seen, 0U) << "a reorder settles an owed kick within a stretch";
   }
 }
@@ -106,7 +109,7 @@ TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingInAPeriodicBox) {
   s.box.lo = Vec3(0.0, 0.0, -0.05);
   s.box.hi = Vec3(width, width, 0.05);
   s.box.periodic = {true, true, false};
-  EXPECT_GT(expect_advance_matches_steps(s, 300, "periodic"), 200U);
+  EXPECT_GT(expect_advance_matches_steps(s, steps(300), "periodic"), steps(200));
 }
 
 TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingInAFluidWithAddedMass) {
@@ -117,26 +120,26 @@ TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingInAFluidWithAddedMass) 
   fluid.buoyancy = true;
   fluid.velocity.uniform = Vec3(0.5, 0.0, 0.2);
   s.fields.fluid = fluid;
-  EXPECT_GT(expect_advance_matches_steps(s, 300, "fluid"), 200U);
+  EXPECT_GT(expect_advance_matches_steps(s, steps(300), "fluid"), steps(200));
 }
 
 TEST(DeferredClosingKick, AdvanceWithoutSpinsOrWithOrientationsALedgerOrAMotionGivesTheSteppedStates) {
   {
     dem::SimulationSetup s = box(6);
     s.scheme_settings.rotation = false;
-    EXPECT_GT(expect_advance_matches_steps(s, 200, "no rotation"), 100U);
+    EXPECT_GT(expect_advance_matches_steps(s, steps(200), "no rotation"), steps(100));
   }
   {
     // Orientations are turned by the scheme's own pass: nothing is deferred.
     dem::SimulationSetup s = box(10);
     s.scheme_settings.orientation = true;
-    EXPECT_EQ(expect_advance_matches_steps(s, 200, "orientation"), 0U);
+    EXPECT_EQ(expect_advance_matches_steps(s, steps(200), "orientation"), 0U);
   }
   {
     // A ledger books every step's velocities: nothing is deferred.
     dem::SimulationSetup s = box(7);
     s.track_energy = true;
-    EXPECT_EQ(expect_advance_matches_steps(s, 200, "ledger"), 0U);
+    EXPECT_EQ(expect_advance_matches_steps(s, steps(200), "ledger"), 0U);
   }
   {
     // A prescribed motion overwrites its sphere's velocity after every step: nothing is deferred.
@@ -144,14 +147,14 @@ TEST(DeferredClosingKick, AdvanceWithoutSpinsOrWithOrientationsALedgerOrAMotionG
     s.track_energy = false;
     s.particles[0].fixed = true;
     s.motions.push_back({0, s.particles[0].position, {{1.0, Vec3(0.0, 0.0, 0.05)}}});
-    EXPECT_EQ(expect_advance_matches_steps(s, 200, "motion"), 0U);
+    EXPECT_EQ(expect_advance_matches_steps(s, steps(200), "motion"), 0U);
   }
 }
 
 TEST(DeferredClosingKick, OtherSchemesAdvanceAsTheyStep) {
   dem::SimulationSetup s = box(9);
   s.scheme = dem::SchemeId::leapfrog;
-  EXPECT_EQ(expect_advance_matches_steps(s, 150, "leapfrog"), 0U);
+  EXPECT_EQ(expect_advance_matches_steps(s, steps(150), "leapfrog"), 0U);
 }
 
 }  // namespace
