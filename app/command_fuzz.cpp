@@ -169,6 +169,7 @@ int command_fuzz_matched(const std::vector<std::string>& args, const Invocation&
   const auto vm = parse_command(
       args, "usage: demwb fuzz-matched --code lammps|yade [--count N] [--seed S] [-j N] [-o DIR]", opts, {});
   if (!vm) return kExitOk;
+  refuse_matches(*vm, "fuzz-matched");
   const std::string code = (*vm)["code"].as<std::string>();
   if (code != "lammps" && code != "yade") {
     throw std::invalid_argument(fmt::format("--code: unknown reference code '{}' (known: lammps, yade)", code));

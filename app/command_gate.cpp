@@ -33,6 +33,7 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
   results::SuiteResults found;
   if (const std::filesystem::path dir = target; std::filesystem::exists(dir / "results.json")) {
     const std::filesystem::path file = dir / "results.json";
+    refuse_matches(*vm, "gate DIR");  // results already written: nothing runs here
     found = results::read_suite_results(nlohmann::ordered_json::parse(support::read_file(file)), file.string());
   } else {
     // A suite: run it here, then gate what it returned.
@@ -41,6 +42,7 @@ int command_gate(const std::vector<std::string>& args, const Invocation& inv) {
                                  : std::filesystem::path("out") / ("gate-" + cases::resolve_suite(target).filename().string());
     const SuiteRun run = run_suite(target, out, *vm, inv);
     std::cout << suite_summary(run) << "\nwrote " << (out / "report.md").string() << "\n";
+    if (vm->count("no-match") != 0) std::cout << kNoMatchNote;
     found = suite_results(run);
   }
   results::GateOptions options;

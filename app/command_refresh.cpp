@@ -73,6 +73,7 @@ int command_refresh(const std::vector<std::string>& args, const Invocation& inv)
       args, "usage: demwb refresh [canonical|DIR|CASE.toml] [--write-baselines]  |  demwb refresh --sweep SWEEP.toml [-j N]",
       opts, {"target?"});
   if (!vm) return kExitOk;
+  refuse_matches(*vm, "refresh");
   if (vm->count("sweep") != 0) {
     if (vm->count("target") != 0) throw std::invalid_argument("demwb refresh: give either --sweep FILE or a case target, not both");
     return refresh_sweep(*vm, inv);

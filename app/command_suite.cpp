@@ -25,6 +25,7 @@ int command_suite(const std::vector<std::string>& args, const Invocation& inv) {
                                         : std::filesystem::path("out") / cases::resolve_suite(suite_name).filename();
   const SuiteRun run = run_suite(suite_name, out, *vm, inv);
   std::cout << suite_summary(run) << "\nwrote " << (out / "report.md").string() << "\n";
+  if (vm->count("no-match") != 0) std::cout << kNoMatchNote;
   return comparison::is_green(run.worst) ? kExitOk : kExitFailed;
 }
 

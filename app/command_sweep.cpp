@@ -218,6 +218,7 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
   const auto vm = parse_command(args, "usage: demwb sweep SWEEP.toml [-j N] [-o DIR] [--engines E,F]  (or under mpirun -np N)",
                                 opts, {"sweep"});
   if (!vm) return kExitOk;
+  refuse_matches(*vm, "sweep");
   const std::string command = reports::reproduce_command(inv.argc, inv.argv);
   SweepPlan plan;
   plan.spec = sweeps::load_sweep((*vm)["sweep"].as<std::string>());

@@ -192,6 +192,15 @@ cases::Scene with_matches(cases::Scene scene, const po::variables_map& vm) {
   return scene;
 }
 
+void refuse_matches(const po::variables_map& vm, std::string_view command) {
+  for (const char* option : {"match", "no-match"}) {
+    if (vm.count(option) != 0) {
+      throw std::invalid_argument(std::string("demwb ") + std::string(command) + ": --" + option +
+                                  " does not apply (it runs the engines and matched runs its files name)");
+    }
+  }
+}
+
 RunContext run_context(const po::variables_map& vm, const std::filesystem::path& work_dir) {
   RunContext ctx;
   ctx.options.work_dir = work_dir;

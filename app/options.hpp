@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,13 @@ reference::ExternalPrograms external_programs(const boost::program_options::vari
 /// `scene` with the reference codes of --match added to compare.matched (engines_to_run then adds
 /// each code and its matched engine to the engines run), or with none under --no-match.
 cases::Scene with_matches(cases::Scene scene, const boost::program_options::variables_map& vm);
+/// What suite and gate print under --no-match, so that a green result is not read as covering
+/// the matched comparisons.
+inline constexpr const char* kNoMatchNote =
+    "note: --no-match: the cases' matched runs and their comparisons were left out\n";
+/// Throws when --match or --no-match is given to `command`, which runs the engines its own files
+/// name (a sweep's, a baseline's) and would otherwise ignore them.
+void refuse_matches(const boost::program_options::variables_map& vm, std::string_view command);
 
 /// The run context those options describe; `work_dir` holds the engines' scratch files.
 RunContext run_context(const boost::program_options::variables_map& vm,

@@ -101,11 +101,21 @@ void Simulation::advance(std::uint64_t count) {
   // A ledger books velocities after every step, and a prescribed motion overwrites them there:
   // both need each step's closing kick given at its end.
   const bool defer = !track_energy_ && field_->motions().empty();
+  // However the stretch ends (a step may throw), no kick stays owed and later steps give theirs.
+  struct Settled {
+    Simulation& sim;
+    explicit Settled(Simulation& s) : sim(s) {}
+    Settled(const Settled&) = delete;
+    Settled& operator=(const Settled&) = delete;
+    ~Settled() {
+      sim.field_->defer_closing_kick(false);
+      sim.field_->settle(sim.state_, sim.acc_);
+    }
+  } settled{*this};
   for (std::uint64_t k = 1; k <= count; ++k) {
     field_->defer_closing_kick(defer && k < count);
     step();
   }
-  field_->defer_closing_kick(false);
 }
 
 void Simulation::reorder() {

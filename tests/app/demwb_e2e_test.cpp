@@ -66,6 +66,13 @@ TEST(DemwbRun, NoMatchRunsOnlyTheNamedEnginesAndRefusesMatchBesideIt) {
                            scratch("no_match_both").string()});
   EXPECT_NE(both.exit_code, 0);
   EXPECT_NE(both.err.find("--match and --no-match"), std::string::npos) << both.out << both.err;
+
+  // Commands that run what their own files name refuse both options instead of ignoring them.
+  for (const char* command : {"refresh", "sweep"}) {
+    const auto refused = demwb({command, (scratch("no_match_absent") / "absent.toml").string(), "--no-match"});
+    EXPECT_NE(refused.exit_code, 0) << command;
+    EXPECT_NE(refused.err.find("--no-match does not apply"), std::string::npos) << command << ": " << refused.err;
+  }
 }
 
 TEST(DemwbRun, SameCaseTwiceGivesBitIdenticalTraces) {
