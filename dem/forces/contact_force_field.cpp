@@ -405,23 +405,35 @@ bool ContactForceField::verlet_step(KinematicState& state, Accelerations& acc, d
   return true;
 }
 
+void ContactForceField::store_and_kick(Accelerations* out, const FoldedKick& kick, Eigen::Index c, const Vec3& a,
+                                       const Vec3& alpha) noexcept {
+  if (out != nullptr) {
+    out->linear.col(c) = a;
+    out->angular.col(c) = alpha;
+  }
+  if (kick.velocity == nullptr) return;
+  double* u = kick.velocity + 3 * c;
+  for (Eigen::Index k = 0; k < 3; ++k) u[k] += kick.kick * a[k];
+  if (!kick.rotation) return;
+  double* w = kick.angular_velocity + 3 * c;
+  for (Eigen::Index k = 0; k < 3; ++k) w[k] += kick.kick * alpha[k];
+}
+
 void ContactForceField::settle(KinematicState& state, Accelerations& acc) {
   if (!owed_.active) return;
   const auto n = static_cast<Eigen::Index>(packed_.size());
   acc.linear.resize(3, n);
   acc.angular.resize(3, n);
   const bool gravity_only = setup_.fields.gravity_only();
+  // The kick the last step's accelerations' pass would have given.
+  const FoldedKick kick{state.velocity.data(), state.angular_velocity.data(), owed_.kick, owed_.rotation};
   for (Eigen::Index c = 0; c < n; ++c) {
     if (props_.fixed[static_cast<std::size_t>(c)] != 0) {
-      acc.linear.col(c).setZero();
-      acc.angular.col(c).setZero();
-    } else {
-      acc.linear.col(c) = committed_force_.col(c) / inertia_mass(c, gravity_only);
-      acc.angular.col(c) = props_.inverse_inertia[c] * committed_torque_.col(c);
+      store_and_kick(&acc, kick, c, Vec3::Zero(), Vec3::Zero());
+      continue;
     }
-    for (Eigen::Index k = 0; k < 3; ++k) state.velocity(k, c) += owed_.kick * acc.linear(k, c);
-    if (!owed_.rotation) continue;
-    for (Eigen::Index k = 0; k < 3; ++k) state.angular_velocity(k, c) += owed_.kick * acc.angular(k, c);
+    const SphereAcceleration a = acceleration_of(committed_force_, committed_torque_, c, gravity_only);
+    store_and_kick(&acc, kick, c, a.linear, a.angular);
   }
   owed_.active = false;
 }
@@ -660,20 +672,6 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   const int threads = std::max(setup_.threads, 1);
   const bool gravity_only = setup_.fields.gravity_only();
 
-  // Stores sphere c's accelerations (when asked to) and gives it the scheme's closing kick (as
-  // the scheme's own kick pass would do it, fixed spheres included).
-  const auto finish_sphere = [&](Eigen::Index c, const Vec3& a, const Vec3& alpha) {
-    if (out != nullptr) {
-      out->linear.col(c) = a;
-      out->angular.col(c) = alpha;
-    }
-    if (kick.velocity == nullptr) return;
-    double* u = kick.velocity + 3 * c;
-    for (Eigen::Index k = 0; k < 3; ++k) u[k] += kick.kick * a[k];
-    if (!kick.rotation) return;
-    double* w = kick.angular_velocity + 3 * c;
-    for (Eigen::Index k = 0; k < 3; ++k) w[k] += kick.kick * alpha[k];
-  };
   const bool finishes = out != nullptr || kick.velocity != nullptr;
   parallel_for(threads, chunks, [&](std::uint32_t chunk) {
     EnergyTotals& sums = chunk_totals_[chunk];
@@ -681,7 +679,7 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
     for (std::uint32_t i = chunk * kSphereChunk; i < end; ++i) {
       const auto c = static_cast<Eigen::Index>(i);
       if (props_.fixed[i] != 0) {
-        if (finishes) finish_sphere(c, Vec3::Zero(), Vec3::Zero());
+        if (finishes) store_and_kick(out, kick, c, Vec3::Zero(), Vec3::Zero());
         continue;
       }
       // Sphere–wall contacts: the wall is an infinite-mass partner (m* = m, R* = r).
@@ -747,7 +745,8 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
       }
       // With the closing kick owed, kick_drift_pack derives a and α from these forces instead.
       if (finishes) {
-        finish_sphere(c, force_.col(c) / inertia_mass(c, gravity_only), props_.inverse_inertia[c] * torque_.col(c));
+        const SphereAcceleration a = acceleration_of(force_, torque_, c, gravity_only);
+        store_and_kick(out, kick, c, a.linear, a.angular);
       }
     }
   });

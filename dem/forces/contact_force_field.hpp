@@ -78,8 +78,6 @@ class ContactForceField final : public ForceEvaluator {
   /// accelerations and the velocities get one pass fewer. Between steps the velocities then lack
   /// the kick: only a caller that reads nothing before settle() may defer (Simulation::advance).
   void defer_closing_kick(bool defer) noexcept { defer_close_ = defer; }
-  /// True when the last step left its closing kick owed.
-  [[nodiscard]] bool owes_closing_kick() const noexcept { return owed_.active; }
   /// Steps so far that left their closing kick owed.
   [[nodiscard]] std::uint64_t deferred_kicks() const noexcept { return deferred_kicks_; }
   /// Gives an owed closing kick now (and stores the accelerations it used in `acc`); no-op when
@@ -205,6 +203,21 @@ class ContactForceField final : public ForceEvaluator {
   [[nodiscard]] double inertia_mass(Eigen::Index c, bool gravity_only) const noexcept {
     return gravity_only ? props_.mass[c] : props_.mass[c] + setup_.fields.added_mass(props_.radius[c]);
   }
+  /// Linear and angular acceleration of a mobile sphere.
+  struct SphereAcceleration {
+    Vec3 linear;
+    Vec3 angular;
+  };
+  /// Mobile sphere c's accelerations from the force and torque sums `force`, `torque`: F/m with
+  /// the inertia mass, I⁻¹T. (kick_drift_pack writes the same arithmetic component by component.)
+  [[nodiscard]] SphereAcceleration acceleration_of(const Vec3Array& force, const Vec3Array& torque, Eigen::Index c,
+                                                   bool gravity_only) const noexcept {
+    return {force.col(c) / inertia_mass(c, gravity_only), props_.inverse_inertia[c] * torque.col(c)};
+  }
+  /// Stores sphere c's accelerations in `out` (when not null) and gives it `kick` (when it has a
+  /// velocity to kick): the scheme's closing kick, fixed spheres included with zero accelerations.
+  static void store_and_kick(Accelerations* out, const FoldedKick& kick, Eigen::Index c, const Vec3& a,
+                             const Vec3& alpha) noexcept;
   void rebuild(const KinematicState& state, std::span<const std::uint32_t> new_of_old);
   /// Builds the sphere–wall candidates from the packed centres at `time` (new_of_old: as rebuild).
   void build_wall_list(double time, std::span<const std::uint32_t> new_of_old);
