@@ -252,27 +252,30 @@ void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::ui
   }
 }
 
-/// The branch-free distance test of owner i's entries [k, stop): appends every entry in reach,
-/// or active at the last commit, to the gather buffers and returns the new count. `Shifted`: the
-/// owner has entries through a periodic face, so each partner is moved by its entry's shift.
+/// The branch-free distance test of entries [k, stop) (owners consecutive, as the list's runs
+/// give them): appends every entry in reach, or active at the last commit, to the gather
+/// buffers and returns the new count. `Shifted`: the owners have entries through a periodic face,
+/// so each partner is moved by its entry's shift. One loop over a run rather than one per owner:
+/// owners have a few entries each, and the exit of a loop that short is mispredicted.
 struct PairGather {
   const ListView& view;
   const PackedSphere* packed;
-  double xi, yi, zi, hi;
-  std::uint32_t i;
+  const std::uint32_t* owner_of;
   std::uint32_t* owner;
   std::uint32_t* entry;
 
   template <bool Shifted>
   [[nodiscard]] std::uint32_t run(std::uint32_t k, std::uint32_t stop, std::uint32_t count) const noexcept {
     for (; k < stop; ++k) {
+      const std::uint32_t i = owner_of[k];
+      const PackedSphere& pi = packed[i];
       const PartnerCode partner = view.partners[k];
       const PackedSphere& pj = packed[partner & kPartnerMask];
       const PartnerImage q = partner_image<Shifted>(pj, view.shifts, partner);
-      const double dx = xi - q.x;
-      const double dy = yi - q.y;
-      const double dz = zi - q.z;
-      const double reach = hi + pj.half_reach;
+      const double dx = pi.x - q.x;
+      const double dy = pi.y - q.y;
+      const double dz = pi.z - q.z;
+      const double reach = pi.half_reach + pj.half_reach;
       owner[count] = i;
       entry[count] = k;
       count += static_cast<std::uint32_t>((dx * dx + dy * dy + dz * dz <= reach * reach) |
@@ -296,7 +299,6 @@ template <class Slots, bool Energies, bool Periodic>
                       list.next_slips().data(),
                       extended ? list.next_extended().data() : nullptr,
                       &list.shift(0)};
-  const std::span<const std::uint32_t> owners = list.slabs().members(slab);
   std::uint32_t next = list.slab_contact_base(slab);
   const PackedSphere* packed = in.packed;
   std::array<std::uint32_t, kChunk> gathered_owner;
@@ -335,20 +337,15 @@ template <class Slots, bool Energies, bool Periodic>
     }
     count = 0;
   };
-  for (const std::uint32_t i : owners) {
-    const double xi = packed[i].x;
-    const double yi = packed[i].y;
-    const double zi = packed[i].z;
-    const double hi = packed[i].half_reach;
+  const PairGather gather{view, packed, list.owners().data(), gathered_owner.data(), gathered_entry.data()};
+  for (const NeighborList::EntryRun& r : list.runs(slab)) {
     // Only the owners near a periodic face read the shifts.
-    const bool shifted = Periodic && list.shifted(i) != 0;
-    const PairGather gather{view, packed, xi, yi, zi, hi, i, gathered_owner.data(), gathered_entry.data()};
-    std::uint32_t k = list.begin(i);
-    const std::uint32_t end = list.begin(i + 1);
-    while (k < end) {
+    const bool shifted = Periodic && r.shifted != 0;
+    std::uint32_t k = r.begin;
+    while (k < r.end) {
       if (count == kChunk) flush();
       // The distance test over as many entries as fit in the gather buffer.
-      const std::uint32_t stop = std::min<std::uint32_t>(end, k + (static_cast<std::uint32_t>(kChunk) - count));
+      const std::uint32_t stop = std::min<std::uint32_t>(r.end, k + (static_cast<std::uint32_t>(kChunk) - count));
       count = shifted ? gather.run<true>(k, stop, count) : gather.run<false>(k, stop, count);
       k = stop;
     }

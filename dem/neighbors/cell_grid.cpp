@@ -8,6 +8,7 @@ namespace dem {
 
 void CellGrid::assign(std::span<const PackedSphere> spheres, std::span<const std::uint32_t> members,
                       const Vec3& lo, const Vec3& hi, const PeriodicBox& box, double min_edge) {
+  reach_ = min_edge;
   Vec3 extent;
   for (int k = 0; k < 3; ++k) {
     origin_[k] = box.periodic[k] ? box.lo[k] : lo[k];
@@ -39,7 +40,7 @@ void CellGrid::assign(std::span<const PackedSphere> spheres, std::span<const std
     ++start_[cell_of_[m] + 1];
   }
   for (std::size_t c = 0; c < total; ++c) start_[c + 1] += start_[c];
-  members_.resize(members.size());
+  members_.assign(members.size() + kPadding, 0);
   cursor_.assign(start_.begin(), start_.end() - 1);
   for (std::size_t m = 0; m < members.size(); ++m) members_[cursor_[cell_of_[m]]++] = members[m];
 }

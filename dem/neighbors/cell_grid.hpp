@@ -18,6 +18,10 @@ namespace dem {
 /// bounding box, and coordinates outside it fall in the end cells.
 class CellGrid {
  public:
+  /// Slots past the last member that may be read (they hold no sphere), so that copies of a run
+  /// of members may go a few past its end.
+  static constexpr std::size_t kPadding = 8;
+
   /// Bins `members` (indices into `spheres`) into cells with edges ≥ `min_edge` over the region
   /// [lo, hi] (the box along periodic axes). The cell count is capped near 2 per member plus 64
   /// (edges grow instead), so sparse scenes do not allocate empty space.
@@ -53,8 +57,22 @@ class CellGrid {
   }
   /// First slot of cell c in members(); cell c holds [first(c), first(c + 1)).
   [[nodiscard]] std::uint32_t first(std::size_t c) const noexcept { return start_[c]; }
-  /// The members of every cell, cell after cell (the cells of a row along x follow each other).
-  [[nodiscard]] std::span<const std::uint32_t> members() const noexcept { return members_; }
+  /// The members of every cell, cell after cell (the cells of a row along x follow each other),
+  /// followed by kPadding slots that belong to no cell.
+  [[nodiscard]] std::span<const std::uint32_t> members() const noexcept {
+    return {members_.data(), members_.empty() ? 0 : members_.size() - kPadding};
+  }
+  /// Number of cells.
+  [[nodiscard]] std::size_t cell_count() const noexcept { return start_.empty() ? 0 : start_.size() - 1; }
+  /// Cell coordinates of linear index c (the inverse of index()).
+  [[nodiscard]] std::array<int, 3> coordinates_of(std::size_t c) const noexcept {
+    const auto nx = static_cast<std::size_t>(dims_[0]);
+    const auto ny = static_cast<std::size_t>(dims_[1]);
+    return {static_cast<int>(c % nx), static_cast<int>(c / nx % ny), static_cast<int>(c / (nx * ny))};
+  }
+  /// The reach the grid was binned for (the least edge asked of assign()) [m]: no search from one
+  /// of its cells needs to reach further.
+  [[nodiscard]] double reach() const noexcept { return reach_; }
   /// Cells per axis.
   [[nodiscard]] const std::array<int, 3>& dims() const noexcept { return dims_; }
   /// Cell edge per axis [m].
@@ -67,6 +85,7 @@ class CellGrid {
  private:
   Vec3 origin_ = Vec3::Zero();
   Vec3 edge_ = Vec3::Ones();
+  double reach_ = 0.0;
   std::array<int, 3> dims_{1, 1, 1};
   std::vector<std::uint32_t> start_;
   std::vector<std::uint32_t> members_;

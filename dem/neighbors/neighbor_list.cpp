@@ -17,6 +17,10 @@ namespace {
 /// any thread count.
 constexpr std::uint32_t kChunk = 512;
 
+/// Candidates a gather copies at a time (CellGrid pads its members by as many).
+constexpr std::uint32_t kGatherBlock = 8;
+static_assert(kGatherBlock <= CellGrid::kPadding);
+
 /// Orders list entries by partner index (an owner's entries are kept in this order).
 bool by_partner(PartnerCode a, PartnerCode b) noexcept { return (a & kPartnerMask) < (b & kPartnerMask); }
 
@@ -149,7 +153,6 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
     }
   }
   const Vec3 length = box.length();
-  const Vec3 half_length = 0.5 * length;
   for (std::uint32_t code = 0; code < 27; ++code) {
     const int step[3] = {static_cast<int>(code % 3) - 1, static_cast<int>(code / 3 % 3) - 1,
                          static_cast<int>(code / 9) - 1};
@@ -159,10 +162,34 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   const std::uint32_t old_n = sphere_count();
   remember_interacting();
 
-  const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
-  chunk_partners_.resize(chunks);
-  chunk_candidates_.assign(chunks, 0);
-  chunk_cells_.assign(chunks, 0);
+  // Units: runs of cells of each class's own grid holding about kChunk owners each. The owners
+  // of a cell are searched one after another, so the candidates around the cell are gathered
+  // once for all of them.
+  units_.clear();
+  if (units_.capacity() < last_units_ + last_units_ / 8) units_.reserve(last_units_ + last_units_ / 8);
+  for (std::size_t c = 0; c < classes; ++c) {
+    if (class_members_[c].empty()) continue;
+    const CellGrid& own = grids_[c * classes + c];
+    const auto cells = static_cast<std::uint32_t>(own.cell_count());
+    std::uint32_t from = 0;
+    while (from < cells) {
+      std::uint32_t to = from + 1;
+      const std::uint32_t target = own.first(from) + kChunk;
+      while (to < cells && own.first(to) < target) ++to;
+      units_.push_back({static_cast<std::uint32_t>(c), from, to});
+      from = to;
+    }
+  }
+  const auto unit_count = static_cast<std::uint32_t>(units_.size());
+  last_units_ = unit_count;
+  // Per-unit scratch with an eighth in hand, so that a steady scene's rebuilds reuse it.
+  if (chunk_partners_.size() < unit_count) chunk_partners_.resize(unit_count + unit_count / 8);
+  if (chunk_candidates_.capacity() < unit_count) {
+    chunk_candidates_.reserve(unit_count + unit_count / 8);
+    chunk_cells_.reserve(unit_count + unit_count / 8);
+  }
+  chunk_candidates_.assign(unit_count, 0);
+  chunk_cells_.assign(unit_count, 0);
   counts_.assign(n, 0);
   const int threads = std::max(in.threads, 1);
   const std::uint32_t* const slab_of = slabs_.all().data();
@@ -171,122 +198,56 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
 #pragma omp parallel num_threads(threads) if (threads > 1)
   {
     Stencil& stencil = stencils_[static_cast<std::size_t>(omp_get_thread_num())];
-    AxisCells& ax = stencil.x;
-    AxisCells& ay = stencil.y;
-    AxisCells& az = stencil.z;
+    stencil.near.resize(classes);
 #pragma omp for schedule(dynamic, 1)
-    for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
-      // Counters and the partner list live in this thread's scratch while the chunk is searched:
-      // the per-chunk slots of neighbouring chunks share cache lines, and incrementing them in
-      // the inner loop from two threads made the parallel build slower than the serial one.
+    for (std::uint32_t u = 0; u < unit_count; ++u) {
+      const SearchUnit unit = units_[u];
+      const std::size_t c = unit.size_class;
+      const CellGrid& own = grids_[c * classes + c];
+      for (Candidates& cand : stencil.near) cand.grid = nullptr;  // gathered by an earlier build
+      // Counters and the partner list live in this thread's scratch while the unit is searched:
+      // per-unit slots side by side share cache lines, and two threads incrementing them in the
+      // inner loop made the parallel build slower than the serial one.
       std::vector<std::uint32_t>& out = stencil.partners;
-      std::size_t used = 0;  // partners found so far in the chunk (out holds scratch beyond)
+      std::size_t used = 0;  // partners found so far in the unit (out holds scratch beyond)
       std::uint64_t candidates = 0;
       std::uint64_t cells = 0;
-      const std::uint32_t end = std::min(n, (chunk + 1) * kChunk);
-      for (std::uint32_t i = chunk * kChunk; i < end; ++i) {
+      const std::uint32_t* const member = own.members().data();
+      for (std::uint32_t m = own.first(unit.from); m < own.first(unit.to); ++m) {
+        const std::uint32_t i = member[m];
         const PackedSphere& si = spheres[i];
         const std::size_t first = used;
         const std::uint32_t slab_i = slab_of[i];
-        const std::uint32_t next_slab = slabs_.next(slab_i);
         const std::uint8_t still_i = still[i] != 0 ? 0xFF : 0;  // a mask: still pairs are not listed
         for (std::size_t b = 0; b < classes; ++b) {
           if (class_members_[b].empty()) continue;
-          const CellGrid& grid = grids_[b * classes + std::max<std::size_t>(b, in.size_class[i])];
-          const double reach = si.half_reach + in.class_half_reach[b] + skin;
-          const auto c = grid.coordinates(si.x, si.y, si.z);
-          ax.fill(c[0], grid.dims()[0], grid.edge()[0], reach, box.periodic[0]);
-          ay.fill(c[1], grid.dims()[1], grid.edge()[1], reach, box.periodic[1]);
-          az.fill(c[2], grid.dims()[2], grid.edge()[2], reach, box.periodic[2]);
-          const double reach2 = reach * reach;
-          const std::uint32_t* const member = grid.members().data();
-          // Tests the grid's members [from, to) against sphere i. Branch-free: every member is
-          // written at the end of the scratch, and the count advances only for a pair this owner
-          // lists (candidates pass or fail unpredictably; a mispredicted branch per candidate
-          // cost more than the test).
-          const bool imaged = ax.imaged && ay.imaged && az.imaged;
-          const auto scan = [&](std::uint32_t from, std::uint32_t to, std::uint32_t run_code) {
-            if (from == to) return;
-            candidates += to - from;
-            if (used + (to - from) > out.size()) out.resize(2 * (used + (to - from)));
-            std::uint32_t* const slot = out.data();
-            // The run's image: the owner's centre moved by the shift, so that the partners'
-            // wrapped centres need none (none when the images are found sphere by sphere).
-            const Vec3& shift = shifts_[imaged ? run_code : kNoShift];
-            const double xi = si.x + shift[0];
-            const double yi = si.y + shift[1];
-            const double zi = si.z + shift[2];
-            for (std::uint32_t m = from; m < to; ++m) {
-              const std::uint32_t j = member[m];
-              const PackedSphere& sj = spheres[j];
-              double d[3] = {xi - sj.x, yi - sj.y, zi - sj.z};
-              std::uint32_t code = run_code;
-              if (!imaged) [[unlikely]] {
-                // A box shorter than two reaches: the nearest image, sphere by sphere (centres
-                // are wrapped at the build, so it is at most one box length away).
-                int digit[3] = {1, 1, 1};
-                for (int k = 0; k < 3; ++k) {
-                  if (!box.periodic[k]) continue;
-                  if (d[k] > half_length[k]) {
-                    d[k] -= length[k];
-                    digit[k] = 0;
-                  } else if (d[k] < -half_length[k]) {
-                    d[k] += length[k];
-                    digit[k] = 2;
-                  }
-                }
-                code = static_cast<std::uint32_t>(digit[0] + 3 * digit[1] + 9 * digit[2]);
-              }
-              const double cut = si.half_reach + sj.half_reach + skin;
-              const std::uint32_t sj_slab = slab_of[j];
-              // i owns (i, j): same slab and the lower index, or j in the slab after i's.
-              const bool owned = ((sj_slab == slab_i) & (i < j)) | (sj_slab == next_slab);
-              const bool moving = (still[j] & still_i) == 0;
-              const bool near = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut * cut;
-              slot[used] = j | (code << kPartnerBits);
-              used += static_cast<std::size_t>(owned & moving & near);
-            }
-          };
-          for (std::size_t kz = 0; kz < az.cell.size(); ++kz) {
-            const double gz = az.gap[kz] * az.gap[kz];
-            for (std::size_t ky = 0; ky < ay.cell.size(); ++ky) {
-              const double gyz = gz + ay.gap[ky] * ay.gap[ky];
-              if (gyz > reach2) continue;
-              // Cells adjacent along x are adjacent in the grid's member arrays: each run of them
-              // is scanned as one stretch (a few loops of a handful of candidates each rather
-              // than one loop per cell, whose exits the processor cannot predict).
-              const auto yz_code = static_cast<std::uint32_t>(3 * ay.digit[ky] + 9 * az.digit[kz]);
-              std::size_t run_last = 0;
-              std::uint32_t run_from = 0;
-              std::uint32_t run_to = 0;
-              std::uint32_t run_code = kNoShift;
-              for (std::size_t kx = 0; kx < ax.cell.size(); ++kx) {
-                if (gyz + ax.gap[kx] * ax.gap[kx] > reach2) continue;
-                const std::size_t cell = grid.index(ax.cell[kx], ay.cell[ky], az.cell[kz]);
-                if (!grid.may_hold(cell, slab_i, next_slab)) continue;  // ends the run
-                ++cells;
-                const std::uint32_t code = yz_code + static_cast<std::uint32_t>(ax.digit[kx]);
-                if (run_to > run_from && cell == run_last + 1 && code == run_code) {
-                  run_to = grid.first(cell + 1);
-                } else {
-                  scan(run_from, run_to, run_code);
-                  run_from = grid.first(cell);
-                  run_to = grid.first(cell + 1);
-                  run_code = code;
-                }
-                run_last = cell;
-              }
-              scan(run_from, run_to, run_code);
-            }
+          const CellGrid& grid = grids_[b * classes + std::max(b, c)];
+          const auto at = grid.coordinates(si.x, si.y, si.z);
+          const std::size_t cell = grid.index(at[0], at[1], at[2]);
+          Candidates& cand = stencil.near[b];
+          if (cand.grid != &grid || cand.cell != cell || cand.slab != slab_i) {
+            gather(in, cand, stencil.axes, grid, cell, slab_i);
+          }
+          candidates += cand.size();
+          cells += cand.cells;
+          if (used + cand.size() > out.size()) out.resize(2 * (used + cand.size()));
+          if (!cand.imaged) {
+            used = scan<false, false>(in, cand, si, i, still_i, skin, out.data(), used);
+          } else if (cand.shifted) {
+            used = scan<true, true>(in, cand, si, i, still_i, skin, out.data(), used);
+          } else {
+            used = scan<true, false>(in, cand, si, i, still_i, skin, out.data(), used);
           }
         }
         std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(used),
                   by_partner);
         counts_[i] = static_cast<std::uint32_t>(used - first);
       }
-      chunk_partners_[chunk].assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(used));
-      chunk_candidates_[chunk] = candidates;
-      chunk_cells_[chunk] = cells;
+      std::vector<std::uint32_t>& kept = chunk_partners_[u];
+      if (kept.capacity() < used) kept.reserve(used + used / 4);
+      kept.assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(used));
+      chunk_candidates_[u] = candidates;
+      chunk_cells_[u] = cells;
     }
   }
 
@@ -298,12 +259,149 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   offsets_[0] = 0;
   for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
   reserve_entries(offsets_[n]);
-  for (std::uint32_t chunk = 0; chunk < chunks; ++chunk) {
-    const std::vector<std::uint32_t>& part = chunk_partners_[chunk];
-    std::copy(part.begin(), part.end(), partners_.begin() + offsets_[chunk * kChunk]);
-  }
+  // Each unit's partners, owner after owner in the unit's order, to their owners' entries.
+  parallel_for(threads, unit_count, [&](std::int64_t u) {
+    const SearchUnit unit = units_[static_cast<std::size_t>(u)];
+    const CellGrid& own = grids_[unit.size_class * classes + unit.size_class];
+    const std::uint32_t* part = chunk_partners_[static_cast<std::size_t>(u)].data();
+    for (std::uint32_t m = own.first(unit.from); m < own.first(unit.to); ++m) {
+      const std::uint32_t i = own.members()[m];
+      std::copy(part, part + counts_[i], partners_.begin() + offsets_[i]);
+      part += counts_[i];
+    }
+  });
   if (old_n != n) carried_.clear();
   finish_layout(new_of_old, threads);
+}
+
+void NeighborList::gather(const NeighborBuildInput& in, Candidates& out, AxisCells (&axes)[3], const CellGrid& grid, std::size_t cell,
+                          std::uint32_t slab) const {
+  out.grid = &grid;
+  out.cell = cell;
+  out.slab = slab;
+  const std::uint32_t next_slab = slabs_.next(slab);
+  // The stencil for the farthest reach the grid serves: a superset of every owner's own (each
+  // owner's distance test decides), so the gathered set does not depend on the owner.
+  const double reach = grid.reach();
+  const double reach2 = reach * reach;
+  const auto at = grid.coordinates_of(cell);
+  for (int k = 0; k < 3; ++k) axes[k].fill(at[k], grid.dims()[k], grid.edge()[k], reach, in.box->periodic[k]);
+  const AxisCells& ax = axes[0];
+  const AxisCells& ay = axes[1];
+  const AxisCells& az = axes[2];
+  out.imaged = ax.imaged && ay.imaged && az.imaged;
+  out.shifted = false;
+  out.cells = 0;
+  std::size_t count = 0;
+  const std::uint32_t* const member = grid.members().data();
+  // Copies the members [from, to) (cells side by side along x) with their shift code, eight at a
+  // time: most runs then take one pass of a loop whose trip the processor predicts. The grid pads
+  // its members and the tags keep eight in hand, so the copy may run past both ends.
+  const auto copy = [&](std::uint32_t from, std::uint32_t to, std::uint32_t code) {
+    const std::uint32_t n = to - from;
+    if (count + n + kGatherBlock > out.tag.size()) out.tag.resize(2 * (count + n + kGatherBlock));
+    std::uint32_t* const tag = out.tag.data() + count;
+    const std::uint32_t shifted = code << kPartnerBits;
+    for (std::uint32_t m = 0; m < n; m += kGatherBlock) {
+      for (std::uint32_t q = 0; q < kGatherBlock; ++q) tag[m + q] = member[from + m + q] | shifted;
+    }
+    count += n;
+  };
+  for (std::size_t kz = 0; kz < az.cell.size(); ++kz) {
+    const double gz = az.gap[kz] * az.gap[kz];
+    for (std::size_t ky = 0; ky < ay.cell.size(); ++ky) {
+      const double gyz = gz + ay.gap[ky] * ay.gap[ky];
+      if (gyz > reach2) continue;
+      const auto yz_code = static_cast<std::uint32_t>(3 * ay.digit[ky] + 9 * az.digit[kz]);
+      // Cells adjacent along x are adjacent in the grid's member arrays: each run of them with
+      // one image is copied as one stretch.
+      std::size_t run_last = 0;
+      std::uint32_t run_from = 0;
+      std::uint32_t run_to = 0;
+      std::uint32_t run_code = kNoShift;
+      for (std::size_t kx = 0; kx < ax.cell.size(); ++kx) {
+        if (gyz + ax.gap[kx] * ax.gap[kx] > reach2) continue;
+        const std::size_t c = grid.index(ax.cell[kx], ay.cell[ky], az.cell[kz]);
+        // A cell holding no sphere of the owners' slab or the next holds no pair they own.
+        if (!grid.may_hold(c, slab, next_slab)) continue;  // ends the run
+        ++out.cells;
+        // Where the stencil wraps onto itself, the image is found pair by pair (no shift here).
+        const std::uint32_t code = out.imaged ? yz_code + static_cast<std::uint32_t>(ax.digit[kx]) : kNoShift;
+        out.shifted = out.shifted || code != kNoShift;
+        if (run_to > run_from && c == run_last + 1 && code == run_code) {
+          run_to = grid.first(c + 1);
+        } else {
+          if (run_to > run_from) copy(run_from, run_to, run_code);
+          run_from = grid.first(c);
+          run_to = grid.first(c + 1);
+          run_code = code;
+        }
+        run_last = c;
+      }
+      if (run_to > run_from) copy(run_from, run_to, run_code);
+    }
+  }
+  out.count = count;
+}
+
+template <bool Imaged, bool Shifted>
+std::size_t NeighborList::scan(const NeighborBuildInput& in, const Candidates& cand, const PackedSphere& si, std::uint32_t i, std::uint8_t still_i,
+                               double skin, std::uint32_t* out, std::size_t used) const noexcept {
+  const std::uint32_t slab_i = cand.slab;
+  const std::uint32_t next_slab = slabs_.next(slab_i);
+  const std::size_t count = cand.size();
+  const std::uint32_t* const tag = cand.tag.data();
+  const std::uint32_t* const slab_of = slabs_.all().data();
+  const std::uint8_t* const still = in.still.data();
+  const PackedSphere* const spheres = in.spheres.data();
+  const Vec3 length = Imaged ? Vec3::Zero() : in.box->length();
+  const Vec3 half_length = 0.5 * length;
+  // Branch-free: every candidate is written at the end of the scratch, and the count advances
+  // only for a pair this owner lists (candidates pass or fail unpredictably; a mispredicted
+  // branch per candidate cost more than the test).
+  for (std::size_t m = 0; m < count; ++m) {
+    const std::uint32_t j = tag[m] & kPartnerMask;
+    std::uint32_t code = tag[m] >> kPartnerBits;
+    const PackedSphere& sj = spheres[j];
+    double d[3];
+    if constexpr (Shifted) {
+      // The owner's centre moved by the shift of the partner's cell, so the partner's wrapped
+      // centre needs none.
+      const Vec3& shift = shifts_[code];
+      d[0] = (si.x + shift[0]) - sj.x;
+      d[1] = (si.y + shift[1]) - sj.y;
+      d[2] = (si.z + shift[2]) - sj.z;
+    } else {
+      d[0] = si.x - sj.x;
+      d[1] = si.y - sj.y;
+      d[2] = si.z - sj.z;
+    }
+    if constexpr (!Imaged) {
+      // A box shorter than two reaches: the nearest image, sphere by sphere (centres are wrapped
+      // at the build, so it is at most one box length away).
+      int digit[3] = {1, 1, 1};
+      for (int k = 0; k < 3; ++k) {
+        if (!in.box->periodic[k]) continue;
+        if (d[k] > half_length[k]) {
+          d[k] -= length[k];
+          digit[k] = 0;
+        } else if (d[k] < -half_length[k]) {
+          d[k] += length[k];
+          digit[k] = 2;
+        }
+      }
+      code = static_cast<std::uint32_t>(digit[0] + 3 * digit[1] + 9 * digit[2]);
+    }
+    const double cut = si.half_reach + sj.half_reach + skin;
+    const std::uint32_t sj_slab = slab_of[j];
+    // i owns (i, j): same slab and the lower index, or j in the slab after i's.
+    const bool owned = ((sj_slab == slab_i) & (i < j)) | (sj_slab == next_slab);
+    const bool moving = (still[j] & still_i) == 0;
+    const bool near = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cut * cut;
+    out[used] = j | (code << kPartnerBits);
+    used += static_cast<std::size_t>(owned & moving & near);
+  }
+  return used;
 }
 
 void NeighborList::reserve_entries(std::size_t total) {
@@ -311,6 +409,7 @@ void NeighborList::reserve_entries(std::size_t total) {
   if (partners_.capacity() < total) {
     partners_.reserve(total + total / 8);
     contact_.reserve(total + total / 8);
+    owner_of_.reserve(total + total / 8);
   }
   partners_.resize(total);
   contact_.assign(total, kNoContact);
@@ -321,12 +420,45 @@ void NeighborList::finish_layout(std::span<const std::uint32_t> new_of_old, int 
   const std::size_t total = partners_.size();
   periodic_ = false;
   shifted_.assign(n, 0);
-  for (std::uint32_t i = 0; i < n; ++i) {
+  owner_of_.resize(total);
+  parallel_for(threads, n, [&](std::uint32_t i) {
     for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+      owner_of_[k] = i;
       if ((partners_[k] >> kPartnerBits) != kNoShift) shifted_[i] = 1;
     }
-    periodic_ = periodic_ || shifted_[i] != 0;
-  }
+  });
+  for (std::uint32_t i = 0; i < n; ++i) periodic_ = periodic_ || shifted_[i] != 0;
+  // Each slab's owners as runs of consecutive indices alike in `shifted`: their entries are
+  // consecutive too, and the pair loop tests them in one loop per run.
+  // Two passes (count, then write), so that a steady scene's rebuilds reuse the storage.
+  const auto lay_out_runs = [&](EntryRun* out) {
+    std::uint32_t count = 0;
+    for (std::uint32_t sl = 0; sl < slabs_.count(); ++sl) {
+      bool open = false;
+      std::uint32_t end = 0;  // of the open run
+      std::uint8_t shifted = 0;
+      for (const std::uint32_t i : slabs_.members(sl)) {
+        if (offsets_[i] == offsets_[i + 1]) continue;  // no entries
+        // Entries that follow the run's own (only owners without entries lie between) extend it.
+        if (open && offsets_[i] == end && shifted_[i] == shifted) {
+          if (out != nullptr) out[count - 1].end = offsets_[i + 1];
+        } else {
+          if (out != nullptr) out[count] = {offsets_[i], offsets_[i + 1], shifted_[i]};
+          ++count;
+          open = true;
+          shifted = shifted_[i];
+        }
+        end = offsets_[i + 1];
+      }
+      if (out != nullptr) slab_runs_[sl + 1] = count;
+    }
+    return count;
+  };
+  const std::uint32_t run_count = lay_out_runs(nullptr);
+  if (runs_.capacity() < run_count) runs_.reserve(run_count + run_count / 8);
+  runs_.resize(run_count);
+  slab_runs_.assign(slabs_.count() + 1, 0);
+  lay_out_runs(runs_.data());
   // Slab s's pairs can hold at most as many contacts as it has entries: its slots start where
   // the entries of the slabs before it end.
   slab_base_.assign(slabs_.count() + 1, 0);
@@ -484,7 +616,9 @@ ContactHistory NeighborList::history(std::size_t k) const noexcept {
 }
 
 std::size_t NeighborList::bytes() const noexcept {
-  std::size_t total = (offsets_.capacity() + counts_.capacity()) * sizeof(std::uint32_t) + shifted_.capacity() +
+  std::size_t total = (offsets_.capacity() + counts_.capacity() + owner_of_.capacity() + slab_runs_.capacity()) *
+                          sizeof(std::uint32_t) +
+                      runs_.capacity() * sizeof(EntryRun) + shifted_.capacity() +
                       partners_.capacity() * sizeof(PartnerCode) + contact_.capacity() * sizeof(std::uint32_t) +
                       (slips_[0].capacity() + slips_[1].capacity()) * sizeof(Vec3) +
                       (extended_[0].capacity() + extended_[1].capacity()) * sizeof(ExtendedHistory) +

@@ -176,6 +176,19 @@ class NeighborList {
   [[nodiscard]] bool periodic() const noexcept { return periodic_; }
   /// 1 when some entry of owner i has a non-zero shift (the spheres near a periodic face).
   [[nodiscard]] std::uint8_t shifted(std::uint32_t i) const noexcept { return shifted_[i]; }
+  /// Consecutive entries whose owners are consecutive spheres of one slab, all with or all
+  /// without a periodic shift (`shifted`).
+  struct EntryRun {
+    std::uint32_t begin, end;
+    std::uint8_t shifted;
+  };
+  /// The runs that cover the entries of slab s's owners, in owner order (owners without entries
+  /// are left out).
+  [[nodiscard]] std::span<const EntryRun> runs(std::uint32_t s) const noexcept {
+    return {runs_.data() + slab_runs_[s], runs_.data() + slab_runs_[s + 1]};
+  }
+  /// The owner of every entry.
+  [[nodiscard]] std::span<const std::uint32_t> owners() const noexcept { return owner_of_; }
   /// The slabs the pair loop runs over.
   [[nodiscard]] const SlabPartition& slabs() const noexcept { return slabs_; }
   /// Entry index of the pair (i, j) in either orientation and whether i is its owner, or −1.
@@ -212,6 +225,9 @@ class NeighborList {
   std::vector<std::uint32_t> offsets_;
   std::vector<PartnerCode> partners_;
   std::vector<std::uint8_t> shifted_;
+  std::vector<std::uint32_t> owner_of_;  // owner of each entry
+  std::vector<EntryRun> runs_;           // per slab (slab_runs_ indexes them)
+  std::vector<std::uint32_t> slab_runs_;
   std::vector<std::uint32_t> contact_;
   std::array<std::vector<Vec3>, 2> slips_;
   std::array<std::vector<ExtendedHistory>, 2> extended_;
@@ -229,16 +245,48 @@ class NeighborList {
   std::uint64_t cells_visited_ = 0;
   std::vector<Carried> carried_;  // interacting pairs of the previous build
   std::vector<ExtendedHistory> carried_extended_;  // beside carried_, when the model keeps it
-  // Per-chunk scratch of the build (chunks of owners, independent of the thread count): the
-  // partners found, with their shift codes.
+  /// A unit of the search: cells [from, to) of class c's own grid, whose members (about kChunk
+  /// spheres) it lists as owners. Units, not threads, split the work.
+  struct SearchUnit {
+    std::uint32_t size_class;
+    std::uint32_t from, to;
+  };
+  /// The spheres of the cells around one cell of one grid that may pair with an owner of a given
+  /// slab, gathered once for all the owners in that cell (structure of arrays: each owner's
+  /// distance tests then run over one short stream, in one loop).
+  struct Candidates {
+    std::size_t cell = 0;      // the key: cell of the grid, owners' slab (valid when `grid` is set)
+    std::uint32_t slab = 0;
+    const CellGrid* grid = nullptr;
+    bool imaged = true;        // false: the nearest image is found pair by pair
+    bool shifted = false;      // some candidate is seen through a periodic face
+    std::uint64_t cells = 0;   // cells gathered
+    std::size_t count = 0;     // candidates gathered: tag[0, count)
+    std::vector<PartnerCode> tag;  // each candidate with the shift code of its cell
+    [[nodiscard]] std::size_t size() const noexcept { return count; }
+  };
+  /// Gathers into `out` the spheres of `grid`'s cells around `cell` that may pair with an owner of
+  /// slab `slab` (its own slab or the next).
+  void gather(const NeighborBuildInput& in, Candidates& out, AxisCells (&axes)[3], const CellGrid& grid, std::size_t cell, std::uint32_t slab) const;
+  /// Tests owner i (centre `si`) against `cand`; appends the partners it lists (with their shift
+  /// codes) at out[used...] and returns the new count.
+  template <bool Imaged, bool Shifted>
+  std::size_t scan(const NeighborBuildInput& in, const Candidates& cand, const PackedSphere& si, std::uint32_t i, std::uint8_t still_i,
+                   double skin, std::uint32_t* out, std::size_t used) const noexcept;
+
+  // Per-unit scratch of the build (units of cells, independent of the thread count): the
+  // partners found, owner after owner in the unit's order, with their shift codes.
+  std::vector<SearchUnit> units_;
+  std::size_t last_units_ = 0;  // units of the last build
   std::vector<std::vector<std::uint32_t>> chunk_partners_;
   std::vector<std::uint32_t> counts_;
   std::vector<std::uint64_t> chunk_candidates_;
   std::vector<std::uint64_t> chunk_cells_;
   // One cache line apart: each thread rewrites its vectors' ends for every sphere it searches.
   struct alignas(64) Stencil {
-    AxisCells x, y, z;
-    std::vector<std::uint32_t> partners;  // the partners of the chunk being searched
+    AxisCells axes[3];
+    std::vector<Candidates> near;         // per size class of the partners
+    std::vector<std::uint32_t> partners;  // the partners of the unit being searched
   };
   std::vector<Stencil> stencils_;  // per thread
 };

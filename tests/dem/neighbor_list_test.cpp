@@ -61,6 +61,33 @@ std::set<Pair> oracle(const test_support::RandomSpheres& s, const dem::PeriodicB
   return {pairs.begin(), pairs.end()};
 }
 
+/// The pair loop walks each slab's entries as runs: every run must hold consecutive entries of
+/// that slab's owners (alike in `shifted`), and the runs of a slab, end to end, exactly the
+/// entries of its owners in owner order — never an entry of another slab's owner, whose forces
+/// would then be summed twice.
+void expect_runs_cover_the_slabs(const dem::NeighborList& list, const char* what) {
+  for (std::uint32_t i = 0; i < list.sphere_count(); ++i) {
+    for (std::uint32_t k = list.begin(i); k < list.begin(i + 1); ++k) {
+      ASSERT_EQ(list.owners()[k], i) << what << ": owner of entry " << k;
+    }
+  }
+  for (std::uint32_t sl = 0; sl < list.slabs().count(); ++sl) {
+    std::vector<std::uint32_t> owned;
+    for (const std::uint32_t i : list.slabs().members(sl)) {
+      for (std::uint32_t k = list.begin(i); k < list.begin(i + 1); ++k) owned.push_back(k);
+    }
+    std::vector<std::uint32_t> walked;
+    for (const dem::NeighborList::EntryRun& r : list.runs(sl)) {
+      EXPECT_LT(r.begin, r.end) << what << ": an empty run in slab " << sl;
+      for (std::uint32_t k = r.begin; k < r.end; ++k) {
+        walked.push_back(k);
+        EXPECT_EQ(r.shifted, list.shifted(list.owners()[k])) << what << ": entry " << k;
+      }
+    }
+    EXPECT_EQ(walked, owned) << what << ": slab " << sl;
+  }
+}
+
 dem::PeriodicBox box_of(const Vec3& lo, const Vec3& hi, bool px, bool py, bool pz) {
   dem::PeriodicBox b;
   b.lo = lo;
@@ -80,6 +107,7 @@ TEST(NeighborList, RandomPolydisperseScenesMatchTheBruteForceOracle) {
     const double skin = 0.002 * seed;
     const dem::NeighborList list = build_list(s, box, skin, 1 + static_cast<int>(seed % 3));
     EXPECT_EQ(listed_pairs(list, s, skin), oracle(s, box, skin)) << "seed " << seed;
+    expect_runs_cover_the_slabs(list, "random scene");
   }
 }
 
@@ -322,6 +350,9 @@ TEST(NeighborList, RenumberingAListEqualsSearchingItAgain) {
     const std::uint64_t builds = renumbered.builds();
     renumbered.permute(moved.spheres, box, new_of_old, 1 + static_cast<int>(seed % 2));
     EXPECT_EQ(renumbered.builds(), builds) << "a renumbering is not a build";
+    // A shuffle scatters each slab's owners over the indices, with owners of other slabs, some
+    // without entries, between them.
+    expect_runs_cover_the_slabs(renumbered, seed % 2 == 0 ? "shuffled" : "Morton order");
     searched = build_list(moved, box, skin, 1, new_of_old, std::move(searched));
     ASSERT_EQ(renumbered.size(), searched.size()) << "seed " << seed;
     EXPECT_EQ(renumbered.periodic(), searched.periodic()) << "seed " << seed;
