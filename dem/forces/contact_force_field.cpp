@@ -305,6 +305,12 @@ double ContactForceField::kick_drift_pack(KinematicState& state, const Accelerat
   // forces it committed exactly as its accelerations' pass derived them (zero when fixed).
   const bool derive = owed_.active;
   const double close = owed_.kick;
+  // With the weights owed as well, the committed forces lack m g, added here as the field pass
+  // would have added it (f + m g, then divided by m).
+  const bool weigh = derive && owed_.weights;
+  const double g0 = setup_.fields.gravity[0];
+  const double g1 = setup_.fields.gravity[1];
+  const double g2 = setup_.fields.gravity[2];
   const double* const stored_a = derive ? nullptr : acc.linear.data();
   const double* const stored_alpha = derive ? nullptr : acc.angular.data();
   const double* const committed_f = committed_force_.data();
@@ -355,9 +361,17 @@ double ContactForceField::kick_drift_pack(KinematicState& state, const Accelerat
     } else if (mobile) {
       // As the accelerations' pass derived them from these forces (zero when fixed).
       const double m = inertia_mass(i, gravity_only);
-      a0 = committed_f[c] / m;
-      a1 = committed_f[c + 1] / m;
-      a2 = committed_f[c + 2] / m;
+      double f0 = committed_f[c];
+      double f1 = committed_f[c + 1];
+      double f2 = committed_f[c + 2];
+      if (weigh) {
+        f0 += m * g0;
+        f1 += m * g1;
+        f2 += m * g2;
+      }
+      a0 = f0 / m;
+      a1 = f1 / m;
+      a2 = f2 / m;
       b0 = inverse_inertia[i] * committed_t[c];
       b1 = inverse_inertia[i] * committed_t[c + 1];
       b2 = inverse_inertia[i] * committed_t[c + 2];
@@ -395,9 +409,12 @@ bool ContactForceField::verlet_step(KinematicState& state, Accelerations& acc, d
   weigh(0.5, 0.5);
   // Forces see v(t + Δt/2), as in LAMMPS; the closing half kick rides on the last pass, or is owed.
   if (defer_close_) {
-    evaluate_packed(state, dt, nullptr, true, FoldedKick{}, worst);
-    owed_ = {true, 0.5 * dt, rotation};
+    // Its field pass would only add the weights: the next opening pass adds them instead.
+    const bool weights = weights_may_be_owed();
+    evaluate_packed(state, dt, nullptr, true, FoldedKick{}, worst, weights);
+    owed_ = {true, 0.5 * dt, rotation, weights};
     ++deferred_kicks_;
+    if (weights) ++deferred_weights_;
   } else {
     evaluate_packed(state, dt, &acc, true,
                     FoldedKick{state.velocity.data(), state.angular_velocity.data(), 0.5 * dt, rotation}, worst);
@@ -432,6 +449,8 @@ void ContactForceField::settle(KinematicState& state, Accelerations& acc) {
       store_and_kick(&acc, kick, c, Vec3::Zero(), Vec3::Zero());
       continue;
     }
+    // The owed field pass: the committed forces become what that pass would have left.
+    if (owed_.weights) committed_force_.col(c) += setup_.fields.weight(props_.mass[c]);
     const SphereAcceleration a = acceleration_of(committed_force_, committed_torque_, c, gravity_only);
     store_and_kick(&acc, kick, c, a.linear, a.angular);
   }
@@ -485,7 +504,7 @@ void ContactForceField::evaluate(const KinematicState& state, double elapsed, Ac
 }
 
 void ContactForceField::evaluate_packed(const KinematicState& state, double elapsed, Accelerations* out,
-                                        bool commit, const FoldedKick& kick, double worst) {
+                                        bool commit, const FoldedKick& kick, double worst, bool owe_weights) {
   const double half_skin = 0.5 * setup_.neighbors.skin;
   double wall_travel = 0.0;
   for (const Wall& w : setup_.walls) {
@@ -506,7 +525,7 @@ void ContactForceField::evaluate_packed(const KinematicState& state, double elap
     const ScopedSeconds timer(timing_.pair_loop);
     run_pairs(state, elapsed, commit);
   }
-  {
+  if (!owe_weights) {
     const ScopedSeconds timer(timing_.sphere_loop);
     run_walls_and_fields(state, elapsed, out, commit, kick);
   }

@@ -80,6 +80,9 @@ class ContactForceField final : public ForceEvaluator {
   void defer_closing_kick(bool defer) noexcept { defer_close_ = defer; }
   /// Steps so far that left their closing kick owed.
   [[nodiscard]] std::uint64_t deferred_kicks() const noexcept { return deferred_kicks_; }
+  /// Of those, the steps that owed their field pass too (the weights m g, added where the next
+  /// opening pass or settle() reads the forces).
+  [[nodiscard]] std::uint64_t deferred_weights() const noexcept { return deferred_weights_; }
   /// Gives an owed closing kick now (and stores the accelerations it used in `acc`); no-op when
   /// none is owed.
   void settle(KinematicState& state, Accelerations& acc);
@@ -185,9 +188,10 @@ class ContactForceField final : public ForceEvaluator {
   void evaluate(const KinematicState& state, double elapsed, Accelerations& out, bool commit,
                 const FoldedKick& kick);
   /// evaluate once the centres are packed (`worst`: the largest squared travel since the build);
-  /// `out` null: the accelerations are kicked with but not stored.
+  /// `out` null: the accelerations are kicked with but not stored. `owe_weights`: the field pass is
+  /// left out (weights_may_be_owed(); the caller owes the weights with the closing kick).
   void evaluate_packed(const KinematicState& state, double elapsed, Accelerations* out, bool commit,
-                       const FoldedKick& kick, double worst);
+                       const FoldedKick& kick, double worst, bool owe_weights = false);
   /// Packs the wrapped centres, clears the force sums; returns the largest squared travel since
   /// the last build.
   double pack(const KinematicState& state);
@@ -288,10 +292,20 @@ class ContactForceField final : public ForceEvaluator {
     bool active = false;
     double kick = 0.0;
     bool rotation = false;
+    /// The step left out its field pass too (only weights, no walls, no ledger): its committed
+    /// forces hold the contact sums alone, and the weights m g are added where they are read.
+    bool weights = false;
   };
+  /// True when a step whose closing kick is owed may owe its field pass as well: gravity is the
+  /// only field, there are no walls and no ledger, so that pass would only add m g to each
+  /// mobile sphere's force.
+  [[nodiscard]] bool weights_may_be_owed() const noexcept {
+    return setup_.fields.gravity_only() && setup_.walls.empty() && !setup_.track_energy;
+  }
   OwedKick owed_;
   bool defer_close_ = false;
   std::uint64_t deferred_kicks_ = 0;
+  std::uint64_t deferred_weights_ = 0;
 };
 
 }  // namespace dem

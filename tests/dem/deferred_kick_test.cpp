@@ -24,6 +24,7 @@ struct Snapshot {
   double time = 0.0;
   std::uint64_t reorders = 0;
   std::uint64_t deferred = 0;
+  std::uint64_t weights = 0;
 };
 
 Snapshot take(const dem::Simulation& sim) {
@@ -41,6 +42,7 @@ Snapshot take(const dem::Simulation& sim) {
   s.time = sim.state().time;
   s.reorders = sim.reorders();
   s.deferred = sim.force_field().deferred_kicks();
+  s.weights = sim.force_field().deferred_weights();
   return s;
 }
 
@@ -48,6 +50,7 @@ Snapshot take(const dem::Simulation& sim) {
 struct StretchRun {
   std::uint64_t deferred = 0;
   std::uint64_t reorders = 0;
+  std::uint64_t weights = 0;  // steps that owed their field pass (the weights) as well
 };
 
 /// Runs `setup` step by step, and in stretches of irregular length through advance(), with
@@ -74,12 +77,13 @@ StretchRun expect_advance_matches_steps(const dem::SimulationSetup& setup, std::
     EXPECT_TRUE(b.spin.cwiseEqual(a.spin).all()) << what << ", after step " << done;
     EXPECT_TRUE(b.force.cwiseEqual(a.force).all()) << what << ", after step " << done;
     EXPECT_TRUE(b.torque.cwiseEqual(a.torque).all()) << what << ", after step " << done;
-    if (::testing::Test::HasFailure()) return {b.deferred, b.reorders};
+    if (::testing::Test::HasFailure()) return {b.deferred, b.reorders, b.weights};
   }
   // The stretches crossed contacts, list builds and reorders, not an empty box.
   EXPECT_GT(by_stretch.force_field().interacting_pairs(), 50U) << what;
   EXPECT_GT(by_stretch.force_field().list_builds(), 2U) << what;
-  return {by_stretch.force_field().deferred_kicks(), by_stretch.reorders()};
+  return {by_stretch.force_field().deferred_kicks(), by_stretch.reorders(),
+          by_stretch.force_field().deferred_weights()};
 }
 
 /// A settling box small enough for every kind of scene below, with Morton reorders within the run.
@@ -92,6 +96,22 @@ dem::SimulationSetup box(std::uint32_t seed, int threads = 1) {
   return s;
 }
 
+/// The chute's kind of scene: no walls, a floor of fixed spheres (the lattice's bottom layer),
+/// periodic in x and y, gravity tilted — the field pass would only add the weights, so a step
+/// that owes its closing kick owes that pass too.
+dem::SimulationSetup wall_free_box(std::uint32_t seed, int threads = 1) {
+  dem::SimulationSetup s = box(seed, threads);
+  const double width = s.walls[2].point.x();
+  const double floor = s.particles.front().position.z();
+  for (dem::ParticleInit& p : s.particles) p.fixed = p.position.z() == floor;
+  s.walls.clear();
+  s.fields.gravity = Vec3(3.0, -2.0, -9.81);
+  s.box.lo = Vec3(0.0, 0.0, -0.05);
+  s.box.hi = Vec3(width, width, 0.05);
+  s.box.periodic = {true, true, false};
+  return s;
+}
+
 TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingInAWalledBoxWithGravity) {
   for (const int threads : {1, 2}) {
     dem::SimulationSetup s = box(3, threads);
@@ -100,7 +120,27 @@ TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingInAWalledBoxWithGravity
     const StretchRun run = expect_advance_matches_steps(s, steps(300), threads == 1 ? "1 thread" : "2 threads");
     EXPECT_GT(run.deferred, steps(200)) << "the stretches deferred their closing kicks";
     EXPECT_GT(run.reorders, 0U) << "a reorder settles an owed kick within a stretch";
+    EXPECT_EQ(run.weights, 0U) << "with walls, the field pass is never owed";
   }
+}
+
+TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingWithTheWeightsOwed) {
+  for (const int threads : {1, 2}) {
+    const dem::SimulationSetup s = wall_free_box(15, threads);
+    const char* what = threads == 1 ? "no walls, 1 thread" : "no walls, 2 threads";
+    const StretchRun run = expect_advance_matches_steps(s, steps(300), what);
+    EXPECT_GT(run.deferred, steps(200)) << what;
+    EXPECT_EQ(run.weights, run.deferred) << what << ": every deferred step owed the weights too";
+    EXPECT_GT(run.reorders, 0U) << what << ": a reorder settles owed weights within a stretch";
+  }
+  // Only gravity adds nothing but weights: with a fluid the field pass runs at every step.
+  dem::SimulationSetup fluid = wall_free_box(16);
+  dem::Fluid f;
+  f.buoyancy = true;
+  fluid.fields.fluid = f;
+  const StretchRun run = expect_advance_matches_steps(fluid, steps(200), "no walls, a fluid");
+  EXPECT_GT(run.deferred, steps(100));
+  EXPECT_EQ(run.weights, 0U);
 }
 
 TEST(DeferredClosingKick, AdvanceGivesTheStatesOfSteppingInAPeriodicBox) {
@@ -181,6 +221,9 @@ void expect_fused_matches_own_passes(dem::SimulationSetup setup, const char* wha
   }
   EXPECT_GT(own.force_field().interacting_pairs(), 50U) << what;
   EXPECT_GT(advanced.force_field().deferred_kicks(), steps(100)) << what;
+  // Wall-free gravity-only scenes owe their field pass too (the others never do).
+  const bool weights = setup.walls.empty() && setup.fields.gravity_only();
+  EXPECT_EQ(advanced.force_field().deferred_weights(), weights ? advanced.force_field().deferred_kicks() : 0U) << what;
 }
 
 TEST(FusedVerletStep, GivesTheStatesOfTheSchemesOwnPasses) {
@@ -195,6 +238,7 @@ TEST(FusedVerletStep, GivesTheStatesOfTheSchemesOwnPasses) {
   expect_fused_matches_own_passes(fluid, "fluid with virtual mass");
   dem::SimulationSetup two = box(14, 2);
   expect_fused_matches_own_passes(two, "2 threads");
+  expect_fused_matches_own_passes(wall_free_box(17), "no walls: the weights owed with the kick");
 }
 
 TEST(DeferredClosingKick, OtherSchemesAdvanceAsTheyStep) {
