@@ -260,14 +260,15 @@ void evaluate_batch(const PairLoopInput& in, const ListView& list, const std::ui
 struct PairGather {
   const ListView& view;
   const PackedSphere* packed;
-  const std::uint32_t* owner_of;
+  const std::uint8_t* owner_step;  // entry k's owner is the run's first plus owner_step[k]
   std::uint32_t* owner;
   std::uint32_t* entry;
 
   template <bool Shifted>
-  [[nodiscard]] std::uint32_t run(std::uint32_t k, std::uint32_t stop, std::uint32_t count) const noexcept {
+  [[nodiscard]] std::uint32_t run(std::uint32_t k, std::uint32_t stop, std::uint32_t first_owner,
+                                  std::uint32_t count) const noexcept {
     for (; k < stop; ++k) {
-      const std::uint32_t i = owner_of[k];
+      const std::uint32_t i = first_owner + owner_step[k];
       const PackedSphere& pi = packed[i];
       const PartnerCode partner = view.partners[k];
       const PackedSphere& pj = packed[partner & kPartnerMask];
@@ -337,7 +338,7 @@ template <class Slots, bool Energies, bool Periodic>
     }
     count = 0;
   };
-  const PairGather gather{view, packed, list.owners().data(), gathered_owner.data(), gathered_entry.data()};
+  const PairGather gather{view, packed, list.owner_steps().data(), gathered_owner.data(), gathered_entry.data()};
   for (const NeighborList::EntryRun& r : list.runs(slab)) {
     // Only the owners near a periodic face read the shifts.
     const bool shifted = Periodic && r.shifted != 0;
@@ -346,7 +347,7 @@ template <class Slots, bool Energies, bool Periodic>
       if (count == kChunk) flush();
       // The distance test over as many entries as fit in the gather buffer.
       const std::uint32_t stop = std::min<std::uint32_t>(r.end, k + (static_cast<std::uint32_t>(kChunk) - count));
-      count = shifted ? gather.run<true>(k, stop, count) : gather.run<false>(k, stop, count);
+      count = shifted ? gather.run<true>(k, stop, r.first_owner, count) : gather.run<false>(k, stop, r.first_owner, count);
       k = stop;
     }
   }

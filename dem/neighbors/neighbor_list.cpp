@@ -190,7 +190,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   }
   chunk_candidates_.assign(unit_count, 0);
   chunk_cells_.assign(unit_count, 0);
-  counts_.assign(n, 0);
+  // Each owner's count goes to offsets_[i + 1] (the last build's offsets are no longer read:
+  // remember_interacting has taken what it needs), summed into offsets once all are known.
+  offsets_.assign(n + 1, 0);
   const int threads = std::max(in.threads, 1);
   const std::uint32_t* const slab_of = slabs_.all().data();
   const std::uint8_t* const still = in.still.data();
@@ -241,10 +243,10 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
         }
         std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(used),
                   by_partner);
-        counts_[i] = static_cast<std::uint32_t>(used - first);
+        offsets_[i + 1] = static_cast<std::uint32_t>(used - first);
       }
       std::vector<std::uint32_t>& kept = chunk_partners_[u];
-      if (kept.capacity() < used) kept.reserve(used + used / 4);
+      if (kept.capacity() < used) kept.reserve(used + used / 8);
       kept.assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(used));
       chunk_candidates_[u] = candidates;
       chunk_cells_[u] = cells;
@@ -255,9 +257,7 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   for (const std::uint64_t c : chunk_candidates_) candidates_ += c;
   cells_visited_ = 0;
   for (const std::uint64_t c : chunk_cells_) cells_visited_ += c;
-  offsets_.resize(n + 1);
-  offsets_[0] = 0;
-  for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
+  for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] += offsets_[i];
   reserve_entries(offsets_[n]);
   // Each unit's partners, owner after owner in the unit's order, to their owners' entries.
   parallel_for(threads, unit_count, [&](std::int64_t u) {
@@ -266,8 +266,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
     const std::uint32_t* part = chunk_partners_[static_cast<std::size_t>(u)].data();
     for (std::uint32_t m = own.first(unit.from); m < own.first(unit.to); ++m) {
       const std::uint32_t i = own.members()[m];
-      std::copy(part, part + counts_[i], partners_.begin() + offsets_[i]);
-      part += counts_[i];
+      const std::uint32_t count = offsets_[i + 1] - offsets_[i];
+      std::copy(part, part + count, partners_.begin() + offsets_[i]);
+      part += count;
     }
   });
   if (old_n != n) carried_.clear();
@@ -409,7 +410,7 @@ void NeighborList::reserve_entries(std::size_t total) {
   if (partners_.capacity() < total) {
     partners_.reserve(total + total / 8);
     contact_.reserve(total + total / 8);
-    owner_of_.reserve(total + total / 8);
+    owner_step_.reserve(total + total / 8);
   }
   partners_.resize(total);
   contact_.assign(total, kNoContact);
@@ -420,33 +421,38 @@ void NeighborList::finish_layout(std::span<const std::uint32_t> new_of_old, int 
   const std::size_t total = partners_.size();
   periodic_ = false;
   shifted_.assign(n, 0);
-  owner_of_.resize(total);
+  owner_step_.resize(total);
   parallel_for(threads, n, [&](std::uint32_t i) {
     for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
-      owner_of_[k] = i;
       if ((partners_[k] >> kPartnerBits) != kNoShift) shifted_[i] = 1;
     }
   });
   for (std::uint32_t i = 0; i < n; ++i) periodic_ = periodic_ || shifted_[i] != 0;
-  // Each slab's owners as runs of consecutive indices alike in `shifted`: their entries are
-  // consecutive too, and the pair loop tests them in one loop per run.
+  // Each slab's owners as runs of consecutive indices alike in `shifted`, at most 256 owners
+  // long: their entries are consecutive too, the pair loop tests them in one loop per run, and
+  // an entry's owner is the run's first plus the entry's step (one byte).
   // Two passes (count, then write), so that a steady scene's rebuilds reuse the storage.
   const auto lay_out_runs = [&](EntryRun* out) {
     std::uint32_t count = 0;
     for (std::uint32_t sl = 0; sl < slabs_.count(); ++sl) {
       bool open = false;
       std::uint32_t end = 0;  // of the open run
+      std::uint32_t first = 0;
       std::uint8_t shifted = 0;
       for (const std::uint32_t i : slabs_.members(sl)) {
         if (offsets_[i] == offsets_[i + 1]) continue;  // no entries
         // Entries that follow the run's own (only owners without entries lie between) extend it.
-        if (open && offsets_[i] == end && shifted_[i] == shifted) {
+        if (open && offsets_[i] == end && shifted_[i] == shifted && i - first <= kMaxOwnerStep) {
           if (out != nullptr) out[count - 1].end = offsets_[i + 1];
         } else {
-          if (out != nullptr) out[count] = {offsets_[i], offsets_[i + 1], shifted_[i]};
+          if (out != nullptr) out[count] = {offsets_[i], offsets_[i + 1], i, shifted_[i]};
           ++count;
           open = true;
+          first = i;
           shifted = shifted_[i];
+        }
+        if (out != nullptr) {
+          for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) owner_step_[k] = static_cast<std::uint8_t>(i - first);
         }
         end = offsets_[i + 1];
       }
@@ -506,18 +512,17 @@ void NeighborList::permute(std::span<const PackedSphere> spheres, const Periodic
     }
     return std::pair<std::uint32_t, PartnerCode>{owner, partner | (code << kPartnerBits)};
   };
-  counts_.assign(n, 0);
+  std::fill(offsets_.begin(), offsets_.end(), 0U);
   for (std::uint32_t a = 0; a < n; ++a) {
-    for (std::uint32_t k = old_offsets[a]; k < old_offsets[a + 1]; ++k) ++counts_[renumbered(a, k).first];
+    for (std::uint32_t k = old_offsets[a]; k < old_offsets[a + 1]; ++k) ++offsets_[renumbered(a, k).first + 1];
   }
-  offsets_[0] = 0;
-  for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
+  for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] += offsets_[i];
   reserve_entries(offsets_[n]);
-  std::copy(offsets_.begin(), offsets_.end() - 1, counts_.begin());  // counts_ now: next free entry
+  std::vector<std::uint32_t> next_free(offsets_.begin(), offsets_.end() - 1);
   for (std::uint32_t a = 0; a < n; ++a) {
     for (std::uint32_t k = old_offsets[a]; k < old_offsets[a + 1]; ++k) {
       const auto [owner, entry] = renumbered(a, k);
-      partners_[counts_[owner]++] = entry;
+      partners_[next_free[owner]++] = entry;
     }
   }
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -616,9 +621,8 @@ ContactHistory NeighborList::history(std::size_t k) const noexcept {
 }
 
 std::size_t NeighborList::bytes() const noexcept {
-  std::size_t total = (offsets_.capacity() + counts_.capacity() + owner_of_.capacity() + slab_runs_.capacity()) *
-                          sizeof(std::uint32_t) +
-                      runs_.capacity() * sizeof(EntryRun) + shifted_.capacity() +
+  std::size_t total = (offsets_.capacity() + slab_runs_.capacity()) * sizeof(std::uint32_t) +
+                      owner_step_.capacity() + runs_.capacity() * sizeof(EntryRun) + shifted_.capacity() +
                       partners_.capacity() * sizeof(PartnerCode) + contact_.capacity() * sizeof(std::uint32_t) +
                       (slips_[0].capacity() + slips_[1].capacity()) * sizeof(Vec3) +
                       (extended_[0].capacity() + extended_[1].capacity()) * sizeof(ExtendedHistory) +

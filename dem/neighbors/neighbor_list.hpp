@@ -180,15 +180,18 @@ class NeighborList {
   /// without a periodic shift (`shifted`).
   struct EntryRun {
     std::uint32_t begin, end;
+    std::uint32_t first_owner;  ///< owner of entry k: first_owner + owner_steps()[k]
     std::uint8_t shifted;
   };
+  /// The most a run's owners lie past its first (owner steps are one byte).
+  static constexpr std::uint32_t kMaxOwnerStep = 255;
   /// The runs that cover the entries of slab s's owners, in owner order (owners without entries
   /// are left out).
   [[nodiscard]] std::span<const EntryRun> runs(std::uint32_t s) const noexcept {
     return {runs_.data() + slab_runs_[s], runs_.data() + slab_runs_[s + 1]};
   }
-  /// The owner of every entry.
-  [[nodiscard]] std::span<const std::uint32_t> owners() const noexcept { return owner_of_; }
+  /// Each entry's owner less the first owner of its run (see EntryRun).
+  [[nodiscard]] std::span<const std::uint8_t> owner_steps() const noexcept { return owner_step_; }
   /// The slabs the pair loop runs over.
   [[nodiscard]] const SlabPartition& slabs() const noexcept { return slabs_; }
   /// Entry index of the pair (i, j) in either orientation and whether i is its owner, or −1.
@@ -225,7 +228,7 @@ class NeighborList {
   std::vector<std::uint32_t> offsets_;
   std::vector<PartnerCode> partners_;
   std::vector<std::uint8_t> shifted_;
-  std::vector<std::uint32_t> owner_of_;  // owner of each entry
+  std::vector<std::uint8_t> owner_step_;  // each entry's owner less its run's first
   std::vector<EntryRun> runs_;           // per slab (slab_runs_ indexes them)
   std::vector<std::uint32_t> slab_runs_;
   std::vector<std::uint32_t> contact_;
@@ -279,7 +282,6 @@ class NeighborList {
   std::vector<SearchUnit> units_;
   std::size_t last_units_ = 0;  // units of the last build
   std::vector<std::vector<std::uint32_t>> chunk_partners_;
-  std::vector<std::uint32_t> counts_;
   std::vector<std::uint64_t> chunk_candidates_;
   std::vector<std::uint64_t> chunk_cells_;
   // One cache line apart: each thread rewrites its vectors' ends for every sphere it searches.

@@ -66,10 +66,9 @@ std::set<Pair> oracle(const test_support::RandomSpheres& s, const dem::PeriodicB
 /// entries of its owners in owner order — never an entry of another slab's owner, whose forces
 /// would then be summed twice.
 void expect_runs_cover_the_slabs(const dem::NeighborList& list, const char* what) {
+  std::vector<std::uint32_t> owner_of(list.size());
   for (std::uint32_t i = 0; i < list.sphere_count(); ++i) {
-    for (std::uint32_t k = list.begin(i); k < list.begin(i + 1); ++k) {
-      ASSERT_EQ(list.owners()[k], i) << what << ": owner of entry " << k;
-    }
+    for (std::uint32_t k = list.begin(i); k < list.begin(i + 1); ++k) owner_of[k] = i;
   }
   for (std::uint32_t sl = 0; sl < list.slabs().count(); ++sl) {
     std::vector<std::uint32_t> owned;
@@ -81,7 +80,8 @@ void expect_runs_cover_the_slabs(const dem::NeighborList& list, const char* what
       EXPECT_LT(r.begin, r.end) << what << ": an empty run in slab " << sl;
       for (std::uint32_t k = r.begin; k < r.end; ++k) {
         walked.push_back(k);
-        EXPECT_EQ(r.shifted, list.shifted(list.owners()[k])) << what << ": entry " << k;
+        EXPECT_EQ(r.first_owner + list.owner_steps()[k], owner_of[k]) << what << ": owner of entry " << k;
+        EXPECT_EQ(r.shifted, list.shifted(owner_of[k])) << what << ": entry " << k;
       }
     }
     EXPECT_EQ(walked, owned) << what << ": slab " << sl;
@@ -109,6 +109,33 @@ TEST(NeighborList, RandomPolydisperseScenesMatchTheBruteForceOracle) {
     EXPECT_EQ(listed_pairs(list, s, skin), oracle(s, box, skin)) << "seed " << seed;
     expect_runs_cover_the_slabs(list, "random scene");
   }
+}
+
+TEST(NeighborList, RunsOfMoreOwnersThanAStepCountsAreSplit) {
+  // An entry's owner is its run's first plus a one-byte step: four slabs along x of ~500 spheres
+  // each, numbered along x (so that each slab's owners follow each other), need runs cut every
+  // 256 owners.
+  auto s = test_support::random_spheres(21, 2000, Vec3(0, 0, 0), Vec3(0.5, 0.45, 0.45), 0.03, 0.05);
+  std::vector<std::size_t> order(s.spheres.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return s.spheres[a].x < s.spheres[b].x; });
+  test_support::RandomSpheres sorted;
+  for (const std::size_t k : order) {
+    sorted.spheres.push_back(s.spheres[k]);
+    sorted.still.push_back(s.still[k]);
+  }
+  s = sorted;
+  const dem::NeighborList list = build_list(s, dem::PeriodicBox{}, 0.01);
+  EXPECT_LE(list.slabs().count(), 4U);
+  std::uint32_t longest = 0;
+  for (std::uint32_t sl = 0; sl < list.slabs().count(); ++sl) {
+    for (const dem::NeighborList::EntryRun& r : list.runs(sl)) {
+      for (std::uint32_t k = r.begin; k < r.end; ++k) longest = std::max<std::uint32_t>(longest, list.owner_steps()[k]);
+    }
+  }
+  EXPECT_GT(longest, 200U) << "runs long enough to need the cut";
+  expect_runs_cover_the_slabs(list, "2,000 spheres in few slabs");
+  EXPECT_EQ(listed_pairs(list, s, 0.01), oracle(s, dem::PeriodicBox{}, 0.01));
 }
 
 TEST(NeighborList, FewSlabsAlongAnOpenAxisListEveryPairOnce) {
