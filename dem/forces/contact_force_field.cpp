@@ -466,28 +466,34 @@ void ContactForceField::build_wall_list(double time, std::span<const std::uint32
 
 void ContactForceField::rebuild(const KinematicState& state, std::span<const std::uint32_t> new_of_old) {
   const ScopedSeconds timer(timing_.neighbor_build);
+  const int threads = std::max(setup_.threads, 1);
+  const auto n = static_cast<std::int64_t>(packed_.size());
   if (setup_.box.any()) {
     // Wrap: images are chosen afresh at every build, so centres lie in the box, give or take
-    // the half skin they may move before the next build.
-    wrap_offset_.setZero();
-    pack(state);
+    // the half skin they may move before the next build. A centre is where the last packing
+    // took it from: the state, or the sphere's prescribed motion (as pack_motions).
     const Vec3 length = setup_.box.length();
-    for (std::size_t i = 0; i < packed_.size(); ++i) {
-      const auto image = setup_.box.image_of(Vec3(packed_[i].x, packed_[i].y, packed_[i].z));
+    parallel_for(threads, n, [&](std::int64_t i) {
+      const std::int32_t m = motion_of_.empty() ? -1 : motion_of_[static_cast<std::size_t>(i)];
+      const Vec3 x = m >= 0 ? motion_position_[static_cast<std::size_t>(m)] : Vec3(state.position.col(i));
+      const auto image = setup_.box.image_of(x);
+      double p[3];
       for (int k = 0; k < 3; ++k) {
-        wrap_offset_(k, static_cast<Eigen::Index>(i)) = setup_.box.periodic[static_cast<std::size_t>(k)] ? image[static_cast<std::size_t>(k)] * length[k] : 0.0;
+        const double offset = setup_.box.periodic[static_cast<std::size_t>(k)] ? image[static_cast<std::size_t>(k)] * length[k] : 0.0;
+        wrap_offset_(k, i) = offset;
+        p[k] = x[k] - offset;
       }
-    }
-    pack(state);
+      packed_[static_cast<std::size_t>(i)] = {p[0], p[1], p[2], half_reach_[i]};
+    });
   }
-  const int threads = std::max(setup_.threads, 1);
   list_.build({packed_, still_, classes_.of, classes_.max_half_reach, &setup_.box,
                setup_.neighbors.skin, threads, extended_history_},
               new_of_old);
   build_wall_list(state.time, new_of_old);
-  for (std::size_t i = 0; i < packed_.size(); ++i) {
-    built_position_.col(static_cast<Eigen::Index>(i)) = Vec3(packed_[i].x, packed_[i].y, packed_[i].z);
-  }
+  parallel_for(threads, n, [&](std::int64_t i) {
+    const PackedSphere& s = packed_[static_cast<std::size_t>(i)];
+    built_position_.col(i) = Vec3(s.x, s.y, s.z);
+  });
   built_time_ = state.time;
   built_ = true;
 }

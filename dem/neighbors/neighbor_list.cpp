@@ -160,7 +160,7 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   }
 
   const std::uint32_t old_n = sphere_count();
-  remember_interacting();
+  remember_interacting(std::max(in.threads, 1));
 
   // Units: runs of cells of each class's own grid holding about kChunk owners each. The owners
   // of a cell are searched one after another, so the candidates around the cell are gathered
@@ -430,49 +430,27 @@ void NeighborList::finish_layout(std::span<const std::uint32_t> new_of_old, int 
   for (std::uint32_t i = 0; i < n; ++i) periodic_ = periodic_ || shifted_[i] != 0;
   // Each slab's owners as runs of consecutive indices alike in `shifted`, at most 256 owners
   // long: their entries are consecutive too, the pair loop tests them in one loop per run, and
-  // an entry's owner is the run's first plus the entry's step (one byte).
-  // Two passes (count, then write), so that a steady scene's rebuilds reuse the storage.
-  const auto lay_out_runs = [&](EntryRun* out) {
-    std::uint32_t count = 0;
-    for (std::uint32_t sl = 0; sl < slabs_.count(); ++sl) {
-      bool open = false;
-      std::uint32_t end = 0;  // of the open run
-      std::uint32_t first = 0;
-      std::uint8_t shifted = 0;
-      for (const std::uint32_t i : slabs_.members(sl)) {
-        if (offsets_[i] == offsets_[i + 1]) continue;  // no entries
-        // Entries that follow the run's own (only owners without entries lie between) extend it.
-        if (open && offsets_[i] == end && shifted_[i] == shifted && i - first <= kMaxOwnerStep) {
-          if (out != nullptr) out[count - 1].end = offsets_[i + 1];
-        } else {
-          if (out != nullptr) out[count] = {offsets_[i], offsets_[i + 1], i, shifted_[i]};
-          ++count;
-          open = true;
-          first = i;
-          shifted = shifted_[i];
-        }
-        if (out != nullptr) {
-          for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) owner_step_[k] = static_cast<std::uint8_t>(i - first);
-        }
-        end = offsets_[i + 1];
-      }
-      if (out != nullptr) slab_runs_[sl + 1] = count;
-    }
-    return count;
-  };
-  const std::uint32_t run_count = lay_out_runs(nullptr);
-  if (runs_.capacity() < run_count) runs_.reserve(run_count + run_count / 8);
-  runs_.resize(run_count);
-  slab_runs_.assign(slabs_.count() + 1, 0);
-  lay_out_runs(runs_.data());
-  // Slab s's pairs can hold at most as many contacts as it has entries: its slots start where
-  // the entries of the slabs before it end.
-  slab_base_.assign(slabs_.count() + 1, 0);
-  for (std::uint32_t sl = 0; sl < slabs_.count(); ++sl) {
+  // an entry's owner is the run's first plus the entry's step (one byte). Slab by slab, in
+  // parallel: count, then write (so that a steady scene's rebuilds reuse the storage).
+  const std::uint32_t slab_count = slabs_.count();
+  slab_runs_.assign(slab_count + 1, 0);
+  slab_base_.assign(slab_count + 1, 0);
+  parallel_for(threads, slab_count, [&](std::uint32_t sl) {
+    slab_runs_[sl + 1] = lay_out_runs(sl, nullptr);
+    // Slab s's pairs can hold at most as many contacts as it has entries: its slots start where
+    // the entries of the slabs before it end.
     std::uint32_t entries = 0;
     for (const std::uint32_t i : slabs_.members(sl)) entries += offsets_[i + 1] - offsets_[i];
-    slab_base_[sl + 1] = slab_base_[sl] + entries;
+    slab_base_[sl + 1] = entries;
+  });
+  for (std::uint32_t sl = 0; sl < slab_count; ++sl) {
+    slab_runs_[sl + 1] += slab_runs_[sl];
+    slab_base_[sl + 1] += slab_base_[sl];
   }
+  const std::uint32_t run_count = slab_runs_[slab_count];
+  if (runs_.capacity() < run_count) runs_.reserve(run_count + run_count / 8);
+  runs_.resize(run_count);
+  parallel_for(threads, slab_count, [&](std::uint32_t sl) { lay_out_runs(sl, runs_.data() + slab_runs_[sl]); });
   for (int b = 0; b < 2; ++b) {
     if (slips_[b].capacity() < total) slips_[b].reserve(partners_.capacity());
     slips_[b].resize(total);
@@ -484,7 +462,33 @@ void NeighborList::finish_layout(std::span<const std::uint32_t> new_of_old, int 
     }
   }
   carry_history(new_of_old, threads);
-  lay_out_carried();
+  lay_out_carried(threads);
+}
+
+std::uint32_t NeighborList::lay_out_runs(std::uint32_t slab, EntryRun* out) noexcept {
+  std::uint32_t count = 0;
+  bool open = false;
+  std::uint32_t end = 0;  // of the open run
+  std::uint32_t first = 0;
+  std::uint8_t shifted = 0;
+  for (const std::uint32_t i : slabs_.members(slab)) {
+    if (offsets_[i] == offsets_[i + 1]) continue;  // no entries
+    // Entries that follow the run's own (only owners without entries lie between) extend it.
+    if (open && offsets_[i] == end && shifted_[i] == shifted && i - first <= kMaxOwnerStep) {
+      if (out != nullptr) out[count - 1].end = offsets_[i + 1];
+    } else {
+      if (out != nullptr) out[count] = {offsets_[i], offsets_[i + 1], i, shifted_[i]};
+      ++count;
+      open = true;
+      first = i;
+      shifted = shifted_[i];
+    }
+    if (out != nullptr) {
+      for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) owner_step_[k] = static_cast<std::uint8_t>(i - first);
+    }
+    end = offsets_[i + 1];
+  }
+  return count;
 }
 
 void NeighborList::permute(std::span<const PackedSphere> spheres, const PeriodicBox& box,
@@ -493,7 +497,7 @@ void NeighborList::permute(std::span<const PackedSphere> spheres, const Periodic
   if (spheres.size() != n || new_of_old.size() != n) {
     throw std::invalid_argument("NeighborList::permute: the spheres or the map do not match the list");
   }
-  remember_interacting();
+  remember_interacting(threads);
   // The slabs of the same centres in the new numbering (the partition depends on positions only).
   const auto [lo, hi] = bounding_box(spheres);
   slabs_.assign(spheres, lo, hi, box, slab_width_);
@@ -532,20 +536,42 @@ void NeighborList::permute(std::span<const PackedSphere> spheres, const Periodic
   finish_layout(new_of_old, threads);
 }
 
-void NeighborList::remember_interacting() {
-  carried_.clear();
-  carried_extended_.clear();
+void NeighborList::remember_interacting(int threads) {
   const std::uint32_t n = sphere_count();
   const std::span<const Vec3> slip = slips();
   const std::span<const ExtendedHistory> ext = extended();
-  for (std::uint32_t a = 0; a < n; ++a) {
-    for (std::uint32_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
-      const std::uint32_t c = contact_[k];
-      if (c == kNoContact) continue;
-      carried_.push_back({a, partners_[k] & kPartnerMask, slip[c]});
-      if (!ext.empty()) carried_extended_.push_back(ext[c]);
+  // In blocks of owners, in parallel: count the interacting pairs, then write them in owner
+  // order (the order does not depend on the thread count).
+  const std::uint32_t blocks = (n + kChunk - 1) / kChunk;
+  block_start_.assign(blocks + 1, 0);
+  const auto each_active = [&](std::uint32_t block, auto&& take) {
+    const std::uint32_t end = std::min(n, (block + 1) * kChunk);
+    for (std::uint32_t a = block * kChunk; a < end; ++a) {
+      for (std::uint32_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
+        if (contact_[k] != kNoContact) take(a, k);
+      }
     }
-  }
+  };
+  parallel_for(threads, blocks, [&](std::uint32_t block) {
+    std::uint32_t count = 0;
+    each_active(block, [&](std::uint32_t, std::uint32_t) { ++count; });
+    block_start_[block + 1] = count;
+  });
+  for (std::uint32_t b = 0; b < blocks; ++b) block_start_[b + 1] += block_start_[b];
+  const std::uint32_t total = block_start_[blocks];
+  if (carried_.capacity() < total) carried_.reserve(total + total / 8);
+  carried_.resize(total);
+  if (!ext.empty() && carried_extended_.capacity() < total) carried_extended_.reserve(total + total / 8);
+  carried_extended_.resize(ext.empty() ? 0 : total);
+  parallel_for(threads, blocks, [&](std::uint32_t block) {
+    std::uint32_t at = block_start_[block];
+    each_active(block, [&](std::uint32_t a, std::uint32_t k) {
+      const std::uint32_t c = contact_[k];
+      carried_[at] = {a, partners_[k] & kPartnerMask, slip[c]};
+      if (!ext.empty()) carried_extended_[at] = ext[c];
+      ++at;
+    });
+  });
 }
 
 void NeighborList::carry_history(std::span<const std::uint32_t> new_of_old, int threads) {
@@ -563,10 +589,11 @@ void NeighborList::carry_history(std::span<const std::uint32_t> new_of_old, int 
   });
 }
 
-void NeighborList::lay_out_carried() {
+void NeighborList::lay_out_carried(int threads) {
   std::vector<Vec3>& slip = slips_[current_];
   std::vector<ExtendedHistory>& ext = extended_[current_];
-  for (std::uint32_t sl = 0; sl < slabs_.count(); ++sl) {
+  // Each slab fills its own range of slots.
+  parallel_for(threads, slabs_.count(), [&](std::uint32_t sl) {
     std::uint32_t slot = slab_base_[sl];
     for (const std::uint32_t i : slabs_.members(sl)) {
       for (std::uint32_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
@@ -577,7 +604,7 @@ void NeighborList::lay_out_carried() {
         contact_[k] = slot++;
       }
     }
-  }
+  });
 }
 
 void NeighborList::set_history(std::size_t k, const ContactHistory& h) {
@@ -600,7 +627,7 @@ void NeighborList::set_history(std::size_t k, const ContactHistory& h) {
     }
   }
   contact_ = std::move(carried_of_entry);
-  lay_out_carried();
+  lay_out_carried(1);
 }
 
 std::int64_t NeighborList::find(std::uint32_t i, std::uint32_t j, bool& i_owns) const noexcept {
@@ -621,7 +648,7 @@ ContactHistory NeighborList::history(std::size_t k) const noexcept {
 }
 
 std::size_t NeighborList::bytes() const noexcept {
-  std::size_t total = (offsets_.capacity() + slab_runs_.capacity()) * sizeof(std::uint32_t) +
+  std::size_t total = (offsets_.capacity() + slab_runs_.capacity() + block_start_.capacity()) * sizeof(std::uint32_t) +
                       owner_step_.capacity() + runs_.capacity() * sizeof(EntryRun) + shifted_.capacity() +
                       partners_.capacity() * sizeof(PartnerCode) + contact_.capacity() * sizeof(std::uint32_t) +
                       (slips_[0].capacity() + slips_[1].capacity()) * sizeof(Vec3) +

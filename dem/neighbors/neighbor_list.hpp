@@ -214,7 +214,11 @@ class NeighborList {
     std::uint32_t partner;
     Vec3 slip;
   };
-  void remember_interacting();
+  /// Copies the pairs that interacted at the last commit, with their history, to carried_.
+  void remember_interacting(int threads);
+  /// The runs of slab `slab` (see runs()); writes them and the entries' owner steps when `out`
+  /// is not null; returns how many.
+  std::uint32_t lay_out_runs(std::uint32_t slab, EntryRun* out) noexcept;
   /// Sizes partners_ (contents to be written) and clears contact_ for `total` entries.
   void reserve_entries(std::size_t total);
   /// What follows the entries of every owner: shift flags, slab slot bases, history arrays, and
@@ -223,7 +227,7 @@ class NeighborList {
   void carry_history(std::span<const std::uint32_t> new_of_old, int threads);
   /// Gives every entry whose contact_ holds an index into carried_ a slot, slab by slab in
   /// list order, and copies its history there (carry_history has already oriented it).
-  void lay_out_carried();
+  void lay_out_carried(int threads);
 
   std::vector<std::uint32_t> offsets_;
   std::vector<PartnerCode> partners_;
@@ -231,6 +235,7 @@ class NeighborList {
   std::vector<std::uint8_t> owner_step_;  // each entry's owner less its run's first
   std::vector<EntryRun> runs_;           // per slab (slab_runs_ indexes them)
   std::vector<std::uint32_t> slab_runs_;
+  std::vector<std::uint32_t> block_start_;  // scratch of remember_interacting
   std::vector<std::uint32_t> contact_;
   std::array<std::vector<Vec3>, 2> slips_;
   std::array<std::vector<ExtendedHistory>, 2> extended_;
