@@ -307,7 +307,7 @@ double ContactForceField::kick_drift_pack(KinematicState& state, const Accelerat
   const double close = owed_.kick;
   // With the weights owed as well, the committed forces lack m g, added here as the field pass
   // would have added it (f + m g, then divided by m).
-  const bool weigh = derive && owed_.weights;
+  const bool add_weights = derive && owed_.weights;
   const double g0 = setup_.fields.gravity[0];
   const double g1 = setup_.fields.gravity[1];
   const double g2 = setup_.fields.gravity[2];
@@ -364,7 +364,7 @@ double ContactForceField::kick_drift_pack(KinematicState& state, const Accelerat
       double f0 = committed_f[c];
       double f1 = committed_f[c + 1];
       double f2 = committed_f[c + 2];
-      if (weigh) {
+      if (add_weights) {
         f0 += m * g0;
         f1 += m * g1;
         f2 += m * g2;

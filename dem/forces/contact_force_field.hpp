@@ -76,7 +76,9 @@ class ContactForceField final : public ForceEvaluator {
   /// to give it (false): an owed kick rides on the next step's opening pass, where a_n is derived
   /// again from the committed forces (bit for bit the stored one), so the step stores no
   /// accelerations and the velocities get one pass fewer. Between steps the velocities then lack
-  /// the kick: only a caller that reads nothing before settle() may defer (Simulation::advance).
+  /// the kick, and, when the field pass would only add weights (weights_may_be_owed), the
+  /// committed forces lack m g: only a caller that reads nothing before settle() may defer
+  /// (Simulation::advance).
   void defer_closing_kick(bool defer) noexcept { defer_close_ = defer; }
   /// Steps so far that left their closing kick owed.
   [[nodiscard]] std::uint64_t deferred_kicks() const noexcept { return deferred_kicks_; }
@@ -108,7 +110,9 @@ class ContactForceField final : public ForceEvaluator {
   [[nodiscard]] const std::vector<ContactObservation>& observations() const noexcept {
     return observations_;
   }
-  /// Total force on each sphere at the last commit [N] (contacts plus fields on mobile spheres).
+  /// Total force on each sphere at the last commit [N] (contacts plus fields on mobile spheres;
+  /// between steps that owe their closing kick, the contacts alone when the weights are owed too —
+  /// see defer_closing_kick).
   [[nodiscard]] const Vec3Array& forces() const noexcept { return committed_force_; }
   /// Total torque on each sphere at the last commit [N·m].
   [[nodiscard]] const Vec3Array& torques() const noexcept { return committed_torque_; }

@@ -26,6 +26,9 @@ void CellGrid::assign(std::span<const PackedSphere> spheres, std::span<const std
   std::size_t total = 1;
   for (int k = 0; k < 3; ++k) {
     dims_[k] = static_cast<int>(std::max(1.0, std::floor(extent[k] / edge)));
+    // extent / floor(extent / edge) may round a hair below min_edge: one cell fewer, so that no
+    // search from a cell needs more than its neighbours (the stencil's reach is min_edge).
+    while (dims_[k] > 1 && extent[k] / dims_[k] < min_edge) --dims_[k];
     edge_[k] = extent[k] > 0.0 ? extent[k] / dims_[k] : edge;
     total *= static_cast<std::size_t>(dims_[k]);
   }

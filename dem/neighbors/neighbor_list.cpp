@@ -659,7 +659,11 @@ std::size_t NeighborList::bytes() const noexcept {
   for (const auto& g : grids_) total += g.bytes();
   for (const auto& m : class_members_) total += m.capacity() * sizeof(std::uint32_t);
   for (const auto& c : chunk_partners_) total += c.capacity() * sizeof(std::uint32_t);
-  for (const auto& s : stencils_) total += s.partners.capacity() * sizeof(std::uint32_t);
+  for (const auto& s : stencils_) {
+    total += s.partners.capacity() * sizeof(std::uint32_t);
+    for (const Candidates& c : s.near) total += c.tag.capacity() * sizeof(PartnerCode);
+  }
+  total += units_.capacity() * sizeof(SearchUnit);
   return total;
 }
 

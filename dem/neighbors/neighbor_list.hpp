@@ -260,8 +260,8 @@ class NeighborList {
     std::uint32_t from, to;
   };
   /// The spheres of the cells around one cell of one grid that may pair with an owner of a given
-  /// slab, gathered once for all the owners in that cell (structure of arrays: each owner's
-  /// distance tests then run over one short stream, in one loop).
+  /// slab, gathered once for all the owners in that cell as their indices tagged with their
+  /// cell's shift code: each owner's distance tests then run in one loop over one short stream.
   struct Candidates {
     std::size_t cell = 0;      // the key: cell of the grid, owners' slab (valid when `grid` is set)
     std::uint32_t slab = 0;

@@ -239,6 +239,43 @@ TEST(PeriodicBoundary, APairAcrossTheBoundaryActsLikeAnInteriorPair) {
   EXPECT_GT(across.force_field().forces().col(1).norm() + inside.state().velocity.col(1).norm(), 0.0);
 }
 
+TEST(PeriodicBoundary, ASphereUnderPrescribedMotionCrossingTheBoundaryPushesAsInside) {
+  // A driven sphere (fixed, moved by its prescribed motion) runs into a free one and crosses the
+  // periodic face while they touch: the builds wrap it by where its motion puts it, so the free
+  // sphere feels what it feels in the middle of the box.
+  const auto push_at = [](double x0) {
+    dem::SimulationSetup s = test_support::settling_box(1, 1);
+    s.particles.clear();
+    s.walls.clear();
+    s.fields.gravity.setZero();
+    s.box.lo = Vec3(0, 0, 0);
+    s.box.hi = Vec3(0.1, 0.1, 0.1);
+    s.box.periodic = {true, false, false};
+    const double r = 1e-3;
+    const auto wrap = [](double x) { return x < 0.0 ? x + 0.1 : x; };
+    const Vec3 start(wrap(x0 - 3.0 * r), 0.05, 0.05);
+    s.particles.push_back({r, r, 2500.0, 0, start, Vec3::Zero(), Vec3::Zero(), true});
+    s.particles.push_back({r, r, 2500.0, 0, Vec3(x0 + 0.9 * r, 0.0502, 0.05), Vec3::Zero(), Vec3::Zero(), false});
+    s.motions.push_back({0, start, {{1.0, Vec3(1.0, 0.0, 0.0)}}});
+    return s;
+  };
+  dem::Simulation across(push_at(0.0));
+  dem::Simulation inside(push_at(0.05));
+  double largest = 0.0;
+  for (int n = 0; n < 400; ++n) {
+    across.step();
+    inside.step();
+    const Vec3 f1 = across.force_field().forces().col(1);
+    const Vec3 f2 = inside.force_field().forces().col(1);
+    ASSERT_LT((f1 - f2).norm(), 1e-9 * std::max(1.0, f2.norm())) << "step " << n;
+    largest = std::max(largest, f2.norm());
+  }
+  EXPECT_GT(across.state().position(0, 0), 0.1) << "the driven sphere crossed the face";
+  EXPECT_GT(largest, 1e-2) << "the spheres touched";
+  EXPECT_GT(across.state().velocity(0, 1), 0.5) << "the free sphere was pushed along";
+  EXPECT_GT(across.force_field().list_builds(), 10U);
+}
+
 TEST(PeriodicBoundary, PositionsStayUnwrappedInTheState) {
   dem::SimulationSetup s = test_support::settling_box(1, 1);
   s.particles = {{1e-3, 1e-3, 2500.0, 0, Vec3(0.095, 0.05, 0.05), Vec3(1.0, 0, 0), Vec3::Zero(), false}};
