@@ -165,8 +165,9 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   // Units: runs of cells of each class's own grid holding about kChunk owners each. The owners
   // of a cell are searched one after another, so the candidates around the cell are gathered
   // once for all of them.
+  const std::size_t last_units = units_.size();  // the last build's, kept in hand for this one's
   units_.clear();
-  if (units_.capacity() < last_units_ + last_units_ / 8) units_.reserve(last_units_ + last_units_ / 8);
+  if (units_.capacity() < last_units + last_units / 8) units_.reserve(last_units + last_units / 8);
   for (std::size_t c = 0; c < classes; ++c) {
     if (class_members_[c].empty()) continue;
     const CellGrid& own = grids_[c * classes + c];
@@ -181,7 +182,6 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
     }
   }
   const auto unit_count = static_cast<std::uint32_t>(units_.size());
-  last_units_ = unit_count;
   // Per-unit scratch with an eighth in hand, so that a steady scene's rebuilds reuse it.
   if (chunk_partners_.size() < unit_count) chunk_partners_.resize(unit_count + unit_count / 8);
   if (chunk_candidates_.capacity() < unit_count) {

@@ -285,7 +285,6 @@ class NeighborList {
   // Per-unit scratch of the build (units of cells, independent of the thread count): the
   // partners found, owner after owner in the unit's order, with their shift codes.
   std::vector<SearchUnit> units_;
-  std::size_t last_units_ = 0;  // units of the last build
   std::vector<std::vector<std::uint32_t>> chunk_partners_;
   std::vector<std::uint64_t> chunk_candidates_;
   std::vector<std::uint64_t> chunk_cells_;

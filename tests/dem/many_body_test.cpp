@@ -212,17 +212,26 @@ TEST(WallHistory, IsKeptPerSphereAndWall) {
   EXPECT_GT(first.state().angular_velocity.col(0).norm(), 1.0);  // friction acted
 }
 
+/// An empty 0.1 m box, periodic along x only, without walls or gravity.
+dem::SimulationSetup empty_periodic_x_box() {
+  dem::SimulationSetup s = test_support::settling_box(1, 1);
+  s.particles.clear();
+  s.walls.clear();
+  s.fields.gravity.setZero();
+  s.box.lo = Vec3(0, 0, 0);
+  s.box.hi = Vec3(0.1, 0.1, 0.1);
+  s.box.periodic = {true, false, false};
+  return s;
+}
+
+/// x brought into [0, 0.1) from just below 0.
+double wrap_x(double x) { return x < 0.0 ? x + 0.1 : x; }
+
 TEST(PeriodicBoundary, APairAcrossTheBoundaryActsLikeAnInteriorPair) {
   const auto pair_at = [](double x0) {
-    dem::SimulationSetup s = test_support::settling_box(1, 1);
-    s.particles.clear();
-    s.walls.clear();
-    s.fields.gravity.setZero();
-    s.box.lo = Vec3(0, 0, 0);
-    s.box.hi = Vec3(0.1, 0.1, 0.1);
-    s.box.periodic = {true, false, false};
+    dem::SimulationSetup s = empty_periodic_x_box();
     const double r = 1e-3;
-    const auto wrap = [](double x) { return x < 0.0 ? x + 0.1 : x; };
+    const auto wrap = wrap_x;
     s.particles.push_back({r, r, 2500.0, 0, Vec3(wrap(x0 - 0.9 * r), 0.05, 0.05), Vec3(0.3, 0.1, 0), Vec3(0, 0, 50), false});
     s.particles.push_back({r, r, 2500.0, 0, Vec3(x0 + 0.9 * r, 0.05, 0.05), Vec3(-0.3, 0, 0.2), Vec3(10, 0, 0), false});
     return s;
@@ -244,15 +253,9 @@ TEST(PeriodicBoundary, ASphereUnderPrescribedMotionCrossingTheBoundaryPushesAsIn
   // periodic face while they touch: the builds wrap it by where its motion puts it, so the free
   // sphere feels what it feels in the middle of the box.
   const auto push_at = [](double x0) {
-    dem::SimulationSetup s = test_support::settling_box(1, 1);
-    s.particles.clear();
-    s.walls.clear();
-    s.fields.gravity.setZero();
-    s.box.lo = Vec3(0, 0, 0);
-    s.box.hi = Vec3(0.1, 0.1, 0.1);
-    s.box.periodic = {true, false, false};
+    dem::SimulationSetup s = empty_periodic_x_box();
     const double r = 1e-3;
-    const auto wrap = [](double x) { return x < 0.0 ? x + 0.1 : x; };
+    const auto wrap = wrap_x;
     const Vec3 start(wrap(x0 - 3.0 * r), 0.05, 0.05);
     s.particles.push_back({r, r, 2500.0, 0, start, Vec3::Zero(), Vec3::Zero(), true});
     s.particles.push_back({r, r, 2500.0, 0, Vec3(x0 + 0.9 * r, 0.0502, 0.05), Vec3::Zero(), Vec3::Zero(), false});
