@@ -18,6 +18,13 @@
 namespace app {
 namespace {
 
+/// The source revision of reference code `name`'s driver (part of its cache key).
+const char* driver_revision(std::string_view name) noexcept {
+  if (name == "lammps") return kLammpsDriverRevision;
+  if (name == "liggghts") return kLiggghtsDriverRevision;
+  return kYadeDriverRevision;
+}
+
 /// Why a reference code's result is taken from its committed baseline.
 enum class BaselineUse {
   not_installed,  ///< the code is missing here
@@ -120,7 +127,7 @@ cases::RunResult run_one(const reference::PreparedScene& prepared, const std::st
   std::optional<std::string> key;
   if (reference_code && ctx.cache) {
     if (const auto version = engine->version()) {
-      key = fmt::format("{} | driver {}", *version, name == "lammps" ? kLammpsDriverRevision : kYadeDriverRevision);
+      key = fmt::format("{} | driver {}", *version, driver_revision(name));
     }
   }
   std::string distrusted;  // a cache entry that failed its checks: run again and overwrite it

@@ -17,6 +17,7 @@
 #include "app/case_runner.hpp"
 #include "app/cli.hpp"
 #include "app/options.hpp"
+#include "cases/catalogue.hpp"
 #include "cases/case_loader.hpp"
 #include "compare/metrics.hpp"
 #include "reference/common/engine.hpp"
@@ -88,12 +89,13 @@ nlohmann::json to_json(const FuzzResult& r) {
 /// apart, each after the engine's name ("lammps: LAMMPS driver: …; LAMMPS driver: …").
 std::vector<std::string> split_reasons(const std::string& note) {
   std::string rest = note;
-  for (const std::string_view engine : {"lammps: ", "yade: "}) {
+  for (const std::string_view engine : {"lammps: ", "yade: ", "liggghts: "}) {
     if (rest.starts_with(engine)) rest.erase(0, engine.size());
   }
   // Split only where the next reason begins with a driver's name (a reason may hold "; ").
   const auto starts_reason = [&](std::size_t at) {
-    return rest.compare(at, 7, "LAMMPS ") == 0 || rest.compare(at, 5, "YADE ") == 0;
+    return rest.compare(at, 7, "LAMMPS ") == 0 || rest.compare(at, 5, "YADE ") == 0 ||
+           rest.compare(at, 9, "LIGGGHTS ") == 0;
   };
   std::vector<std::string> parts;
   std::size_t from = 0;
@@ -160,19 +162,19 @@ std::string summary(const std::vector<FuzzResult>& results, const std::string& c
 int command_fuzz_matched(const std::vector<std::string>& args, const Invocation& inv) {
   namespace po = boost::program_options;
   po::options_description opts("options");
-  opts.add_options()("code", po::value<std::string>()->required(), "reference code: lammps or yade")(
+  opts.add_options()("code", po::value<std::string>()->required(), "reference code: lammps, yade or liggghts")(
       "count", po::value<unsigned>()->default_value(20), "number of scenes")(
       "seed", po::value<std::uint64_t>()->default_value(1), "seed of the first scene (scene k has seed + k)")(
       "jobs,j", po::value<unsigned>()->default_value(1), "scenes run at once")(
       "output,o", po::value<std::string>(), "output directory (default out/fuzz-matched-<code>)");
   add_run_options(opts);
   const auto vm = parse_command(
-      args, "usage: demwb fuzz-matched --code lammps|yade [--count N] [--seed S] [-j N] [-o DIR]", opts, {});
+      args, "usage: demwb fuzz-matched --code lammps|yade|liggghts [--count N] [--seed S] [-j N] [-o DIR]", opts, {});
   if (!vm) return kExitOk;
   refuse_matches(*vm, "fuzz-matched");
   const std::string code = (*vm)["code"].as<std::string>();
-  if (code != "lammps" && code != "yade") {
-    throw std::invalid_argument(fmt::format("--code: unknown reference code '{}' (known: lammps, yade)", code));
+  if (!cases::is_reference_code(code)) {
+    throw std::invalid_argument(fmt::format("--code: unknown reference code '{}' (known: lammps, yade, liggghts)", code));
   }
   const unsigned count = (*vm)["count"].as<unsigned>();
   const std::uint64_t seed = (*vm)["seed"].as<std::uint64_t>();

@@ -24,15 +24,16 @@ commands:
   refresh [SUITE|CASE] [--write-baselines]    re-run reference codes into the cache/baselines
   refresh --sweep SWEEP.toml [-j N]           re-run a committed sweep and store its results
   bench chute|box [--threads N] [--ranks N]    the core against LAMMPS: particle-steps/s, memory
-  engines [--lammps PATH] [--yade PATH]       installed engines, their versions and where they are
-  fuzz-matched --code lammps|yade [--count N] [--seed S]  random scenes: the code against its matched core
+  engines [--lammps PATH] [--yade PATH] [--liggghts PATH]  installed engines, their versions and where they are
+  fuzz-matched --code lammps|yade|liggghts [--count N] [--seed S]  random scenes: the code against its matched core
   convert linear-to-jkr|jkr-to-linear ...     appendix E: linear cohesion <-> JKR
 
 options:
   -h, --help      help (also after a command: demwb run --help)
   --version       print the version
 
-reference binaries: --lammps PATH / --yade PATH, else $DEMWB_LAMMPS / $DEMWB_YADE, else lmp / yade in PATH
+reference binaries: --lammps PATH / --yade PATH / --liggghts PATH, else $DEMWB_LAMMPS / $DEMWB_YADE /
+$DEMWB_LIGGGHTS, else lmp / yade / liggghts in PATH
 
 exit codes: 0 all green, 1 a comparison failed or an engine errored or is missing, 2 bad usage or
 case file, 130 / 143 interrupted by SIGINT / SIGTERM (reference runs stopped, partial outputs removed)

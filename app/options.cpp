@@ -70,7 +70,7 @@ void add_run_options(po::options_description& opts) {
       "reproducible",
       "leave wall times out of results.json (they stay in report.md) so that two runs compare byte for byte")(
       "match", po::value<std::vector<std::string>>()->composing(),
-      "also run the core with this reference code's numerics (lammps, yade) and compare the two")(
+      "also run the core with this reference code's numerics (lammps, yade, liggghts) and compare the two")(
       "no-match",
       "leave out the matched runs the case names in compare.matched (and their reference codes, unless "
       "asked for): only the engines of compare.engines or --engine run")(
@@ -126,7 +126,7 @@ std::vector<std::string> forwarded_run_options(const po::variables_map& vm) {
   }
   if (vm.count("no-cache") != 0) args.emplace_back("--no-cache");
   if (vm.count("no-time-step-check") != 0) args.emplace_back("--no-time-step-check");
-  for (const char* option : {"cache", "lammps", "yade"}) {
+  for (const char* option : {"cache", "lammps", "yade", "liggghts"}) {
     if (vm.count(option) != 0) args.insert(args.end(), {std::string("--") + option, vm[option].as<std::string>()});
   }
   return args;
@@ -155,7 +155,9 @@ cases::Tier tier_option(const po::variables_map& vm) {
 void add_program_options(po::options_description& opts) {
   opts.add_options()("lammps", po::value<std::string>(),
                      "LAMMPS binary to drive (default $DEMWB_LAMMPS, else lmp in PATH)")(
-      "yade", po::value<std::string>(), "YADE launcher script to drive (default $DEMWB_YADE, else yade in PATH)");
+      "yade", po::value<std::string>(), "YADE launcher script to drive (default $DEMWB_YADE, else yade in PATH)")(
+      "liggghts", po::value<std::string>(),
+      "LIGGGHTS binary to drive (default $DEMWB_LIGGGHTS, else liggghts in PATH)");
 }
 
 reference::ExternalPrograms external_programs(const po::variables_map& vm, double timeout_s) {
@@ -170,6 +172,7 @@ reference::ExternalPrograms external_programs(const po::variables_map& vm, doubl
   };
   choose("lammps", "DEMWB_LAMMPS", programs.lammps);
   choose("yade", "DEMWB_YADE", programs.yade);
+  choose("liggghts", "DEMWB_LIGGGHTS", programs.liggghts);
   programs.probe_timeout_s = std::min(programs.probe_timeout_s, timeout_s);
   return programs;
 }
@@ -183,7 +186,7 @@ cases::Scene with_matches(cases::Scene scene, const po::variables_map& vm) {
   if (vm.count("match") == 0) return scene;
   for (const auto& code : split_names(vm["match"].as<std::vector<std::string>>())) {
     if (!cases::is_reference_code(code)) {
-      throw std::invalid_argument("--match " + code + ": not a reference code (lammps, yade)");
+      throw std::invalid_argument("--match " + code + ": not a reference code (lammps, yade, liggghts)");
     }
     if (std::find(scene.compare.matched.begin(), scene.compare.matched.end(), code) == scene.compare.matched.end()) {
       scene.compare.matched.push_back(code);

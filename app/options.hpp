@@ -39,11 +39,11 @@ void add_tier_option(boost::program_options::options_description& opts);
 /// The value of --tier, checked: `fast` (the default) or `full`.
 cases::Tier tier_option(const boost::program_options::variables_map& vm);
 
-/// Adds --lammps PATH and --yade PATH (the reference binaries to drive).
+/// Adds --lammps PATH, --yade PATH and --liggghts PATH (the reference binaries to drive).
 void add_program_options(boost::program_options::options_description& opts);
 
-/// The reference binaries: --lammps / --yade, else $DEMWB_LAMMPS / $DEMWB_YADE, else `lmp` and
-/// `yade` in PATH. The version probe may take min(10 s, `timeout_s`).
+/// The reference binaries: --lammps / --yade / --liggghts, else $DEMWB_LAMMPS / $DEMWB_YADE /
+/// $DEMWB_LIGGGHTS, else `lmp`, `yade` and `liggghts` in PATH. The version probe may take min(10 s, `timeout_s`).
 reference::ExternalPrograms external_programs(const boost::program_options::variables_map& vm, double timeout_s);
 
 /// `scene` with the reference codes of --match added to compare.matched (engines_to_run then adds

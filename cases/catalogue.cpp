@@ -88,7 +88,7 @@ constexpr std::array kMetrics{
                "work to separate two mean-size spheres from their force-free contact until cohesion ends (thesis fig. 5.15)", false, false},
 };
 
-constexpr std::array<std::string_view, 4> kEngines{"inhouse", "analytic", "lammps", "yade"};
+constexpr std::array<std::string_view, 5> kEngines{"inhouse", "analytic", "lammps", "yade", "liggghts"};
 
 }  // namespace
 
@@ -122,6 +122,8 @@ std::string_view matched_code(std::string_view engine) noexcept {
   return is_reference_code(code) ? code : std::string_view{};
 }
 
-bool is_reference_code(std::string_view name) noexcept { return name == "lammps" || name == "yade"; }
+bool is_reference_code(std::string_view name) noexcept {
+  return name == "lammps" || name == "yade" || name == "liggghts";
+}
 
 }  // namespace cases

@@ -149,7 +149,7 @@ std::vector<std::string> read_matched(const Table& table, const std::vector<std:
   std::vector<std::string> out;
   const auto value = table.find("matched");
   if (!value) return out;
-  constexpr auto kCodes = std::to_array<std::string_view>({"lammps", "yade"});
+  constexpr auto kCodes = std::to_array<std::string_view>({"lammps", "yade", "liggghts"});
   out = read_keyword_list(*value, kCodes, "reference code");
   for (std::size_t k = 0; k < out.size(); ++k) {
     if (!contains(engines, out[k])) {

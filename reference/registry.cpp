@@ -9,6 +9,8 @@
 #include "reference/inhouse/matched_engine.hpp"
 #include "reference/lammps/lammps_engine.hpp"
 #include "reference/lammps/matched_scene.hpp"
+#include "reference/liggghts/liggghts_engine.hpp"
+#include "reference/liggghts/matched_scene.hpp"
 #include "reference/yade/matched_scene.hpp"
 #include "reference/yade/yade_engine.hpp"
 
@@ -33,11 +35,19 @@ std::unique_ptr<Engine> make_yade(const ExternalPrograms& programs) {
   return std::make_unique<YadeEngine>(YadeEngine::from_launcher(programs.yade));
 }
 
+std::unique_ptr<Engine> make_liggghts(const ExternalPrograms& programs) {
+  LiggghtsOptions options;
+  options.program = programs.liggghts;
+  options.probe_timeout_s = programs.probe_timeout_s;
+  return std::make_unique<LiggghtsEngine>(std::move(options));
+}
+
 constexpr std::array kEngines{
     EngineEntry{"inhouse", &make_inhouse},
     EngineEntry{"analytic", &make_analytic},
     EngineEntry{"lammps", &make_lammps, &lammps::conventions},
     EngineEntry{"yade", &make_yade, &yade::conventions},
+    EngineEntry{"liggghts", &make_liggghts, &liggghts::conventions},
 };
 
 }  // namespace

@@ -16,7 +16,7 @@ namespace reference {
 /// One engine of the build: its name in case files, a factory driving the given programs and,
 /// for a reference code whose numerics the core can adopt, the conventions its driver exports.
 struct EngineEntry {
-  std::string_view name;  ///< "inhouse", "analytic", "lammps", "yade"
+  std::string_view name;  ///< "inhouse", "analytic", "lammps", "yade", "liggghts"
   std::unique_ptr<Engine> (*make)(const ExternalPrograms& programs);
   /// The code's numerics for the matched engine "inhouse@<name>"; null when it has none.
   const CodeConventions& (*conventions)() noexcept = nullptr;

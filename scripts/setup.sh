@@ -25,6 +25,7 @@ packages=(
 references=(
   lammps                           # LAMMPS (GRANULAR), Debian 20220106
   yade                             # YADE 2023.02a (driven as a Python module, no servers)
+  liggghts                         # LIGGGHTS-PUBLIC 3.8.0 (a granular fork of LAMMPS)
 )
 check_only=false
 for arg in "$@"; do

@@ -103,8 +103,8 @@ FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) { retu
 namespace {
 
 FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
-  if (code != "lammps" && code != "yade") {
-    throw std::invalid_argument(fmt::format("unknown reference code '{}' (known: lammps, yade)", code));
+  if (code != "lammps" && code != "yade" && code != "liggghts") {
+    throw std::invalid_argument(fmt::format("unknown reference code '{}' (known: lammps, yade, liggghts)", code));
   }
   std::uint64_t mixed = seed;
   if (k > 0) {
@@ -131,7 +131,8 @@ FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
     const auto rows = dem::sub_models(slot);
     std::vector<std::string_view> expressed;
     for (const dem::SubModelInfo& row : rows) {
-      if (row.keyword == "none" || mapped(code == "lammps" ? row.lammps : row.yade)) expressed.push_back(row.keyword);
+      const std::string_view text = code == "lammps" ? row.lammps : code == "yade" ? row.yade : row.liggghts;
+      if (row.keyword == "none" || mapped(text)) expressed.push_back(row.keyword);
     }
     const bool any = expressed.empty() || unit(rng) >= 0.85;
     model[slot_index++] = any ? rows[pick(rows.size())].keyword : expressed[pick(expressed.size())];
@@ -152,12 +153,13 @@ FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
   // the comparisons and the n/a answers are exercised.
   const bool code_policies = unit(rng) < 0.5;
   const bool lammps = code == "lammps";
+  const bool yade = code == "yade";
   t += fmt::format("[model]\nnormal = \"{}\"\ndamping = \"{}\"\ntangential = \"{}\"\ncohesion = \"{}\"\nrolling = \"{}\"\n"
                    "mindlin_radius = \"{}\"\nadhesive_dashpot = \"{}\"\n{}\n",
                    model[0], model[1], model[2], model[3], model[4],
                    code_policies && lammps ? "contact_radius" : "overlap",
-                   code_policies && !lammps ? "pulloff_cap" : "clamp",
-                   code_policies && !lammps ? "friction_limit = \"total_plus_pulloff\"\n" : "");
+                   code_policies && yade ? "pulloff_cap" : "clamp",
+                   code_policies && yade ? "friction_limit = \"total_plus_pulloff\"\n" : "");
 
   const int materials = unit(rng) < 0.5 ? 1 : 2;
   for (int m = 0; m < materials; ++m) {

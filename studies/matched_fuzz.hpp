@@ -26,7 +26,7 @@ struct FuzzScene {
   int draws = 1;  ///< drafts drawn before this one was kept (random_matched_scene with a filter)
 };
 
-/// The scene of `seed` for reference code `code` ("lammps" or "yade"); the same seed always
+/// The scene of `seed` for reference code `code` ("lammps", "yade" or "liggghts"); the same seed always
 /// gives the same text. Throws std::invalid_argument for another code.
 [[nodiscard]] FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed);
 

@@ -25,6 +25,14 @@ std::string read_file(const std::filesystem::path& path) {
   return buffer.str();
 }
 
+std::string read_file_or_empty(const std::filesystem::path& path) {
+  try {
+    return read_file(path);
+  } catch (const std::exception&) {
+    return "";
+  }
+}
+
 void write_file(const std::filesystem::path& path, std::string_view content) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   // A temporary file next to the target, renamed over it once complete: a reader sees the old

@@ -12,7 +12,7 @@ template <class Model>
 SubModelInfo info() {
   return {Model::kKeyword, Model::kDescription,
           std::vector<std::string_view>(Model::kProperties.begin(), Model::kProperties.end()),
-          Model::kLammps, Model::kYade};
+          Model::kLammps, Model::kYade, Model::kLiggghts};
 }
 
 template <class Variant, std::size_t... I>

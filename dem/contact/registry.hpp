@@ -27,6 +27,7 @@ struct SubModelInfo {
   std::vector<std::string_view> properties;  ///< pair properties it needs
   std::string_view lammps;                   ///< LAMMPS mapping, or why there is none
   std::string_view yade;                     ///< YADE mapping, or why there is none
+  std::string_view liggghts;                 ///< LIGGGHTS mapping, or why there is none
 };
 
 /// Registry rows of a slot.

@@ -21,6 +21,14 @@ std::string Support::explain() const {
 }
 
 
+cases::RunResult error_result(std::string reason, std::string log_tail) {
+  cases::RunResult r;
+  r.status = cases::RunStatus::error;
+  r.reason = std::move(reason);
+  r.log_tail = std::move(log_tail);
+  return r;
+}
+
 cases::RunResult run_engine(const Engine& engine, const cases::Scene& scene, const RunOptions& options) {
   return run_engine(engine, PreparedScene(scene), options);
 }

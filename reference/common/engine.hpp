@@ -69,11 +69,15 @@ class Engine {
 struct ExternalPrograms {
   std::string lammps = "lmp";   ///< LAMMPS binary: a path, or a name searched in PATH
   std::string yade = "yade";    ///< YADE launcher script: a path, or a name searched in PATH
+  std::string liggghts = "liggghts";  ///< LIGGGHTS binary: a path, or a name searched in PATH
   double probe_timeout_s = 10.0;  ///< limit of a version probe that starts a process
 };
 
 // The engines themselves are made by make_engine (reference/registry.hpp), the one place that
 // knows every driver: this header is what every engine and caller shares.
+
+/// A failed run (status error) with its reason and the tail of the code's log.
+cases::RunResult error_result(std::string reason, std::string log_tail);
 
 /// Runs `engine` on the prepared scene with the common bookkeeping: `missing` when not
 /// installed, `n/a` with reasons when unsupported, `error` with the message when run() throws,

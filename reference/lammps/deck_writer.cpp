@@ -10,11 +10,12 @@
 
 #include "cases/time_step.hpp"
 #include "dem/contact/pair_table.hpp"
+#include "reference/common/deck_comment.hpp"
+#include "reference/common/dump_snapshots.hpp"
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
 #include "reference/lammps/prescribed_motion.hpp"
 #include "reference/lammps/simulation_box.hpp"
-#include "reference/lammps/snapshots.hpp"
 #include "reference/lammps/trace_columns.hpp"
 #include "reference/lammps/wall_mapping.hpp"
 
@@ -45,31 +46,17 @@ std::string types_where(const AtomTypes& types, bool fixed) {
   return out;
 }
 
-/// `text` as printable ASCII for a deck comment: every non-ASCII byte (LAMMPS 2021 warns about
-/// UTF-8 input) and every control byte (a newline would end the comment and start a command) is
-/// replaced by '?', and quotes (LAMMPS' `"""` opens a multi-line string) by '\''. Case-file names
-/// are validated at load time; this keeps every string a deck comment shows inert regardless.
-std::string ascii(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u > 0x7e || u < 0x20) c = '?';
-    if (c == '"') c = '\'';
-  }
-  return out;
-}
-
 /// One-line description of an atom type for comments.
 std::string describe(const cases::Scene& scene, const AtomType& t) {
   return fmt::format("material '{}', r = {} m, {}, m = {} kg",
-                     ascii(scene.materials.at(t.material).name), num(t.radius),
+                     deck_comment_text(scene.materials.at(t.material).name), num(t.radius),
                      t.fixed ? "fixed" : "mobile", num(t.mass));
 }
 
 /// Units, atom style, boundaries and communication settings.
 void write_header(std::string& deck, const cases::Scene& scene, const DeckSettings& s) {
   deck += fmt::format("# dem-workbench LAMMPS deck for case '{}' (generated, do not edit)\n",
-                      ascii(scene.name));
+                      deck_comment_text(scene.name));
   deck += fmt::format("# {} steps of {} s; written for LAMMPS 29 Sep 2021 (pair_style granular)\n",
                       s.steps, num(s.timestep));
   line(deck, "units", "si");
@@ -107,7 +94,7 @@ void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& 
                           kMaxAtomTypes);
     }
     for (std::size_t t = 0; t < types.types.size(); ++t) {
-      deck += fmt::format("#   type {}: material '{}', {}\n", t + 1, ascii(scene.materials.at(types.types[t].material).name),
+      deck += fmt::format("#   type {}: material '{}', {}\n", t + 1, deck_comment_text(scene.materials.at(types.types[t].material).name),
                           types.types[t].fixed ? "fixed" : "mobile");
     }
     line(deck, "read_data", s.data_file);
@@ -159,9 +146,9 @@ void write_pairs(std::string& deck, const cases::Scene& scene, const dem::PairTa
           table.law(types.types[a].material, types.types[b].material),
           pair_context(scene, types, a, b));
       if (!coeff.normal_note.empty()) {
-        deck += fmt::format("# types {}-{}: {}\n", a + 1, b + 1, ascii(coeff.normal_note));
+        deck += fmt::format("# types {}-{}: {}\n", a + 1, b + 1, deck_comment_text(coeff.normal_note));
       }
-      deck += fmt::format("# types {}-{}: {}\n", a + 1, b + 1, ascii(coeff.damping_note));
+      deck += fmt::format("# types {}-{}: {}\n", a + 1, b + 1, deck_comment_text(coeff.damping_note));
       line(deck, "pair_coeff",
            fmt::format("{} {} {}", a + 1, b + 1, pair_coeff_arguments(coeff)));
     }
@@ -180,12 +167,12 @@ void write_walls(std::string& deck, const cases::Scene& scene, const dem::PairTa
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     const cases::WallSpec& wall = scene.walls[w];
     if (!wall_in_run(wall)) {
-      deck += fmt::format("# wall {} ('{}') is removed at t <= 0: only the preparation met it\n", w, ascii(wall.name));
+      deck += fmt::format("# wall {} ('{}') is removed at t <= 0: only the preparation met it\n", w, deck_comment_text(wall.name));
       continue;
     }
     if (const auto region = wall_region_arguments(wall)) {
       deck += fmt::format("# wall {} ('{}'): open at both ends, two-sided; R* uses the region's curvature (-2 rho)\n",
-                          w, ascii(wall.name));
+                          w, deck_comment_text(wall.name));
       line(deck, "region", fmt::format("{} {}", wall_region_id(w), *region));
     }
   }
@@ -206,8 +193,8 @@ void write_walls(std::string& deck, const cases::Scene& scene, const dem::PairTa
       context.wall = true;
       const GranularCoeff coeff =
           map_pair_law(table.law(type.material, wall.material), context);
-      deck += fmt::format("# wall {} ('{}') x type {}: {}; {}\n", w, ascii(wall.name), t + 1,
-                          ascii(coeff.normal_note), ascii(coeff.damping_note));
+      deck += fmt::format("# wall {} ('{}') x type {}: {}; {}\n", w, deck_comment_text(wall.name), t + 1,
+                          deck_comment_text(coeff.normal_note), deck_comment_text(coeff.damping_note));
       if (plane) {
         line(deck, "fix",
              fmt::format("{} tr_type_{} wall/gran granular {} {}", wall_fix_id(w, t + 1), t + 1,
@@ -269,27 +256,15 @@ void write_outputs(std::string& deck, const cases::Scene& scene, const AtomTypes
   deck += "# trace columns (each formula in full: a v_name reference would round to 15 digits)\n";
   command_line(deck, fix_print_command(plan, scene.output.trace_every, s.trace_file));
 
-  std::vector<std::uint64_t> steps =
-      cases::snapshot_steps(scene.output.snapshot_times, s.timestep, s.steps);
-  steps.erase(std::unique(steps.begin(), steps.end()), steps.end());
-  if (steps.empty()) return;
-  const bool at_start = steps.front() == 0;
-  if (at_start) steps.erase(steps.begin());
-  // Next snapshot step after the current one; past the last, a step the run never reaches.
-  std::string next;
-  std::uint64_t previous = 0;
-  for (const std::uint64_t n : steps) {
-    next += fmt::format("{}*(step>={})*(step<{})+", n, previous, n);
-    previous = n;
-  }
-  next += fmt::format("{}*(step>={})", s.steps + 1, previous);
-  line(deck, "variable", fmt::format("tr_snapshot_step equal \"{}\"", next));
+  const SnapshotSchedule schedule = snapshot_schedule(scene.output.snapshot_times, s.timestep, s.steps);
+  if (schedule.next_step.empty()) return;
+  line(deck, "variable", fmt::format("tr_snapshot_step equal \"{}\"", schedule.next_step));
   line(deck, "dump", fmt::format("tr_snapshots all custom 1 {} id x y z vx vy vz omegax omegay "
                                  "omegaz",
                                  s.snapshot_file));
   line(deck, "dump_modify",
        fmt::format("tr_snapshots sort id format float %.17g every v_tr_snapshot_step{}",
-                   at_start ? " first yes" : ""));
+                   schedule.first ? " first yes" : ""));
 }
 
 }  // namespace
@@ -346,7 +321,7 @@ std::string write_atom_data(const cases::Scene& scene, const DeckSettings& setti
   const AtomTypes types = classify_particles(scene);
   const Box box = simulation_box(scene, static_cast<double>(settings.steps) * settings.timestep);
   std::string out = fmt::format("dem-workbench atoms of case '{}' (generated, do not edit)\n\n{} atoms\n{} atom types\n\n",
-                                ascii(scene.name), scene.particles.size(), types.types.size());
+                                deck_comment_text(scene.name), scene.particles.size(), types.types.size());
   constexpr std::array<std::string_view, 3> kAxes{"x", "y", "z"};
   for (std::size_t k = 0; k < 3; ++k) {
     out += fmt::format("{} {} {}lo {}hi\n", num(box.low[k]), num(box.high[k]), kAxes[k], kAxes[k]);

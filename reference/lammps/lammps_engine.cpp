@@ -13,12 +13,12 @@
 #include "reference/common/core_setup.hpp"
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/deck_writer.hpp"
-#include "reference/lammps/dump_parser.hpp"
+#include "reference/common/dump_text.hpp"
 #include "reference/lammps/lammps_runner.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
-#include "reference/lammps/print_parser.hpp"
+#include "reference/common/fix_print_table.hpp"
 #include "reference/lammps/run_conventions.hpp"
-#include "reference/lammps/snapshots.hpp"
+#include "reference/common/dump_snapshots.hpp"
 #include "reference/lammps/trace_columns.hpp"
 #include "reference/lammps/wall_mapping.hpp"
 #include "support/interrupts.hpp"
@@ -28,19 +28,6 @@
 #include "cases/time_step.hpp"
 
 namespace reference {
-namespace {
-
-/// A failed run with its reason and log tail.
-cases::RunResult failure(std::string reason, std::string log_tail) {
-  cases::RunResult r;
-  r.status = cases::RunStatus::error;
-  r.reason = std::move(reason);
-  r.log_tail = std::move(log_tail);
-  return r;
-}
-
-
-}  // namespace
 
 const lammps::LammpsProbe& LammpsEngine::probe() const {
   std::call_once(probed_, [this] { probe_ = lammps::probe_lammps(options_.program, options_.probe_timeout_s); });
@@ -171,10 +158,10 @@ cases::RunResult LammpsEngine::run(const PreparedScene& prepared, const RunOptio
   // The version probe counts against the run's time limit; a binary that hung on an empty input
   // is not given the deck.
   const lammps::LammpsProbe& checked = probe();
-  if (checked.timed_out) return failure(*checked.version + ": not run", "");
+  if (checked.timed_out) return error_result(*checked.version + ": not run", "");
   const double time_left = options.timeout_s - checked.seconds;
   if (time_left <= 0.0) {
-    return failure(fmt::format("LAMMPS timed out: its version probe used the whole time limit ({:.3g} s)", options.timeout_s),
+    return error_result(fmt::format("LAMMPS timed out: its version probe used the whole time limit ({:.3g} s)", options.timeout_s),
                    "");
   }
   const CoreSetup setup = core_setup(prepared);
@@ -191,18 +178,18 @@ cases::RunResult LammpsEngine::run(const PreparedScene& prepared, const RunOptio
   }
   const lammps::LammpsRunOutcome outcome =
       lammps::run_lammps(options_.program, dir, time_left);
-  if (!outcome.ok) return failure(outcome.reason, outcome.log_tail);
+  if (!outcome.ok) return error_result(outcome.reason, outcome.log_tail);
 
   cases::RunResult result;
   const std::filesystem::path trace_path = dir / settings.trace_file;
   try {
     if (!std::filesystem::exists(trace_path)) {
-      return failure(fmt::format("LAMMPS exited normally but wrote no trace file {}",
+      return error_result(fmt::format("LAMMPS exited normally but wrote no trace file {}",
                                  trace_path.string()),
                      outcome.log_tail);
     }
     const cases::Trace printed =
-        lammps::parse_fix_print(support::read_file(trace_path), trace_path.string());
+        parse_fix_print(support::read_file(trace_path), trace_path.string());
     lammps::AssembledTrace assembled = lammps::assemble_trace(scene, printed, steps);
     result.trace = std::move(assembled.trace);
     result.warnings = setup.warnings;
@@ -213,19 +200,19 @@ cases::RunResult LammpsEngine::run(const PreparedScene& prepared, const RunOptio
     if (!snapshot_steps.empty()) {
       const std::filesystem::path dump_path = dir / settings.snapshot_file;
       if (!std::filesystem::exists(dump_path)) {
-        return failure(fmt::format("LAMMPS exited normally but wrote no snapshot file {}",
+        return error_result(fmt::format("LAMMPS exited normally but wrote no snapshot file {}",
                                    dump_path.string()),
                        outcome.log_tail);
       }
-      result.snapshots = lammps::snapshots_from_dump(
-          lammps::parse_dump(support::read_file(dump_path), dump_path.string()), snapshot_steps,
-          dt, scene.particles.size());
+      result.snapshots = snapshots_from_dump(
+          parse_dump(support::read_file(dump_path), dump_path.string()), snapshot_steps,
+          dt, scene.particles.size(), "LAMMPS");
     }
   } catch (const std::exception& e) {
-    return failure(e.what(), outcome.log_tail);
+    return error_result(e.what(), outcome.log_tail);
   }
   if (const std::string bad = cases::first_non_finite(result.trace); !bad.empty()) {
-    return failure("LAMMPS produced a non-finite value: " + bad, outcome.log_tail);
+    return error_result("LAMMPS produced a non-finite value: " + bad, outcome.log_tail);
   }
   for (const auto& w : outcome.warnings) result.warnings.push_back("LAMMPS log: " + w);
   if (scene.output.trace_energy) {

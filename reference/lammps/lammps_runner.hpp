@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "reference/common/banner_probe.hpp"
+
 namespace reference::lammps {
 
 /// File names inside a run directory.
@@ -19,11 +21,7 @@ inline constexpr const char* kStderrFile = "stderr.txt";
 inline constexpr double kProbeTimeout = 10.0;
 
 /// What asking a LAMMPS binary for its version found.
-struct LammpsProbe {
-  std::optional<std::string> version;  ///< empty when the program is not found
-  bool timed_out = false;              ///< the binary did not finish the empty run in time
-  double seconds = 0.0;                ///< how long the probe took
-};
+using LammpsProbe = BannerProbe;
 
 /// Runs `program` on an empty input (`-in /dev/null -log … -screen none`, killed after
 /// `timeout_s`) and reads the version from its log banner ("LAMMPS 29 Sep 2021 - Update 2").

@@ -25,25 +25,4 @@ std::optional<std::string> banner_version(std::string_view log_text) {
   return std::nullopt;
 }
 
-std::string first_error(std::string_view log_text) {
-  const std::vector<std::string_view> lines = split_lines(log_text);
-  for (std::size_t k = 0; k < lines.size(); ++k) {
-    if (!starts_with(lines[k], "ERROR")) continue;
-    std::string out(lines[k]);
-    if (k + 1 < lines.size() && starts_with(lines[k + 1], "Last command:")) {
-      out += " (" + std::string(lines[k + 1]) + ")";
-    }
-    return out;
-  }
-  return "";
-}
-
-std::vector<std::string> warning_lines(std::string_view log_text) {
-  std::vector<std::string> out;
-  for (const std::string_view line : split_lines(log_text)) {
-    if (starts_with(line, "WARNING")) out.emplace_back(line);
-  }
-  return out;
-}
-
 }  // namespace reference::lammps

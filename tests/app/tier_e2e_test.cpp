@@ -34,9 +34,9 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 std::string full_tier_collision() {
   std::string text = support::read_file(canonical("single_collision"));
   text = replaced(text, "[case]\n", "[case]\ntier = \"full\"\n");
-  text = replaced(text, "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\"]",
+  text = replaced(text, "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\", \"liggghts\"]",
                   "engines = [\"inhouse\", \"analytic\", \"lammps\"]");
-  return replaced(text, "matched = [\"lammps\", \"yade\"]", "matched = []");
+  return replaced(text, "matched = [\"lammps\", \"yade\", \"liggghts\"]", "matched = []");
 }
 
 /// Runs `demwb gate` on the suite `suite` with baselines in `baselines` and the given tier.
@@ -124,8 +124,8 @@ TEST(Tiers, StoredEnsemblesAreReadInTheFastTierRunAfreshInTheFullTierAndFailTheG
   // is laid out: the JKR agglomerate of cases/ensembles shrunk to 8 spheres, core against LAMMPS.
   const fs::path root = scratch("tier_ensembles");
   std::string text = support::read_file(canonical("single_collision"));
-  text = replaced(text, "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\"]", "engines = [\"inhouse\", \"analytic\"]");
-  text = replaced(text, "matched = [\"lammps\", \"yade\"]", "matched = []");
+  text = replaced(text, "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\", \"liggghts\"]", "engines = [\"inhouse\", \"analytic\"]");
+  text = replaced(text, "matched = [\"lammps\", \"yade\", \"liggghts\"]", "matched = []");
   support::write_file(root / "suite" / "single_collision.toml", text);
   const std::string agglomerate = support::read_file(std::string(DEMWB_SOURCE_DIR) + "/cases/ensembles/agglomerate_jkr_lammps.toml");
   support::write_file(root / "ensembles" / "small_jkr.toml", replaced(agglomerate, "count = 125", "count = 8"));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Reference binaries chosen with --lammps/--yade (or DEMWB_LAMMPS/DEMWB_YADE) that fail, hang or
+// Reference binaries chosen with --lammps/--yade/--liggghts (or DEMWB_LAMMPS/…) that fail, hang or
 // write damaged output: every fault is an `error` (absent: `missing`) that fails the run, and a
 // hung binary is reported within --timeout + 10 s.
 #include <signal.h>
@@ -135,6 +135,76 @@ TEST(FakeLammps, ABinaryThatHangsOnTheVersionProbeIsReportedWithinTheTimeout) {
   expect_all_ended(pids);
 }
 
+bool have_liggghts() { return support::find_program("liggghts").has_value(); }
+
+TEST(FakeLiggghts, EveryFaultIsAnErrorThatFailsTheRun) {
+  if (!have_liggghts()) GTEST_SKIP() << "liggghts is not installed (scripts/setup.sh installs it)";
+  const fs::path real = *support::find_program("liggghts");
+  const std::vector<std::pair<Fault, std::string>> faults = {
+      {Fault::exit_1, "deliberate failure of a fake liggghts"},
+      {Fault::garbage, "thermo"},  // the log holds no thermo table any more
+      {Fault::nan, "non-finite"},
+      {Fault::truncated, "thermo"},  // the table is gone or short
+  };
+  for (const auto& [fault, says] : faults) {
+    const auto label = "liggghts-" + std::to_string(static_cast<int>(fault));
+    const fs::path fake = fake_liggghts(scratch("fake-" + label), fault, real, scratch("fake-pid-" + label));
+    const Reported r = run_single("liggghts", {"--liggghts", fake.string()}, "fake-run-" + label);
+    EXPECT_EQ(r.exit_code, 1) << label << r.output;
+    EXPECT_EQ(r.status, "error") << label << ": " << r.reason;
+    EXPECT_NE(r.reason.find(says), std::string::npos) << label << ": " << r.reason;
+  }
+}
+
+TEST(FakeLiggghts, ACrashBySignalIsAnErrorNamingTheSignal) {
+  if (!have_liggghts()) GTEST_SKIP() << "liggghts is not installed (scripts/setup.sh installs it)";
+  const fs::path dir = scratch("crash-liggghts");
+  fs::create_directories(dir);
+  const fs::path fake = dir / "liggghts";
+  write_script(fake, fmt::format("for a in \"$@\"; do [ \"$a\" = /dev/null ] && exec {} \"$@\"; done\nkill -SEGV $$\n",
+                                 support::find_program("liggghts")->string()));
+  const Reported r = run_single("liggghts", {"--liggghts", fake.string()}, "crash-liggghts-run");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.status, "error");
+  EXPECT_NE(r.reason.find("signal 11"), std::string::npos) << r.reason;
+}
+
+TEST(FakeLiggghts, AnAbsentBinaryIsMissingAndFailsTheRun) {
+  const std::string none = scratch("no-liggghts-baselines").string();
+  fs::create_directories(none);
+  const Reported flag =
+      run_single("liggghts", {"--liggghts", "/nonexistent/liggghts", "--baselines", none}, "absent-liggghts");
+  EXPECT_EQ(flag.exit_code, 1) << flag.output;
+  EXPECT_EQ(flag.status, "missing");
+  EXPECT_NE(flag.reason.find("/nonexistent/liggghts"), std::string::npos) << flag.reason;
+  const Reported env = run_single("liggghts", {"--baselines", none}, "absent-liggghts-env",
+                                  {{"DEMWB_LIGGGHTS", "/nonexistent/liggghts-from-env"}});
+  EXPECT_EQ(env.status, "missing");
+  EXPECT_NE(env.reason.find("liggghts-from-env"), std::string::npos) << env.reason;
+}
+
+TEST(FakeLiggghts, AHungRunIsReportedWithinTheTimeoutAndKilled) {
+  if (!have_liggghts()) GTEST_SKIP() << "liggghts is not installed (scripts/setup.sh installs it)";
+  const fs::path pids = scratch("hang-liggghts-pid");
+  const fs::path fake = fake_liggghts(scratch("hang-liggghts"), Fault::hang, *support::find_program("liggghts"), pids);
+  const Reported r = run_single("liggghts", {"--liggghts", fake.string(), "--timeout", "3"}, "hang-liggghts-run");
+  EXPECT_EQ(r.status, "error");
+  EXPECT_NE(r.reason.find("timed out"), std::string::npos) << r.reason;
+  EXPECT_LT(r.seconds, 3 + 10);
+  expect_all_ended(pids);
+}
+
+TEST(FakeLiggghts, ABinaryThatHangsOnTheVersionProbeIsReportedWithinTheTimeout) {
+  const fs::path pids = scratch("hang-probe-liggghts-pid");
+  const fs::path fake = fake_liggghts(scratch("hang-probe-liggghts"), Fault::hang_probe, "/bin/false", pids);
+  const Reported r = run_single("liggghts", {"--liggghts", fake.string(), "--timeout", "4"}, "hang-probe-liggghts-run");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_EQ(r.status, "error");
+  EXPECT_NE(r.reason.find("did not finish an empty run within 4 s"), std::string::npos) << r.reason;
+  EXPECT_LT(r.seconds, 4 + 10);
+  expect_all_ended(pids);
+}
+
 /// The installed YADE's interpreter and modules, if any.
 std::optional<reference::yade::YadeInstallation> installed_yade() {
   return reference::yade::find_yade_installation("yade").install;
@@ -176,8 +246,9 @@ TEST(FakeYade, AHungRunIsReportedWithinTheTimeoutAndKilled) {
 }
 
 TEST(Engines, ShowsWhereEachBinaryWasFound) {
-  const auto r = demwb({"engines", "--lammps", "/nonexistent/lmp", "--yade", "/bin/sh"});
+  const auto r = demwb({"engines", "--lammps", "/nonexistent/lmp", "--yade", "/bin/sh", "--liggghts", "/nonexistent/lig"});
   EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("| liggghts | missing | — | '/nonexistent/lig' not found"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| lammps | missing | — | '/nonexistent/lmp' not found"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("/bin/sh is not a YADE launcher"), std::string::npos) << r.out;
   if (installed_yade()) {

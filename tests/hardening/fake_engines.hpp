@@ -110,4 +110,35 @@ inline fs::path fake_yade(const fs::path& dir, Fault fault, const fs::path& real
   return launcher;
 }
 
+/// A fake `liggghts` with `fault`, in `dir`; the real binary is `real_liggghts`. Its trace is the
+/// thermo table of its log, so the damage is done to log.liggghts: garbage replaces the whole log,
+/// nan the time of the step-0 row, truncated cuts the log in half.
+inline fs::path fake_liggghts(const fs::path& dir, Fault fault, const fs::path& real_liggghts, const fs::path& pid_file) {
+  fs::create_directories(dir);
+  const fs::path script = dir / "liggghts";
+  std::string body = R"(args=("$@"); log=log.liggghts; input=
+while [ $# -gt 0 ]; do case "$1" in -log) log="$2"; shift;; -in) input="$2"; shift;; esac; shift; done
+)";
+  body += fmt::format("if [ \"$input\" = /dev/null ]; then {}; fi\n",
+                      fault == Fault::hang_probe ? fmt::format("echo $$ > {}; exec sleep 600", pid_file.string())
+                                                 : "exec " + real_liggghts.string() + " \"${args[@]}\"");
+  switch (fault) {
+    case Fault::exit_1:
+      body += "echo 'ERROR: deliberate failure of a fake liggghts' > \"$log\"; exit 1\n";
+      break;
+    case Fault::hang:
+      body += fmt::format("echo $$ > {}; exec sleep 600\n", pid_file.string());
+      break;
+    case Fault::nan:
+      body += real_liggghts.string() + " \"${args[@]}\" || exit $?\n" +
+              "awk '{ if (!done && $1 == \"0\" && NF > 3) { $2 = \"nan\"; done = 1 } print }' \"$log\" > \"$log.new\" && "
+              "mv \"$log.new\" \"$log\"\n";
+      break;
+    default:
+      body += real_liggghts.string() + " \"${args[@]}\" || exit $?\n" + damage(fault, "\"$log\"");
+  }
+  write_script(script, body);
+  return script;
+}
+
 }  // namespace demwb_hardening

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A corpus of injection payloads (newline + LAMMPS `shell`, `"""`, $(…), ${…}, &, #, backticks,
 // Python quotes, markdown/HTML) put into every string of a case with a wall, run through the real
-// LAMMPS and YADE. Each one is either refused at load time naming its key, or runs with the same
+// LAMMPS, YADE and LIGGGHTS. Each one is either refused at load time naming its key, or runs with the same
 // trace as the untouched case: no command runs, no deck or script changes meaning, and report.md
 // shows the text inert.
 #include <functional>
@@ -84,8 +84,10 @@ std::vector<Site> sites() {
       {"walls.name", "name = \"floor\"", [](const std::string& q) { return "name = " + q; }},
       {"walls.material", "point = [0.0, 0.0, 0.0]", [](const std::string& q) { return "point = [0.0, 0.0, 0.0]\nmaterial = " + q; }},
       {"integration.scheme", "scheme = \"velocity_verlet\"", [](const std::string& q) { return "scheme = " + q; }},
-      {"compare.engines", "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\"]",
-       [](const std::string& q) { return "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\", " + q + "]"; }},
+      {"compare.engines", "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\", \"liggghts\"]",
+       [](const std::string& q) {
+         return "engines = [\"inhouse\", \"analytic\", \"lammps\", \"yade\", \"liggghts\", " + q + "]";
+       }},
       {"compare.reference", "reference = \"analytic\"", [](const std::string& q) { return "reference = " + q; }},
       {"compare.metrics", "metrics = [\"contact_duration\"", [](const std::string& q) { return "metrics = [" + q + ", \"contact_duration\""; }},
   };
@@ -110,8 +112,8 @@ std::string files_named(const fs::path& dir, const std::string& name) {
 }
 
 TEST(PayloadCorpus, NoPayloadInAnyStringRunsACommandOrChangesARun) {
-  if (!support::find_program("lmp") || !support::find_program("yade")) {
-    GTEST_SKIP() << "needs LAMMPS and YADE (scripts/setup.sh installs them)";
+  if (!support::find_program("lmp") || !support::find_program("yade") || !support::find_program("liggghts")) {
+    GTEST_SKIP() << "needs LAMMPS, YADE and LIGGGHTS (scripts/setup.sh installs them)";
   }
   const fs::path root = scratch("payloads");
   fs::create_directories(root);
@@ -120,11 +122,12 @@ TEST(PayloadCorpus, NoPayloadInAnyStringRunsACommandOrChangesARun) {
   // The untouched case: the traces every accepted payload must reproduce. The time-step check
   // (reruns at Δt/2, …) would only multiply the runs; the strings are what is under test.
   support::write_file(root / "base.toml", base);
-  const auto neutral = demwb({"run", (root / "base.toml").string(), "--engine", "lammps,yade", "--no-cache", "--no-time-step-check", "-o",
+  const auto neutral = demwb({"run", (root / "base.toml").string(), "--engine", "lammps,yade,liggghts", "--no-cache", "--no-time-step-check", "-o",
                               (root / "base").string()});
   ASSERT_NE(neutral.exit_code, 2) << neutral.err;
   const std::string lammps_trace = support::read_file(root / "base" / "trace_lammps.csv");
   const std::string yade_trace = support::read_file(root / "base" / "trace_yade.csv");
+  const std::string liggghts_trace = support::read_file(root / "base" / "trace_liggghts.csv");
 
   int refused = 0;
   int ran = 0;
@@ -145,7 +148,8 @@ TEST(PayloadCorpus, NoPayloadInAnyStringRunsACommandOrChangesARun) {
         text = text.substr(0, thesis) + "\nthesis = " + toml_string(payload) + text.substr(text.find('\n', thesis + 1));
       }
       support::write_file(file, text);
-      const auto r = demwb({"run", file.string(), "--engine", "lammps,yade", "--no-cache", "--no-time-step-check", "-o", out.string()});
+      const auto r = demwb({"run", file.string(), "--engine", "lammps,yade,liggghts", "--no-cache", "--no-time-step-check", "-o",
+                            out.string()});
       EXPECT_FALSE(fs::exists(sentinel)) << label << ": a payload ran a command";
       fs::remove(sentinel);
       if (r.exit_code == 2) {  // refused at load time: the message names the file and the key
@@ -160,6 +164,7 @@ TEST(PayloadCorpus, NoPayloadInAnyStringRunsACommandOrChangesARun) {
       // Accepted: the runs are exactly the untouched case's.
       EXPECT_EQ(support::read_file(out / "trace_lammps.csv"), lammps_trace) << label;
       EXPECT_EQ(support::read_file(out / "trace_yade.csv"), yade_trace) << label;
+      EXPECT_EQ(support::read_file(out / "trace_liggghts.csv"), liggghts_trace) << label;
       const std::string deck = files_named(out, "deck.in");
       EXPECT_FALSE(deck.empty()) << label;
       EXPECT_FALSE(std::regex_search(deck, std::regex("(^|\n)\\s*shell"))) << label << "\n" << deck;

@@ -28,10 +28,11 @@ bool is_sha256_hex(const std::string& text) {
 }
 
 TEST(InputFingerprint, IsTheSameForTheSameSceneAndChangesWithAnythingTheDeckCarries) {
-  for (const char* code : {"lammps", "yade"}) {
+  for (const char* code : {"lammps", "yade", "liggghts"}) {
     SCOPED_TRACE(code);
     // Binaries that do not exist: the fingerprint needs the driver, not the code.
-    const auto engine = reference::make_engine(code, {"/nonexistent/lmp", "/nonexistent/yade", 1.0});
+    const auto engine =
+        reference::make_engine(code, {"/nonexistent/lmp", "/nonexistent/yade", "/nonexistent/liggghts", 1.0});
     const cases::Scene scene = canonical("oblique_wall_impact");
     const std::string once = engine->input_fingerprint(scene);
     EXPECT_TRUE(is_sha256_hex(once)) << once;
@@ -64,6 +65,7 @@ TEST(InputFingerprint, IsEmptyForScenesTheCodeCannotExpressAndForBuiltInEngines)
   tilted.walls.push_back(cases::WallSpec{"ramp", {0, 0, -1}, {0, 0.6, 0.8}, {0, 0, 0}, 0});
   EXPECT_EQ(reference::LammpsEngine{}.input_fingerprint(tilted), "");
   EXPECT_EQ(reference::make_engine("yade")->input_fingerprint(canonical("jkr_pulloff")), "");  // n/a on YADE
+  EXPECT_EQ(reference::make_engine("liggghts")->input_fingerprint(canonical("jkr_pulloff")), "");  // n/a on LIGGGHTS
   EXPECT_EQ(reference::make_engine("inhouse")->input_fingerprint(canonical("single_collision")), "");
   EXPECT_EQ(reference::make_engine("analytic")->input_fingerprint(canonical("single_collision")), "");
 }

@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include "lammps_scenes.hpp"
+#include "reference/common/log_lines.hpp"
 #include "reference/lammps/log_scan.hpp"
 #include "support/text_file.hpp"
 
 namespace lammps_log_scan_test {
 
 using namespace reference::lammps;
+using reference::first_error;
+using reference::warning_lines;
 
 std::string captured(const std::string& name) {
   return support::read_file(demwb_lammps_unit::data_file(name));

@@ -6,14 +6,14 @@
 #include <gtest/gtest.h>
 
 #include "lammps_scenes.hpp"
-#include "reference/lammps/dump_parser.hpp"
-#include "reference/lammps/snapshots.hpp"
+#include "reference/common/dump_text.hpp"
+#include "reference/common/dump_snapshots.hpp"
 #include "support/text_file.hpp"
 
 namespace lammps_snapshot_test {
 
-using reference::lammps::parse_dump;
-using reference::lammps::snapshots_from_dump;
+using reference::parse_dump;
+using reference::snapshots_from_dump;
 
 TEST(LammpsSnapshots, ReadsTheCapturedDump) {
   const auto frames = parse_dump(
@@ -24,7 +24,7 @@ TEST(LammpsSnapshots, ReadsTheCapturedDump) {
   EXPECT_EQ(frames[1].columns.front(), "id");
   ASSERT_EQ(frames[2].rows.size(), 2u);
 
-  const auto snaps = snapshots_from_dump(frames, {0, 74, 160}, 5e-6, 2);
+  const auto snaps = snapshots_from_dump(frames, {0, 74, 160}, 5e-6, 2, "LAMMPS");
   ASSERT_EQ(snaps.size(), 3u);
   EXPECT_EQ(snaps[0].time, 0.0);
   EXPECT_EQ(snaps[1].time, 74 * 5e-6);
@@ -37,11 +37,11 @@ TEST(LammpsSnapshots, RejectsMissingStepsAtomsAndColumns) {
   const auto frames = parse_dump(
       support::read_file(demwb_lammps_unit::data_file("single_collision.snapshots.dump")),
       "snapshots.dump");
-  EXPECT_THROW((void)snapshots_from_dump(frames, {75}, 5e-6, 2), std::runtime_error);
-  EXPECT_THROW((void)snapshots_from_dump(frames, {0}, 5e-6, 3), std::runtime_error);
+  EXPECT_THROW((void)snapshots_from_dump(frames, {75}, 5e-6, 2, "LAMMPS"), std::runtime_error);
+  EXPECT_THROW((void)snapshots_from_dump(frames, {0}, 5e-6, 3, "LAMMPS"), std::runtime_error);
   auto without_omega = frames;
   without_omega[0].columns.back() = "tqz";
-  EXPECT_THROW((void)snapshots_from_dump(without_omega, {0}, 5e-6, 2), std::runtime_error);
+  EXPECT_THROW((void)snapshots_from_dump(without_omega, {0}, 5e-6, 2, "LAMMPS"), std::runtime_error);
 }
 
 TEST(LammpsSnapshots, NamesTheLineOfAMalformedDump) {

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "lammps_scenes.hpp"
-#include "reference/lammps/print_parser.hpp"
+#include "reference/common/fix_print_table.hpp"
 #include "reference/lammps/trace_columns.hpp"
 #include "support/text_file.hpp"
 
@@ -16,7 +16,7 @@ namespace lammps_trace_parser_test {
 using demwb_lammps_unit::data_file;
 using demwb_lammps_unit::data_scene;
 using reference::lammps::assemble_trace;
-using reference::lammps::parse_fix_print;
+using reference::parse_fix_print;
 
 std::string captured(const std::string& name) { return support::read_file(data_file(name)); }
 

@@ -22,9 +22,11 @@ namespace fs = std::filesystem;
 
 const fs::path kBaselines = fs::path(DEMWB_SOURCE_DIR) / "cases" / "baselines";
 
-/// Each baseline (a case's JSON file, or a stored sweep's folder) and all of them together.
+/// Each baseline (a case's JSON file, or a stored sweep's folder) and all of them together. The
+/// total was 1.5 MB for two reference codes (1.4 MB used); LIGGGHTS' results on seven two-body
+/// cases added 0.16 MB, so the whole may now take 2 MB.
 constexpr std::uintmax_t kMaxBaselineBytes = 300'000;
-constexpr std::uintmax_t kMaxTotalBytes = 1'500'000;
+constexpr std::uintmax_t kMaxTotalBytes = 2'000'000;
 
 /// Bytes of the regular files under `path` (or of `path` itself).
 std::uintmax_t bytes_of(const fs::path& path) {

@@ -24,6 +24,8 @@ struct CoulombCohesion {
       "pair_style hybrid/overlay granular coul/cut r_c with dielectric ε_r and per-atom charges "
       "(atom_style hybrid sphere charge); not verified on this build";
   static constexpr std::string_view kYade = "no electrostatic law in YADE";
+  static constexpr std::string_view kLiggghts =
+      "none: pair gran has no electrostatics";
 
   double permittivity;  ///< ε_r [-]
   double cutoff;        ///< r_c [m], centre distance beyond which no force acts

@@ -24,6 +24,8 @@ struct DmtCohesion {
       "pair granular `dmt E η ν γ` with E = 2(1−ν²)E* per pair_coeff (F = F_Hertz − 4πγR*)";
   static constexpr std::string_view kYade =
       "MindlinPhys/Law2_ScGeom_MindlinPhys_Mindlin with gamma = γ (per surface): pull-off 4πγR*";
+  static constexpr std::string_view kLiggghts =
+      "none: LIGGGHTS' sjkr/sjkr2 pull with k·A (k an energy density, A the contact area), not 4πγR*";
 
   double surface_energy;  ///< γ per surface [J/m²]
 

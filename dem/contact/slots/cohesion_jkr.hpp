@@ -53,6 +53,8 @@ struct JkrCohesion {
       "linear_history 0 0 0` at least (linear_nohistory crashes); breaks at δ_f: jkr_rupture = "
       "'load' reproduces it";
   static constexpr std::string_view kYade = "no JKR law in YADE";
+  static constexpr std::string_view kLiggghts =
+      "none: sjkr/sjkr2 are a simplified JKR (k·A while the bodies overlap): no neck beyond contact, no hysteresis";
 
   double modulus;         ///< E* [Pa]
   double surface_energy;  ///< γ per surface [J/m²]

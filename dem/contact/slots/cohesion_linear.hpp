@@ -24,6 +24,8 @@ struct LinearCohesion {
       "per type pair (exact for discrete size classes only)";
   static constexpr std::string_view kYade =
       "not built in: a per-step Python force between InteractionLoop and NewtonIntegrator";
+  static constexpr std::string_view kLiggghts =
+      "none: sjkr/sjkr2 pull with k·A and only while the bodies overlap (the core's linear cohesion acts over the effect radii)";
 
   double stiffness;  ///< k_c [N/m]
 

@@ -22,6 +22,8 @@ struct KuwabaraKonoDamping {
       "a-proportional form; one m* per type pair, so one type per size class)";
   static constexpr std::string_view kYade =
       "none: YADE's Hertz–Mindlin dashpot grows as δ^{1/4}, not as √δ";
+  static constexpr std::string_view kLiggghts =
+      "none: no LIGGGHTS dashpot 2 E' √(R* δ)";
 
   double viscous_modulus;  ///< E' [Pa·s]
 

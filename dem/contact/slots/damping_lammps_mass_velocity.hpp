@@ -22,6 +22,8 @@ struct LammpsMassVelocityDamping {
       "γ_n); fixed partners need `fix freeze` so that LAMMPS takes m* = m";
   static constexpr std::string_view kYade =
       "none: YADE dashpots are given as c_n or β_n, not as a rate; pass c_n = rate · m* per pair";
+  static constexpr std::string_view kLiggghts =
+      "not mapped yet: hooke/stiffness without absolute_damping takes γ_n = m* gamman (on linear)";
 
   double rate;  ///< η/m* [1/s]
 

@@ -25,6 +25,8 @@ struct LammpsTsujiDamping {
   static constexpr std::string_view kYade =
       "no exact counterpart (YADE Mindlin clips F_n ≥ 0); betan = α_L/(2√1.5) gives the same "
       "dashpot with clamp_tensile = true";
+  static constexpr std::string_view kLiggghts =
+      "not mapped yet: LAMMPS' polynomial α(ε) would need the e whose LIGGGHTS Hertz dashpot equals it";
 
   double restitution;  ///< nominal ε passed to LAMMPS
   double factor;       ///< α_L(ε) [-]

@@ -22,6 +22,8 @@ struct LammpsVelocityDamping {
   static constexpr std::string_view kYade =
       "linear normal only: ViscElMat(kn = 2k_e, cn = 2η, ks, cs) + Law2_ScGeom_ViscElPhys_Basic "
       "(clips F_n ≥ 0: clamp_tensile = true); none for hertz";
+  static constexpr std::string_view kLiggghts =
+      "on linear: `hooke/stiffness absolute_damping on`, gamman_abs = η per type pair; none on hertz";
 
   double damping;  ///< η [kg/s]
 

@@ -21,6 +21,8 @@ struct LammpsViscoelasticDamping {
       "`damping viscoelastic` with the pair_coeff damping value η₀ [1/(m·s)] (also LAMMPS' "
       "default: always name the damping model explicitly)";
   static constexpr std::string_view kYade = "none: no √δ dashpot in YADE's Hertz–Mindlin";
+  static constexpr std::string_view kLiggghts =
+      "not mapped yet: `hertz/stiffness` has γ_n = √(R* δ) m* gamman, the same form";
 
   double rate_per_length;  ///< η₀ [1/(m·s)]
 

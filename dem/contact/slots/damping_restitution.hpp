@@ -25,6 +25,8 @@ struct RestitutionDamping {
       "FrictViscoMat(betan = β/2) + Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys(kn, kRatio=0) + "
       "Law2_ScGeom_FrictViscoPhys_CundallStrackVisco: η = 2 betan √(m* k) exact, unclamped, but the "
       "dashpot sees α·u_n with α = (r_p + r_q)/(r_p + r_q − δ)";
+  static constexpr std::string_view kLiggghts =
+      "on linear: `hooke/stiffness absolute_damping on`, gamman_abs = β(ε) √(m* k_e) per type pair; none on hertz (√(6/5) times LIGGGHTS' Hertz dashpot: use tsuji)";
 
   double restitution;  ///< ε ∈ (0, 1]
   double factor;       ///< β(ε) = η / √(m* k)

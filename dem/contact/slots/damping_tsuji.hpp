@@ -29,6 +29,8 @@ struct TsujiDamping {
       "with clamp_tensile = true: Ip2_FrictMat_FrictMat_MindlinPhys(betan = α/(2√1.5)), the same "
       "dashpot, exact (rebound 0.5503 for ε = 0.5); unclipped it has no counterpart, since "
       "Law2_ScGeom_MindlinPhys_Mindlin clips F_n ≥ 0";
+  static constexpr std::string_view kLiggghts =
+      "`model hertz` with `coefficientRestitution` ε: γ_n = −2 √(5/6) β √(2 Y* √(R* δ) m*), β = ln ε/√(ln² ε + π²), is this dashpot";
 
   double restitution;  ///< ε ∈ (0, 1]
   double factor;       ///< α(ε) [-]

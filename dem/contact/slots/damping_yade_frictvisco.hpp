@@ -34,6 +34,8 @@ struct YadeFrictViscoDamping {
   static constexpr std::string_view kYade =
       "FrictViscoMat(betan = β/2) + Ip2_FrictViscoMat_FrictViscoMat_FrictViscoPhys(kn, kRatio) + "
       "Law2_ScGeom_FrictViscoPhys_CundallStrackVisco, exactly (the law of `restitution` in YADE)";
+  static constexpr std::string_view kLiggghts =
+      "none: YADE's own law";
 
   double restitution;  ///< ε ∈ (0, 1]
   double factor;       ///< β(ε) = η / √(m* k)

@@ -26,6 +26,8 @@ struct YadeMindlinDamping {
   static constexpr std::string_view kYade =
       "FrictMat + Ip2_FrictMat_FrictMat_MindlinPhys(en = ε) + Law2_ScGeom_MindlinPhys_Mindlin "
       "(F_n clipped at ≥ 0; m̄ = the dynamic body's mass when the partner is fixed, as ours)";
+  static constexpr std::string_view kLiggghts =
+      "none: YADE's own law";
 
   double restitution;    ///< ε passed to YADE as en
   double damping_ratio;  ///< β_n(ε) [-]

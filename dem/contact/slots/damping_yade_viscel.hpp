@@ -29,6 +29,8 @@ struct YadeViscElDamping {
       "k1k2/(k1+k2)) + Ip2_ViscElMat_ViscElMat_ViscElPhys + Law2_ScGeom_ViscElPhys_Basic; "
       "F_n clipped at ≥ 0. Not ViscElMat(tc, en): its m_red counts a fixed partner's own mass "
       "(m/2 against walls), nor ViscElMat(young, en) (c_n solved to 1 % only)";
+  static constexpr std::string_view kLiggghts =
+      "none: YADE's own law";
 
   double stiffness;    ///< k_e [N/m] the coefficient is built from
   double restitution;  ///< ε ∈ (0, 1]

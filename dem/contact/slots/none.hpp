@@ -15,6 +15,8 @@ struct NoneModelInfo {
   static constexpr std::array<std::string_view, 0> kProperties{};
   static constexpr std::string_view kLammps = "omitted";
   static constexpr std::string_view kYade = "omitted";
+  static constexpr std::string_view kLiggghts =
+      "omitted";
 };
 
 /// Damping sub-model `none`: purely elastic normal contact.
@@ -24,6 +26,8 @@ struct NoDamping : NoneModelInfo {
       "`damping velocity` with η = 0 (never left to LAMMPS' default, viscoelastic)";
   static constexpr std::string_view kYade =
       "no dashpot: FrictMat + Law2_ScGeom_FrictPhys_CundallStrack, NewtonIntegrator(damping=0)";
+  static constexpr std::string_view kLiggghts =
+      "no dashpot: coefficientRestitution 1 (model hertz) or gamman_abs 0 (hooke/stiffness)";
   static NoDamping from_pair(const PairProperties&) { return {}; }
   [[nodiscard]] double coefficient(const ContactGeometry&, const NormalResponse&) const noexcept {
     return 0.0;
@@ -35,6 +39,8 @@ struct NoTangential : NoneModelInfo {
   static constexpr std::string_view kDescription = "frictionless";
   static constexpr std::string_view kLammps = "tangential linear_nohistory 0 0";
   static constexpr std::string_view kYade = "ks = 0 per material pair (MatchMaker), frictionAngle = 0";
+  static constexpr std::string_view kLiggghts =
+      "`tangential no_history` with `tangential_damping off`: no tangential force";
   static NoTangential from_pair(const PairProperties&) { return {}; }
   [[nodiscard]] TangentialResponse evaluate(const ContactInput&, const TangentialInput&,
                                             ContactHistory&) const noexcept {

@@ -26,6 +26,8 @@ struct HertzNormal {
       "FrictMat(young, poisson) + Ip2_FrictMat_FrictMat_MindlinPhys + "
       "Law2_ScGeom_MindlinPhys_Mindlin (k_no = 4/3 E*√R*, E* as ours); sphere–wall contacts use "
       "R* = r/2 there, not r: model a wall as a large fixed sphere or scale the moduli by √2";
+  static constexpr std::string_view kLiggghts =
+      "`model hertz`: k_n = 4/3 Y* √(R* δ), Y* mixed by LIGGGHTS from per-type `youngsModulus` and `poissonsRatio` (checked against the pair's E*)";
 
   double effective_modulus;  ///< E* [Pa]
 

@@ -28,6 +28,8 @@ struct HystereticNormal {
       "LudingPhys + Law2_ScGeom_LudingPhys_Basic has the same branches and reloading rule but "
       "k2 = k1 + (kp − k1) δ_max/δ_Pmax grows with δ_max (equal to k_u only for one δ_max), and "
       "against walls it is purely elastic (kp): use large fixed spheres as walls";
+  static constexpr std::string_view kLiggghts =
+      "not mapped yet: `hooke/hysteresis` is LIGGGHTS' Walton–Braun law";
 
   double loading_stiffness;    ///< k_l [N/m]
   double unloading_stiffness;  ///< k_u = k_l / ε² [N/m]

@@ -20,6 +20,8 @@ struct LinearNormal {
   static constexpr std::string_view kYade =
       "FrictMat + Ip2_FrictMat_FrictMat_FrictPhys(kn = k_e per material pair via MatchMaker) + "
       "Law2_ScGeom_FrictPhys_CundallStrack (exact)";
+  static constexpr std::string_view kLiggghts =
+      "`model hooke/stiffness` with kn = k_e per type pair (not `model hooke`, whose k_n comes from a characteristic velocity)";
 
   double stiffness;  ///< k_e [N/m]
 

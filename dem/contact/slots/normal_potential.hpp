@@ -27,6 +27,8 @@ struct PotentialNormal {
       "none: pair granular has no continuous potential; a per-type-pair `pair_style table` "
       "F(r) inside hybrid/overlay could tabulate it (not verified)";
   static constexpr std::string_view kYade = "none: no Langston potential law in YADE 2023.02a";
+  static constexpr std::string_view kLiggghts =
+      "none: LIGGGHTS has no Langston potential";
 
   double exponent;        ///< a [-]
   double critical_ratio;  ///< d_crit / d [-], > 1

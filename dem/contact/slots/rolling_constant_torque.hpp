@@ -25,6 +25,8 @@ struct ConstantTorqueRolling {
       "none: LAMMPS has only `rolling sds`; its sliding limit μ_r R* |F_n| is the same torque";
   static constexpr std::string_view kYade =
       "none in the installed build (CohFrictMat rolling is elastic–plastic, not constant)";
+  static constexpr std::string_view kLiggghts =
+      "not mapped yet: `rolling_friction cdt` is μ_r k_n δ R* (elastic force only) against ω_p − ω_q";
 
   double rolling_friction;  ///< μ_r [-]
 

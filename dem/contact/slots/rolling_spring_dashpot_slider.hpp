@@ -26,6 +26,8 @@ struct SpringDashpotSliderRolling {
   static constexpr std::string_view kLammps = "`rolling sds k_r γ_r μ_r` (pair granular and fix wall/gran)";
   static constexpr std::string_view kYade =
       "none: CohFrictMat's moment law has no dashpot and a different stiffness definition";
+  static constexpr std::string_view kLiggghts =
+      "not mapped yet: `rolling_friction epsd2` is a spring k_t R*² capped at μ_r |F_n| R*, without a dashpot";
 
   double stiffness;         ///< k_r [N/m]
   double damping;           ///< γ_r [kg/s]

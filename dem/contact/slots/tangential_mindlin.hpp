@@ -118,6 +118,8 @@ struct MindlinTangential {
       "16/3 G* passed explicitly (LAMMPS' NULL means 8 G*)";
   static constexpr std::string_view kYade =
       "none: YADE's Mindlin uses 8 G* and an incremental force history (use mindlin_8g)";
+  static constexpr std::string_view kLiggghts =
+      "none: LIGGGHTS' Hertz tangential stiffness is 8 G* √(R* δ) (use mindlin_8g)";
 
   MindlinParameters p;
 
@@ -160,6 +162,8 @@ struct Mindlin8GTangential {
   static constexpr std::string_view kYade =
       "Ip2_FrictMat_FrictMat_MindlinPhys + Law2_ScGeom_MindlinPhys_Mindlin (incremental force "
       "history: differs while δ changes at constant slip)";
+  static constexpr std::string_view kLiggghts =
+      "`model hertz` + `tangential history`: k_t = 8 G* √(R* δ) on the whole slip; its dashpot is LIGGGHTS' own, 2 √(G*/E*) times the normal one (or `tangential_damping off`)";
 
   MindlinParameters p;
 

@@ -66,6 +66,8 @@ struct SpringCoulombTangential {
       "Ip2_FrictMat_FrictMat_FrictPhys(ks = k_f) + Law2_ScGeom_FrictPhys_CundallStrack, "
       "frictionAngle = atan μ (cap on elastic |F_n| = friction_limit 'elastic'; no tangential "
       "dashpot: tangential_damping_ratio must be 0)";
+  static constexpr std::string_view kLiggghts =
+      "on linear: `tangential history` with kt per type pair (hooke/stiffness), gammat_abs = ratio · γ_n; LIGGGHTS tests the Coulomb limit on the spring alone";
 
   double stiffness;      ///< k_f [N/m]
   double friction;       ///< μ [-]

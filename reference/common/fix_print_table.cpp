@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "reference/lammps/print_parser.hpp"
+#include "reference/common/fix_print_table.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -9,7 +9,7 @@
 
 #include "support/text_tokens.hpp"
 
-namespace reference::lammps {
+namespace reference {
 
 using support::split_lines;
 using support::split_words;
@@ -63,4 +63,4 @@ cases::Trace parse_fix_print(std::string_view text, std::string_view file_name) 
   return trace;
 }
 
-}  // namespace reference::lammps
+}  // namespace reference

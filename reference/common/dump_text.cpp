@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "reference/lammps/dump_parser.hpp"
+#include "reference/common/dump_text.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -8,7 +8,7 @@
 
 #include "support/text_tokens.hpp"
 
-namespace reference::lammps {
+namespace reference {
 
 using support::split_lines;
 using support::split_words;
@@ -99,4 +99,4 @@ std::vector<DumpFrame> parse_dump(std::string_view text, std::string_view file_n
   return frames;
 }
 
-}  // namespace reference::lammps
+}  // namespace reference

@@ -1,0 +1,236 @@
+// SPDX-License-Identifier: MIT
+#include "reference/liggghts/deck_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "reference/common/deck_comment.hpp"
+#include "reference/common/dump_snapshots.hpp"
+#include "reference/liggghts/wall_planes.hpp"
+
+namespace reference::liggghts {
+namespace {
+
+/// A number written so that LIGGGHTS reads back the same double.
+std::string num(double v) { return fmt::format("{:.17g}", v); }
+
+/// Appends one deck line: a command padded to 16 columns, then its arguments.
+void line(std::string& deck, std::string_view command, std::string_view args) {
+  deck += fmt::format("{:<15} {}\n", command, args);
+}
+
+/// The values of one per-type or per-type-pair table, space-separated.
+std::string values(const std::vector<double>& v) {
+  std::string out;
+  for (const double x : v) out += (out.empty() ? "" : " ") + num(x);
+  return out;
+}
+
+/// Types (1-based) of the mobile or frozen particle classes, space-separated.
+std::string particle_types(const AtomTypes& types, bool fixed) {
+  std::string out;
+  for (std::size_t t = 0; t < types.particles.size(); ++t) {
+    if (types.particles[t].fixed == fixed) out += fmt::format("{}{}", out.empty() ? "" : " ", t + 1);
+  }
+  return out;
+}
+
+/// The model words of pair_style gran and fix wall/gran.
+std::string model_words(const ContactSettings& c) { return fmt::format("model {} tangential {}", c.normal, c.tangential); }
+
+/// The model settings ("limitForce on", …): after the model words on pair_style gran, at the end
+/// of fix wall/gran (before `primitive` they end the model words too early).
+std::string model_settings(const ContactSettings& c) {
+  std::string out;
+  for (const std::string& o : c.options) out += " " + o;
+  return out;
+}
+
+/// A box holding every trajectory: the bodies' bounding box widened by 2 v_max T + |g| T² + 2 r_max
+/// (atoms leaving it stop the run: `thermo_modify lost error`).
+std::pair<cases::Vector3, cases::Vector3> simulation_box(const cases::Scene& scene, double duration) {
+  cases::Vector3 lo{}, hi{};
+  double v_max = 0.0, r_max = 0.0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    lo[k] = scene.particles.empty() ? -1.0 : scene.particles.front().position[k];
+    hi[k] = lo[k];
+  }
+  for (const cases::ParticleSpec& p : scene.particles) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p.position[k]);
+      hi[k] = std::max(hi[k], p.position[k]);
+    }
+    v_max = std::max(v_max, std::sqrt(p.velocity[0] * p.velocity[0] + p.velocity[1] * p.velocity[1] +
+                                      p.velocity[2] * p.velocity[2]));
+    r_max = std::max(r_max, p.radius);
+  }
+  const cases::Vector3& g = scene.gravity;
+  const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  const double margin = 2.0 * v_max * duration + g_norm * duration * duration + 2.0 * std::max(r_max, 1e-9);
+  for (std::size_t k = 0; k < 3; ++k) {
+    lo[k] -= margin;
+    hi[k] += margin;
+  }
+  return {lo, hi};
+}
+
+void write_header(std::string& deck, const cases::Scene& scene, const ContactSettings& c, const DeckSettings& s) {
+  deck += fmt::format("# dem-workbench LIGGGHTS deck for case '{}' (generated, do not edit)\n", deck_comment_text(scene.name));
+  deck += fmt::format("# {} steps of {} s; written for LIGGGHTS-PUBLIC 3.8.0\n", s.steps, num(s.timestep));
+  line(deck, "units", "si");
+  line(deck, "atom_style", "granular");
+  line(deck, "atom_modify", "map array sort 0 0.0  # x[i] in formulas; atoms stay in id order");
+  line(deck, "boundary", "f f f");
+  line(deck, "newton", "off  # pair gran with history needs it");
+  line(deck, "communicate", "single vel yes  # granular pairs need ghost velocities");
+  if (c.hard_particles) line(deck, "hard_particles", "yes  # a Young's modulus above 1e9 Pa (or a rigid wall)");
+  if (c.soft_particles) line(deck, "soft_particles", "yes  # a Young's modulus below 5e6 Pa");
+}
+
+void write_box_and_properties(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
+                              const ContactSettings& c, const DeckSettings& s) {
+  const auto [lo, hi] = simulation_box(scene, static_cast<double>(s.steps) * s.timestep);
+  line(deck, "region", fmt::format("tr_box block {} {} {} {} {} {} units box", num(lo[0]), num(hi[0]), num(lo[1]),
+                                   num(hi[1]), num(lo[2]), num(hi[2])));
+  line(deck, "create_box", fmt::format("{} tr_box", types.count()));
+  deck += "# atom types: one per (material, radius, fixed) particle class, then one per wall material\n";
+  for (std::size_t t = 0; t < types.particles.size(); ++t) {
+    const ParticleType& p = types.particles[t];
+    deck += fmt::format("#   type {}: material '{}', r = {} m, {}, m = {} kg\n", t + 1,
+                        deck_comment_text(scene.materials.at(p.material).name), num(p.radius), p.fixed ? "frozen" : "mobile",
+                        num(p.mass));
+  }
+  for (std::size_t w = 0; w < types.wall_materials.size(); ++w) {
+    const dem::MaterialProperties& m = scene.materials.at(types.wall_materials[w]);
+    deck += fmt::format("#   type {}: wall material '{}'{}\n", types.particles.size() + w + 1, deck_comment_text(m.name),
+                        m.rigid ? " (rigid: E = 1e300 Pa)" : "");
+  }
+  for (const std::string& note : c.notes) deck += "# " + deck_comment_text(note) + "\n";
+  const std::size_t n = types.count();
+  const auto table = [&](std::string_view id, std::string_view property, const std::vector<double>& v) {
+    line(deck, "fix", fmt::format("{} all property/global {} peratomtypepair {} {}", id, property, n, values(v)));
+  };
+  if (c.normal == "hertz") {
+    line(deck, "fix", fmt::format("tr_youngs all property/global youngsModulus peratomtype {}", values(c.youngs_modulus)));
+    line(deck, "fix", fmt::format("tr_poisson all property/global poissonsRatio peratomtype {}", values(c.poisson_ratio)));
+    table("tr_restitution", "coefficientRestitution", c.restitution);
+  } else {
+    table("tr_kn", "kn", c.kn);
+    table("tr_kt", "kt", c.kt);
+    table("tr_gamman", "gamman_abs", c.gamman);
+    table("tr_gammat", "gammat_abs", c.gammat);
+  }
+  table("tr_friction", "coefficientFriction", c.friction);
+  line(deck, "pair_style", "gran " + model_words(c) + model_settings(c));
+  line(deck, "pair_coeff", "* *");
+  double r_max = 0.0;
+  for (const cases::ParticleSpec& p : scene.particles) r_max = std::max(r_max, p.radius);
+  line(deck, "neighbor", fmt::format("{} bin", num(std::max(r_max, 1e-9))));
+  // LIGGGHTS zeroes a pair's slip history when it separates only while the pair is within
+  // contact_distance_factor × (r_p + r_q); at the default 1 never, so a pair that touches again
+  // before the next list build would resume its old slip.
+  line(deck, "neigh_modify", "delay 0 contact_distance_factor 1.1  # a separating pair forgets its slip");
+}
+
+void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& types) {
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    line(deck, "create_atoms", fmt::format("{} single {} {} {} units box  # particle {} = atom {}",
+                                           types.particle_type(i), num(p.position[0]), num(p.position[1]),
+                                           num(p.position[2]), i, i + 1));
+  }
+  for (std::size_t t = 0; t < types.particles.size(); ++t) {
+    const ParticleType& type = types.particles[t];
+    line(deck, "set", fmt::format("type {} diameter {} density {}", t + 1, num(2.0 * type.radius),
+                                  num(scene.materials.at(type.material).density)));
+  }
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    if (p.fixed) continue;
+    line(deck, "set", fmt::format("atom {} vx {} vy {} vz {} omegax {} omegay {} omegaz {}", i + 1,
+                                  num(p.velocity[0]), num(p.velocity[1]), num(p.velocity[2]),
+                                  num(p.angular_velocity[0]), num(p.angular_velocity[1]),
+                                  num(p.angular_velocity[2])));
+  }
+  if (const std::string mobile = particle_types(types, false); !mobile.empty()) {
+    line(deck, "group", "tr_mobile type " + mobile);
+  }
+  if (const std::string fixed = particle_types(types, true); !fixed.empty()) {
+    line(deck, "group", "tr_fixed type " + fixed);
+  }
+}
+
+void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& types, const ContactSettings& c,
+                 const DeckSettings& s) {
+  deck += "# the pair forces alone, stored before walls and gravity add theirs and freeze zeroes them\n";
+  line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
+  for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+    const std::optional<WallPlane> plane = wall_plane(scene.walls[w]);
+    if (!plane) continue;  // supports() reports it
+    deck += fmt::format("# wall {} ('{}'): a two-sided primitive plane of type {}; its force on each atom is stored\n",
+                        w, deck_comment_text(scene.walls[w].name), types.wall_type(w));
+    line(deck, "fix", fmt::format("{} all wall/gran {} primitive type {} {} store_force yes{}", wall_fix_id(w),
+                                  model_words(c), types.wall_type(w), plane_arguments(*plane), model_settings(c)));
+  }
+  const bool any_mobile = !particle_types(types, false).empty();
+  const cases::Vector3& g = scene.gravity;
+  const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  if (any_mobile && g_norm > 0.0) {
+    line(deck, "fix", fmt::format("tr_gravity tr_mobile gravity {} vector {} {} {}", num(g_norm), num(g[0]),
+                                  num(g[1]), num(g[2])));
+  }
+  if (any_mobile) {
+    line(deck, "fix", scene.integration.rotation
+                          ? "tr_integrate tr_mobile nve/sphere  # velocity Verlet of x and omega"
+                          : "tr_integrate tr_mobile nve  # velocity Verlet of x; omega held (rotation = false)");
+  }
+  if (!particle_types(types, true).empty()) {
+    line(deck, "fix", "tr_freeze tr_fixed freeze  # pairs then use m* = the mobile mass");
+  }
+  line(deck, "timestep", num(s.timestep));
+}
+
+void write_outputs(std::string& deck, const cases::Scene& scene, const TracePlan& plan, const DeckSettings& s) {
+  for (const std::string& command : plan.commands) {
+    const auto space = command.find(' ');
+    line(deck, command.substr(0, space), command.substr(space + 1));
+  }
+  deck += "# trace columns: each formula written out (a v_name inside a formula keeps 15 digits)\n";
+  std::string thermo = "custom step";
+  for (std::size_t k = 0; k < plan.columns.size(); ++k) {
+    line(deck, "variable", fmt::format("{} equal \"{}\"  # {}", column_variable(k), plan.columns[k].formula,
+                                       plan.columns[k].name));
+    thermo += " v_" + column_variable(k);
+  }
+  line(deck, "thermo_style", thermo);
+  line(deck, "thermo_modify", "format float %.17g norm no lost error  # atoms leaving the box stop the run");
+  line(deck, "thermo", fmt::format("{}", scene.output.trace_every));
+
+  const SnapshotSchedule schedule = snapshot_schedule(scene.output.snapshot_times, s.timestep, s.steps);
+  if (schedule.next_step.empty()) return;
+  line(deck, "variable", fmt::format("tr_snapshot_step equal \"{}\"", schedule.next_step));
+  line(deck, "dump", fmt::format("tr_snapshots all custom 1 {} id x y z vx vy vz omegax omegay omegaz", s.snapshot_file));
+  // This LIGGGHTS takes only a whole-line dump format (its dumps default to 6 digits).
+  line(deck, "dump_modify",
+       fmt::format("tr_snapshots sort id every v_tr_snapshot_step{} format \"%d{}\"", schedule.first ? " first yes" : "",
+                   " %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g"));
+}
+
+}  // namespace
+
+std::string write_deck(const cases::Scene& scene, const AtomTypes& types, const ContactSettings& contacts,
+                       const TracePlan& plan, const DeckSettings& settings) {
+  std::string deck;
+  write_header(deck, scene, contacts, settings);
+  write_box_and_properties(deck, scene, types, contacts, settings);
+  write_atoms(deck, scene, types);
+  write_fixes(deck, scene, types, contacts, settings);
+  write_outputs(deck, scene, plan, settings);
+  line(deck, "run", fmt::format("{}", settings.steps));
+  return deck;
+}
+
+}  // namespace reference::liggghts

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+#include "reference/liggghts/run_conventions.hpp"
+
+#include <fmt/format.h>
+
+namespace reference::liggghts {
+
+std::map<std::string, std::string> run_conventions(const cases::Scene& scene, const ContactSettings& contacts,
+                                                   const TracePlan& plan, const DeckSettings& settings,
+                                                   const std::string& version) {
+  std::map<std::string, std::string> c;
+  c["version"] = version;
+  c["integrator"] = scene.integration.rotation
+                        ? "velocity Verlet (fix nve/sphere, I = 0.4 m r²); forces see v(t + Δt/2), ω(t + Δt/2)"
+                        : "velocity Verlet (fix nve); ω held (rotation = false)";
+  c["time step"] = fmt::format("{:.17g} s, {} steps (the core's)", settings.timestep, settings.steps);
+  std::string words = fmt::format("pair_style gran model {} tangential {}", contacts.normal, contacts.tangential);
+  for (const std::string& o : contacts.options) words += " " + o;
+  c["contact model"] = words + "; the same words on every fix wall/gran";
+  if (contacts.normal == "hertz") {
+    c["hertz"] =
+        "k_n = 4/3 Y* √(R* δ), γ_n = −2 √(5/6) β √(2 Y* √(R* δ) m*), β = ln e/√(ln² e + π²) — the core's "
+        "'tsuji' dashpot; Y*, G* mixed by LIGGGHTS from per-type E and ν (checked against the core's pair "
+        "values to 1e-12); k_t = 8 G* √(R* δ), γ_t from e with 8 G* in place of 2 Y* unless tangential_damping "
+        "off";
+  } else {
+    c["hooke/stiffness"] =
+        "k_n, k_t per type pair; absolute_damping on: γ_n = the core's η per type pair (β(ε) √(m* k_n) for "
+        "'restitution', m* of the type pair), γ_t = tangential_damping_ratio · γ_n";
+  }
+  c["frozen particles"] = "fix freeze; pair gran then takes m* = the mobile mass (the core's 1/m = 0)";
+  c["tangential slip"] =
+      "ς += v_t Δt, then its normal part removed without rescaling (increment_project); Coulomb test "
+      "k_t |ς| > μ |F_n| on the spring alone with F_n = elastic + dashpot (elastic_damping); sliding drops the "
+      "tangential dashpot; sticking adds it after the test, so |F_t| may exceed μ |F_n|";
+  c["lever arm"] = "r − δ/2 for the torque and the contact-point velocity, pairs and walls (contact_point)";
+  if (!scene.walls.empty()) {
+    c["walls"] =
+        "fix wall/gran … primitive type T xplane|yplane|zplane: a wall is an atom type mixed like a particle "
+        "(rigid: E = 1e300 Pa); planes push from both sides; R* = r, m* = m; history zeroed when the sphere "
+        "leaves";
+  }
+  c["contact onset"] = "pairs touch while |x_p − x_q| < r_p + r_q (strict)";
+  std::string sources;
+  for (const std::string& s : plan.sources) sources += (sources.empty() ? "" : "; ") + s;
+  c["trace columns"] = sources;
+  c["precision"] = "thermo columns of equal-style variables printed with %.17g; snapshots with %.17g";
+  return c;
+}
+
+}  // namespace reference::liggghts

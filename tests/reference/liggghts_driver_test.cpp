@@ -1,0 +1,321 @@
+// SPDX-License-Identifier: MIT
+// The LIGGGHTS driver's pure parts (no LIGGGHTS needed): atom types with the walls' types after the
+// particles', the contact model as property tables (values and every refusal), the deck, the
+// thermo table read back, the banner.
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "cases/case_loader.hpp"
+#include "dem/contact/pair_table.hpp"
+#include "dem/contact/laws/linear_dashpot.hpp"
+#include "dem/particles/particles.hpp"
+#include "reference/common/prepared_scene.hpp"
+#include "reference/liggghts/atom_types.hpp"
+#include "reference/liggghts/contact_mapping.hpp"
+#include "reference/liggghts/deck_writer.hpp"
+#include "reference/liggghts/liggghts_runner.hpp"
+#include "reference/liggghts/trace_columns.hpp"
+
+namespace liggghts_driver_test {
+
+using namespace reference::liggghts;
+
+/// A two-sphere case with a floor: [model] lines, the two materials' extra keys, and whether
+/// the second sphere is frozen.
+std::string case_text(const std::string& model, const std::string& steel, const std::string& glass,
+                      bool frozen = false, const std::string& wall = "material = \"glass\"") {
+  return fmt::format(R"([case]
+name = "two"
+[model]
+{0}
+[materials.steel]
+density = 7800.0
+{1}
+[materials.glass]
+density = 2500.0
+{2}
+[[walls]]
+type = "plane"
+name = "floor"
+point = [0.0, 0.0, -0.01]
+normal = [0.0, 0.0, 1.0]
+{4}
+[[particles]]
+radius = 0.002
+material = "steel"
+position = [0.0, 0.0, 0.0]
+velocity = [0.5, 0.0, -0.1]
+[[particles]]
+radius = 0.003
+material = "glass"
+position = [0.0051, 0.0, 0.0]
+fixed = {3}
+[fields]
+gravity = [0.0, 0.0, -9.81]
+[integration]
+scheme = "velocity_verlet"
+timestep = 1.0e-6
+duration = 1.0e-4
+[output]
+trace_every = 10
+trace_particles = [0, 1]
+trace_pairs = [[0, 1]]
+trace_walls = [[0, 0]]
+)",
+                     model, steel, glass, frozen ? "true" : "false", wall);
+}
+
+const std::string kHertzModel = "normal = \"hertz\"\ndamping = \"tsuji\"\ntangential = \"mindlin_8g\"";
+const std::string kSteel = "youngs_modulus = 2.0e8\npoisson_ratio = 0.29\nrestitution = 0.8\nfriction = 0.3\n";
+const std::string kGlass = "youngs_modulus = 6.0e7\npoisson_ratio = 0.23\nrestitution = 0.8\nfriction = 0.3\n";
+
+cases::Scene scene_of(const std::string& text) { return cases::load_case_text(text, "two.toml"); }
+
+ContactMapping mapping_of(const cases::Scene& scene) {
+  const reference::PreparedScene prepared(scene);
+  return map_contacts(scene, prepared.pair_table(), classify(scene));
+}
+
+/// The case's tangential_damping_ratio line for both materials.
+std::string with_ratio(const std::string& material, double ratio) {
+  return material + fmt::format("tangential_damping_ratio = {:.17g}\n", ratio);
+}
+
+TEST(LiggghtsAtomTypes, WallMaterialsFollowTheParticleClassesAndMassesMixAsPairGranDoes) {
+  const cases::Scene scene = scene_of(case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0), true));
+  const AtomTypes types = classify(scene);
+  ASSERT_EQ(types.particles.size(), 2u);
+  ASSERT_EQ(types.wall_materials.size(), 1u);
+  EXPECT_EQ(types.count(), 3u);
+  EXPECT_EQ(types.wall_type(0), 3u);
+  EXPECT_EQ(types.material_of(3), types.particles[1].material);  // the floor is glass, like sphere 1
+  const double m0 = dem::sphere_mass(7800.0, 0.002);
+  EXPECT_EQ(*types.reduced_mass(1, 1), m0 * m0 / (m0 + m0));
+  EXPECT_EQ(*types.reduced_mass(1, 2), m0);  // against the frozen sphere: the mobile mass
+  EXPECT_EQ(*types.reduced_mass(3, 1), m0);  // against a wall: the sphere's mass
+  EXPECT_FALSE(types.reduced_mass(2, 3).has_value());  // a frozen sphere and a wall never meet
+}
+
+TEST(LiggghtsMixing, EffectiveModuliAreTheCoresForEveryPairOfMaterials) {
+  // LIGGGHTS mixes Y* and G* from per-type E and ν; the core's pair table must hold the same
+  // numbers, or the driver could not write E and ν at all.
+  for (const double nu_a : {0.0, 0.2, 0.35, 0.49}) {
+    for (const double nu_b : {0.1, 0.3, 0.45}) {
+      const cases::Scene scene = scene_of(case_text(
+          kHertzModel, fmt::format("youngs_modulus = 3.0e8\npoisson_ratio = {}\nrestitution = 0.8\nfriction = 0.3\n"
+                                   "tangential_damping_ratio = 0.0\n", nu_a),
+          fmt::format("youngs_modulus = 7.0e7\npoisson_ratio = {}\nrestitution = 0.8\nfriction = 0.3\n"
+                      "tangential_damping_ratio = 0.0\n", nu_b)));
+      const reference::PreparedScene prepared(scene);
+      const dem::PairProperties& pair = prepared.pair_table().properties(0, 1);
+      EXPECT_NEAR(liggghts_effective_modulus(3.0e8, nu_a, 7.0e7, nu_b), *pair.effective_modulus,
+                  1e-14 * *pair.effective_modulus);
+      EXPECT_NEAR(liggghts_effective_shear_modulus(3.0e8, nu_a, 7.0e7, nu_b), *pair.effective_shear_modulus,
+                  1e-14 * *pair.effective_shear_modulus);
+    }
+  }
+}
+
+TEST(LiggghtsContactMapping, HertzWritesEAndNuPerTypeAndTheRestitutionPerTypePair) {
+  const cases::Scene scene = scene_of(case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0)));
+  const ContactMapping m = mapping_of(scene);
+  ASSERT_TRUE(m.reasons.empty()) << m.reasons.front();
+  const ContactSettings& s = *m.settings;
+  EXPECT_EQ(s.normal, "hertz");
+  EXPECT_EQ(s.tangential, "history");
+  EXPECT_EQ(s.youngs_modulus, (std::vector<double>{2.0e8, 6.0e7, 6.0e7}));
+  EXPECT_EQ(s.poisson_ratio, (std::vector<double>{0.29, 0.23, 0.23}));
+  EXPECT_EQ(s.restitution[0 * 3 + 1], 0.8);
+  EXPECT_EQ(s.restitution[1 * 3 + 0], 0.8);
+  EXPECT_EQ(s.friction[0 * 3 + 2], 0.3);
+  EXPECT_FALSE(s.hard_particles);
+  // A zero tangential dashpot switches LIGGGHTS' off.
+  EXPECT_NE(std::find(s.options.begin(), s.options.end(), "tangential_damping off"), s.options.end());
+}
+
+TEST(LiggghtsContactMapping, TheHertzTangentialDashpotMustBeLiggghtsOwnOrNone) {
+  const cases::Scene plain = scene_of(case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0)));
+  const reference::PreparedScene prepared(plain);
+  // LIGGGHTS: γ_t / γ_n = √(8 G* / (2 Y*)) = 2 √(G*/E*), one number per material pair.
+  const dem::PairProperties& steel = prepared.pair_table().properties(0, 0);
+  const double implied = 2.0 * std::sqrt(*steel.effective_shear_modulus / *steel.effective_modulus);
+  // Steel alone (both spheres and the wall steel): its own ratio maps, the dashpot stays on.
+  const std::string steel_only = case_text(kHertzModel, with_ratio(kSteel, implied), with_ratio(kGlass, 0.0), false,
+                                           "material = \"steel\"");
+  std::string two_steel = steel_only;
+  two_steel.replace(two_steel.rfind("material = \"glass\""), 18, "material = \"steel\"");
+  const ContactMapping own = mapping_of(scene_of(two_steel));
+  ASSERT_TRUE(own.reasons.empty()) << own.reasons.front();
+  EXPECT_EQ(std::find(own.settings->options.begin(), own.settings->options.end(), "tangential_damping off"),
+            own.settings->options.end());
+  // Any other ratio is refused, naming LIGGGHTS' value.
+  std::string other = two_steel;
+  other.replace(other.find(fmt::format("tangential_damping_ratio = {:.17g}", implied)),
+                fmt::format("tangential_damping_ratio = {:.17g}", implied).size(), "tangential_damping_ratio = 0.5");
+  const ContactMapping refused = mapping_of(scene_of(other));
+  ASSERT_FALSE(refused.reasons.empty());
+  EXPECT_NE(refused.reasons.front().find("2 √(G*/E*)"), std::string::npos) << refused.reasons.front();
+  EXPECT_FALSE(refused.settings.has_value());
+}
+
+TEST(LiggghtsContactMapping, TheLinearSpringTakesTheCoresDashpotPerTypePair) {
+  const std::string model = "normal = \"linear\"\ndamping = \"restitution\"\ntangential = \"spring_coulomb\"";
+  const std::string keys = "normal_stiffness = 4.0e4\nrestitution = 0.6\ntangential_stiffness = 2.0e4\n"
+                           "friction = 0.4\ntangential_damping_ratio = 0.25\n";
+  const cases::Scene scene = scene_of(case_text(model, keys, keys, true));
+  const ContactMapping m = mapping_of(scene);
+  ASSERT_TRUE(m.reasons.empty()) << m.reasons.front();
+  const ContactSettings& s = *m.settings;
+  EXPECT_EQ(s.normal, "hooke/stiffness");
+  EXPECT_NE(std::find(s.options.begin(), s.options.end(), "absolute_damping on"), s.options.end());
+  const AtomTypes types = classify(scene);
+  const double beta = dem::laws::restitution_damping_factor(0.6);
+  for (const auto& [a, b] : {std::pair<std::size_t, std::size_t>{1, 1}, {1, 2}, {1, 3}}) {
+    const std::size_t k = (a - 1) * 3 + (b - 1);
+    EXPECT_EQ(s.kn[k], 4.0e4);
+    EXPECT_EQ(s.kt[k], 2.0e4);
+    EXPECT_EQ(s.gamman[k], beta * std::sqrt(*types.reduced_mass(a, b) * 4.0e4)) << a << "-" << b;
+    EXPECT_EQ(s.gammat[k], 0.25 * s.gamman[k]);
+  }
+  EXPECT_EQ(s.gamman[1 * 3 + 2], 0.0);  // frozen sphere against the wall: they never meet
+}
+
+TEST(LiggghtsContactMapping, EveryInexpressibleChoiceIsRefusedWithItsReason) {
+  const std::string keys0 = with_ratio(kSteel, 0.0);
+  const std::string keys1 = with_ratio(kGlass, 0.0);
+  const auto reasons = [&](const std::string& model, const std::string& a = "", const std::string& b = "") {
+    return mapping_of(scene_of(case_text(model, keys0 + a, keys1 + b))).reasons;
+  };
+  const auto says = [](const std::vector<std::string>& r, const std::string& what) {
+    for (const auto& x : r) {
+      if (x.find(what) != std::string::npos) return true;
+    }
+    return false;
+  };
+  EXPECT_TRUE(says(reasons(kHertzModel + "\ncohesion = \"jkr\"", "surface_energy = 0.1\n", "surface_energy = 0.1\n"),
+                   "cohesion = 'jkr'"));
+  EXPECT_TRUE(says(reasons(kHertzModel + "\nmindlin_form = \"incremental\""), "mindlin_form"));
+  EXPECT_TRUE(says(reasons(kHertzModel + "\npair_lever_arm = \"radius\""), "pair_lever_arm"));
+  EXPECT_TRUE(says(reasons(kHertzModel + "\nwall_lever_arm = \"radius\""), "wall_lever_arm"));
+  EXPECT_TRUE(says(reasons("normal = \"hertz\"\ndamping = \"restitution\""), "√(6/5)"));
+  EXPECT_TRUE(says(reasons("normal = \"hertz\"\ntangential = \"spring_coulomb\"", "tangential_stiffness = 1e4\n",
+                           "tangential_stiffness = 1e4\n"),
+                   "not expressible"));
+  EXPECT_TRUE(says(reasons("normal = \"linear\"\ndamping = \"tsuji\"", "normal_stiffness = 1e4\n",
+                           "normal_stiffness = 1e4\n"),
+                   "tsuji"));
+  EXPECT_TRUE(says(reasons(kHertzModel + "\nrolling = \"constant_torque\"", "rolling_friction = 0.1\n",
+                           "rolling_friction = 0.1\n"),
+                   "rolling"));
+  // A [[pairs]] override of E* is not what LIGGGHTS mixes from E and ν.
+  const std::string overridden = case_text(kHertzModel, keys0, keys1) +
+                                 "[[pairs]]\nmaterials = [\"steel\", \"glass\"]\neffective_modulus = 1.0e7\n";
+  EXPECT_TRUE(says(mapping_of(scene_of(overridden)).reasons, "E* = 1e+07 Pa"));
+}
+
+TEST(LiggghtsContactMapping, ARigidWallIsATypeOfEnormousModulus) {
+  const cases::Scene scene = scene_of(case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0), false,
+                                                "material = \"glass\"\nrigid = true"));
+  const ContactMapping m = mapping_of(scene);
+  ASSERT_TRUE(m.reasons.empty()) << m.reasons.front();
+  EXPECT_EQ(m.settings->youngs_modulus.back(), kRigidYoungsModulus);
+  EXPECT_TRUE(m.settings->hard_particles);
+  // LIGGGHTS' mix with it is the particle's E/(1 − ν²) to the last bits.
+  const double mixed = liggghts_effective_modulus(2.0e8, 0.29, kRigidYoungsModulus, 0.23);
+  EXPECT_NEAR(mixed, 2.0e8 / (1.0 - 0.29 * 0.29), 1e-15 * mixed);
+}
+
+TEST(LiggghtsDeck, WritesWhatThisLiggghtsAcceptsInFullPrecision) {
+  const cases::Scene scene =
+      scene_of(case_text(kHertzModel + "\nclamp_tensile = true", with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0), true));
+  const AtomTypes types = classify(scene);
+  const ContactMapping m = mapping_of(scene);
+  ASSERT_TRUE(m.settings.has_value());
+  const TracePlan plan = trace_plan(scene, types);
+  DeckSettings settings;
+  settings.timestep = 1e-6;
+  settings.steps = 100;
+  const std::string deck = write_deck(scene, types, *m.settings, plan, settings);
+  EXPECT_EQ(deck, write_deck(scene, types, *m.settings, plan, settings));  // a pure function
+  for (const char* wanted :
+       {"communicate     single vel yes", "newton          off", "create_box      3 tr_box",
+        "pair_style      gran model hertz tangential history limitForce on tangential_damping off",
+        "contact_distance_factor 1.1", "fix             tr_pair_force all store/force",
+        "primitive type 3 zplane -0.01 store_force yes limitForce on tangential_damping off",
+        "fix             tr_freeze tr_fixed freeze", "thermo_modify   format float %.17g norm no lost error",
+        "thermo          10", "run             100"}) {
+    EXPECT_NE(deck.find(wanted), std::string::npos) << wanted << "\n" << deck;
+  }
+  // Modern LAMMPS syntax this LIGGGHTS refuses, and v_ references (15 digits) inside formulas.
+  EXPECT_EQ(deck.find("comm_modify"), std::string::npos);
+  EXPECT_EQ(deck.find("pair_style      granular"), std::string::npos);
+  for (const TraceColumn& c : plan.columns) EXPECT_EQ(c.formula.find("v_"), std::string::npos) << c.name;
+  // The columns are the trace's, in its order.
+  const cases::Trace layout = cases::trace_layout(scene);
+  ASSERT_EQ(plan.columns.size(), layout.columns().size());
+  for (std::size_t k = 0; k < plan.columns.size(); ++k) EXPECT_EQ(plan.columns[k].name, layout.columns()[k]);
+  // The frozen sphere's force is its stored contact force (fix freeze zeroes fx).
+  EXPECT_EQ(plan.columns[1 + 12 + 9].formula, "f_tr_pair_force[2][1]");
+}
+
+/// A log holding a thermo table of `plan`'s columns at steps 0, 10, …, `last`.
+std::string thermo_log(std::size_t columns, std::uint64_t last, std::uint64_t every, const std::string& extra = "") {
+  std::string log = "LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0, compiled …)\nSetting up run\n    Step";
+  for (std::size_t k = 0; k < columns; ++k) log += " " + column_variable(k);
+  log += "\n";
+  for (std::uint64_t s = 0; s <= last; s += every) {
+    log += fmt::format("{:>8}", s);
+    for (std::size_t k = 0; k < columns; ++k) log += fmt::format(" {:.17g}", 0.1 * static_cast<double>(s + k));
+    log += "\n";
+    if (s == 10) log += extra;
+  }
+  return log + "Loop time of 0.01 on 1 procs for 100 steps with 2 atoms\n";
+}
+
+TEST(LiggghtsThermo, ReadsTheTableAndRefusesAShortOrDamagedOne) {
+  const cases::Scene scene = scene_of(case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0)));
+  const TracePlan plan = trace_plan(scene, classify(scene));
+  const std::size_t n = plan.columns.size();
+  const cases::Trace t =
+      trace_from_thermo(scene, plan, thermo_log(n, 100, 10, "WARNING: a warning between rows\n"), "log", 100);
+  ASSERT_EQ(t.rows(), 11u);
+  EXPECT_EQ(t.columns().front(), "time");
+  EXPECT_EQ(t.values(3)[2], 0.1 * (20 + 3));
+  // LIGGGHTS prints the last step even off the output grid: that row is not the trace's.
+  std::string off_grid = thermo_log(n, 100, 10);
+  std::string closing = fmt::format("{:>8}", 105);
+  for (std::size_t k = 0; k < n; ++k) closing += " 1";
+  off_grid.insert(off_grid.find("Loop time"), closing + "\n");
+  EXPECT_EQ(trace_from_thermo(scene, plan, off_grid, "log", 105).rows(), 11u);
+  const auto error_of = [&](const std::string& log, std::uint64_t steps) {
+    try {
+      (void)trace_from_thermo(scene, plan, log, "log.liggghts", steps);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(error_of(thermo_log(n, 50, 10), 100).find("rows; expected 11"), std::string::npos);
+  EXPECT_NE(error_of("no table here\n", 100).find("no thermo table"), std::string::npos);
+  std::string damaged = thermo_log(n, 100, 10);
+  const std::size_t row20 = damaged.find("\n      20 ") + 10;  // the row of step 20, its first value
+  damaged.replace(row20, damaged.find(' ', row20) - row20, "2.0x");
+  EXPECT_NE(error_of(damaged, 100).find("is not a number"), std::string::npos) << error_of(damaged, 100);
+  std::string cut = thermo_log(n, 100, 10);
+  const std::size_t row30 = cut.find("\n      30 ") + 1;
+  cut.erase(cut.rfind(' ', cut.find('\n', row30)), cut.find('\n', row30) - cut.rfind(' ', cut.find('\n', row30)));
+  EXPECT_NE(error_of(cut, 100).find("values; expected"), std::string::npos) << error_of(cut, 100);
+}
+
+TEST(LiggghtsBanner, ReadsTheVersion) {
+  EXPECT_EQ(banner_version("LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0, compiled 2022-01-26-19:42:32 by buildd, git "
+                           "commit unknown)\n"),
+            "LIGGGHTS-PUBLIC 3.8.0");
+  EXPECT_FALSE(banner_version("LAMMPS (29 Sep 2021 - Update 2)\n").has_value());
+  EXPECT_FALSE(banner_version("").has_value());
+}
+
+}  // namespace liggghts_driver_test
