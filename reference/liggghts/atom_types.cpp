@@ -40,6 +40,21 @@ AtomTypes classify(const cases::Scene& scene) {
     }
     out.type_of.push_back(it->second);
   }
+  if (out.particles.size() > kMaxParticleTypes) {
+    out.particles.clear();
+    out.type_of.clear();
+    out.per_atom_diameter = true;
+    std::map<std::pair<std::size_t, bool>, std::size_t> coarse;
+    for (const cases::ParticleSpec& p : scene.particles) {
+      const auto key = std::make_pair(p.material, p.fixed);
+      auto it = coarse.find(key);
+      if (it == coarse.end()) {
+        it = coarse.emplace(key, out.particles.size()).first;
+        out.particles.push_back({p.material, 0.0, p.fixed, 0.0});
+      }
+      out.type_of.push_back(it->second);
+    }
+  }
   for (const cases::WallSpec& w : scene.walls) {
     const auto it = std::find(out.wall_materials.begin(), out.wall_materials.end(), w.material);
     out.wall_type_of.push_back(static_cast<std::size_t>(it - out.wall_materials.begin()));

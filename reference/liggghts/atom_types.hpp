@@ -18,6 +18,12 @@ struct ParticleType {
   double mass = 0.0;         ///< 4/3 π ρ r³ [kg], the core's formula
 };
 
+/// Most (material, radius, fixed) classes written as types of their own; a scene with more (a size
+/// distribution) gets one type per (material, fixed) and per-atom diameters instead.
+inline constexpr std::size_t kMaxParticleTypes = 16;
+/// Largest particle count written inline (`create_atoms single`); more go into a data file.
+inline constexpr std::size_t kMaxInlineAtoms = 100;
+
 /// The atom types of a deck: LIGGGHTS gives a wall the material of an atom type (`primitive type
 /// T`), so every wall material gets a type of its own after the particles' types.
 struct AtomTypes {
@@ -25,6 +31,9 @@ struct AtomTypes {
   std::vector<std::size_t> wall_materials;   ///< types P + 1 …: the walls' materials, first appearance first
   std::vector<std::size_t> type_of;          ///< per particle: index into `particles`
   std::vector<std::size_t> wall_type_of;     ///< per wall: index into `wall_materials`
+  /// Types are (material, fixed) classes whose atoms differ in diameter and mass (ParticleType::
+  /// radius and ::mass are then 0): m* is no longer one number per type pair.
+  bool per_atom_diameter = false;
 
   /// Number of atom types the deck declares (create_box).
   [[nodiscard]] std::size_t count() const noexcept { return particles.size() + wall_materials.size(); }
@@ -36,12 +45,19 @@ struct AtomTypes {
   [[nodiscard]] std::size_t material_of(std::size_t t) const;
   /// Reduced mass of a contact between types a and b (1-based), as LIGGGHTS takes it: m_a m_b /
   /// (m_a + m_b), the mobile mass against a frozen particle, the particle's mass against a wall
-  /// type; empty when neither is a mobile particle.
+  /// type; empty when neither is a mobile particle. Meaningless when per_atom_diameter (the
+  /// masses are 0 there): callers needing m* refuse such scenes.
   [[nodiscard]] std::optional<double> reduced_mass(std::size_t a, std::size_t b) const;
 };
 
-/// Sorts the particles into (material, radius, fixed) classes and the walls by material, in
-/// order of first appearance (pure, deterministic).
+/// Sorts the particles into (material, radius, fixed) classes — (material, fixed) ones beyond
+/// kMaxParticleTypes — and the walls by material, in order of first appearance (pure,
+/// deterministic).
 AtomTypes classify(const cases::Scene& scene);
+
+/// True when the deck reads its atoms from a data file (more than kMaxInlineAtoms particles).
+[[nodiscard]] inline bool atoms_in_data_file(const cases::Scene& scene) noexcept {
+  return scene.particles.size() > kMaxInlineAtoms;
+}
 
 }  // namespace reference::liggghts

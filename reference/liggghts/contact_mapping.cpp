@@ -174,6 +174,12 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
                                                 pair, e));
               }
             } else if constexpr (std::is_same_v<D, dem::RestitutionDamping>) {
+              if (types.per_atom_diameter && !hertz) {
+                add_reason(reasons, fmt::format("LIGGGHTS driver: more than {} (material, radius) classes: the "
+                                                "restitution dashpot β √(m* k) of hooke/stiffness needs one m* per "
+                                                "type pair",
+                                                kMaxParticleTypes));
+              }
               if (hertz) {
                 add_reason(reasons, "LIGGGHTS driver: damping = 'restitution' on Hertz (η = β √(m* k), k the "
                                     "tangent stiffness) is √(6/5) times LIGGGHTS' Hertz dashpot; use 'tsuji', "

@@ -2,6 +2,7 @@
 #include "reference/liggghts/deck_writer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -36,6 +37,16 @@ std::string particle_types(const AtomTypes& types, bool fixed) {
     if (types.particles[t].fixed == fixed) out += fmt::format("{}{}", out.empty() ? "" : " ", t + 1);
   }
   return out;
+}
+
+/// The groups of mobile and of frozen particles.
+void write_groups(std::string& deck, const AtomTypes& types) {
+  if (const std::string mobile = particle_types(types, false); !mobile.empty()) {
+    line(deck, "group", "tr_mobile type " + mobile);
+  }
+  if (const std::string fixed = particle_types(types, true); !fixed.empty()) {
+    line(deck, "group", "tr_fixed type " + fixed);
+  }
 }
 
 /// The model words of pair_style gran and fix wall/gran.
@@ -92,16 +103,33 @@ void write_header(std::string& deck, const cases::Scene& scene, const ContactSet
 
 void write_box_and_properties(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
                               const ContactSettings& c, const DeckSettings& s) {
-  const auto [lo, hi] = simulation_box(scene, static_cast<double>(s.steps) * s.timestep);
-  line(deck, "region", fmt::format("tr_box block {} {} {} {} {} {} units box", num(lo[0]), num(hi[0]), num(lo[1]),
-                                   num(hi[1]), num(lo[2]), num(hi[2])));
-  line(deck, "create_box", fmt::format("{} tr_box", types.count()));
-  deck += "# atom types: one per (material, radius, fixed) particle class, then one per wall material\n";
+  if (atoms_in_data_file(scene)) {
+    deck += fmt::format("# {} atoms (more than {}): box, types, diameters, densities, positions and velocities come "
+                        "from the data file\n",
+                        scene.particles.size(), kMaxInlineAtoms);
+    line(deck, "read_data", s.data_file);
+  } else {
+    const auto [lo, hi] = simulation_box(scene, static_cast<double>(s.steps) * s.timestep);
+    line(deck, "region", fmt::format("tr_box block {} {} {} {} {} {} units box", num(lo[0]), num(hi[0]), num(lo[1]),
+                                     num(hi[1]), num(lo[2]), num(hi[2])));
+    line(deck, "create_box", fmt::format("{} tr_box", types.count()));
+  }
+  deck += types.per_atom_diameter
+              ? fmt::format("# atom types: more than {} (material, radius) classes, so one per (material, fixed) "
+                            "class with diameters per atom, then one per wall material\n",
+                            kMaxParticleTypes)
+              : std::string("# atom types: one per (material, radius, fixed) particle class, then one per wall "
+                            "material\n");
   for (std::size_t t = 0; t < types.particles.size(); ++t) {
     const ParticleType& p = types.particles[t];
-    deck += fmt::format("#   type {}: material '{}', r = {} m, {}, m = {} kg\n", t + 1,
-                        deck_comment_text(scene.materials.at(p.material).name), num(p.radius), p.fixed ? "frozen" : "mobile",
-                        num(p.mass));
+    if (types.per_atom_diameter) {
+      deck += fmt::format("#   type {}: material '{}', {}\n", t + 1, deck_comment_text(scene.materials.at(p.material).name),
+                          p.fixed ? "frozen" : "mobile");
+    } else {
+      deck += fmt::format("#   type {}: material '{}', r = {} m, {}, m = {} kg\n", t + 1,
+                          deck_comment_text(scene.materials.at(p.material).name), num(p.radius),
+                          p.fixed ? "frozen" : "mobile", num(p.mass));
+    }
   }
   for (std::size_t w = 0; w < types.wall_materials.size(); ++w) {
     const dem::MaterialProperties& m = scene.materials.at(types.wall_materials[w]);
@@ -136,6 +164,10 @@ void write_box_and_properties(std::string& deck, const cases::Scene& scene, cons
 }
 
 void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& types) {
+  if (atoms_in_data_file(scene)) {
+    write_groups(deck, types);
+    return;
+  }
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const cases::ParticleSpec& p = scene.particles[i];
     line(deck, "create_atoms", fmt::format("{} single {} {} {} units box  # particle {} = atom {}",
@@ -155,12 +187,7 @@ void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& 
                                   num(p.angular_velocity[0]), num(p.angular_velocity[1]),
                                   num(p.angular_velocity[2])));
   }
-  if (const std::string mobile = particle_types(types, false); !mobile.empty()) {
-    line(deck, "group", "tr_mobile type " + mobile);
-  }
-  if (const std::string fixed = particle_types(types, true); !fixed.empty()) {
-    line(deck, "group", "tr_fixed type " + fixed);
-  }
+  write_groups(deck, types);
 }
 
 void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& types, const ContactSettings& c,
@@ -231,6 +258,30 @@ std::string write_deck(const cases::Scene& scene, const AtomTypes& types, const 
   write_outputs(deck, scene, plan, settings);
   line(deck, "run", fmt::format("{}", settings.steps));
   return deck;
+}
+
+std::string write_atom_data(const cases::Scene& scene, const AtomTypes& types, const DeckSettings& settings) {
+  const auto [lo, hi] = simulation_box(scene, static_cast<double>(settings.steps) * settings.timestep);
+  std::string out = fmt::format("dem-workbench atoms of case '{}' (generated, do not edit)\n\n{} atoms\n{} atom types\n\n",
+                                deck_comment_text(scene.name), scene.particles.size(), types.count());
+  constexpr std::array<std::string_view, 3> kAxes{"x", "y", "z"};
+  for (std::size_t k = 0; k < 3; ++k) out += fmt::format("{} {} {}lo {}hi\n", num(lo[k]), num(hi[k]), kAxes[k], kAxes[k]);
+  out += "\nAtoms\n\n";
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, types.particle_type(i), num(2.0 * p.radius),
+                       num(scene.materials.at(p.material).density), num(p.position[0]), num(p.position[1]),
+                       num(p.position[2]));
+  }
+  out += "\nVelocities\n\n";
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const cases::ParticleSpec& p = scene.particles[i];
+    const cases::Vector3 zero{};
+    const cases::Vector3& v = p.fixed ? zero : p.velocity;
+    const cases::Vector3& w = p.fixed ? zero : p.angular_velocity;
+    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, num(v[0]), num(v[1]), num(v[2]), num(w[0]), num(w[1]), num(w[2]));
+  }
+  return out;
 }
 
 }  // namespace reference::liggghts

@@ -15,11 +15,16 @@ struct DeckSettings {
   double timestep = 0.0;                         ///< Δt [s], the core's
   std::uint64_t steps = 0;                       ///< steps to run
   std::string snapshot_file = "snapshots.dump";  ///< dump custom output
+  std::string data_file = "atoms.data";          ///< atoms of a large scene (atoms_in_data_file), read by `read_data`
 };
 
 /// The whole LIGGGHTS deck: a pure function of the scene, its contact settings, trace plan and
 /// the settings (docs/engines.md, "LIGGGHTS").
 std::string write_deck(const cases::Scene& scene, const AtomTypes& types, const ContactSettings& contacts,
                        const TracePlan& plan, const DeckSettings& settings);
+
+/// The data file of a large scene (atoms_in_data_file): the box, `Atoms` (id type diameter
+/// density x y z) and `Velocities` (id vx vy vz ωx ωy ωz; zero for frozen particles).
+std::string write_atom_data(const cases::Scene& scene, const AtomTypes& types, const DeckSettings& settings);
 
 }  // namespace reference::liggghts

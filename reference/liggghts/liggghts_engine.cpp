@@ -24,9 +24,6 @@
 namespace reference {
 namespace {
 
-/// Largest particle count the deck writes atom by atom (many-body scenes are not mapped yet).
-constexpr std::size_t kMaxAtoms = 100;
-
 /// Everything the deck is made of, or the reasons it cannot be written.
 struct DeckParts {
   liggghts::AtomTypes types;
@@ -47,11 +44,6 @@ DeckParts deck_parts(const PreparedScene& prepared) {
     reasons.push_back(fmt::format("LIGGGHTS driver: mesh '{}' is not mapped yet (fix mesh/surface + fix wall/gran "
                                   "mesh is LIGGGHTS' own)",
                                   mesh.name));
-  }
-  if (scene.particles.size() > kMaxAtoms) {
-    reasons.push_back(fmt::format("LIGGGHTS driver: {} particles: many-body decks (a data file, one type per "
-                                  "material) are not written yet; at most {} particles",
-                                  scene.particles.size(), kMaxAtoms));
   }
   if (scene.domain.any_periodic()) {
     reasons.emplace_back("LIGGGHTS driver: periodic boundaries are not mapped yet (the trace formulas read "
@@ -111,7 +103,11 @@ std::string LiggghtsEngine::input_fingerprint(const PreparedScene& prepared) con
     settings.timestep = core_setup(prepared).simulation.timestep;
     settings.steps = cases::step_count(scene.integration.duration, settings.timestep);
     const liggghts::TracePlan plan = liggghts::trace_plan(scene, parts.types);
-    return support::sha256_hex(liggghts::write_deck(scene, parts.types, *parts.contacts, plan, settings));
+    std::string input = liggghts::write_deck(scene, parts.types, *parts.contacts, plan, settings);
+    if (liggghts::atoms_in_data_file(scene)) {
+      input += "\n--- data file ---\n" + liggghts::write_atom_data(scene, parts.types, settings);
+    }
+    return support::sha256_hex(input);
   } catch (const std::exception&) {
     return {};  // the run reports why the deck cannot be written
   }
@@ -143,6 +139,9 @@ cases::RunResult LiggghtsEngine::run(const PreparedScene& prepared, const RunOpt
   const std::filesystem::path dir = liggghts::make_run_directory(options.work_dir);
   const support::OwnedPathGuard partial(dir);  // removed if interrupted mid-run
   support::write_file(dir / liggghts::kDeckFile, deck);
+  if (liggghts::atoms_in_data_file(scene)) {
+    support::write_file(dir / settings.data_file, liggghts::write_atom_data(scene, parts.types, settings));
+  }
   const liggghts::LiggghtsRunOutcome outcome = liggghts::run_liggghts(options_.program, dir, time_left);
   if (!outcome.ok) return error_result(outcome.reason, outcome.log_tail);
 

@@ -261,6 +261,49 @@ TEST(LiggghtsDeck, WritesWhatThisLiggghtsAcceptsInFullPrecision) {
   EXPECT_EQ(plan.columns[1 + 12 + 9].formula, "f_tr_pair_force[2][1]");
 }
 
+TEST(LiggghtsDeck, ManySpheresOfManySizesComeFromADataFileWithDiametersPerAtom) {
+  // 120 mobile spheres of 20 radii and one frozen: more than 100 atoms, more than 16 classes.
+  std::string text = case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0), true);
+  for (int k = 0; k < 120; ++k) {
+    text += fmt::format("[[particles]]\nradius = {:.17g}\nmaterial = \"steel\"\nposition = [{:.17g}, 0.05, 0.0]\n"
+                        "velocity = [0.0, 0.0, -0.1]\n",
+                        0.001 + 1e-5 * (k % 20), 0.01 * k);
+  }
+  const cases::Scene scene = scene_of(text);
+  const AtomTypes types = classify(scene);
+  ASSERT_TRUE(types.per_atom_diameter);
+  ASSERT_EQ(types.particles.size(), 2u);  // (steel, mobile), (glass, frozen)
+  ASSERT_TRUE(atoms_in_data_file(scene));
+  const ContactMapping m = mapping_of(scene);
+  ASSERT_TRUE(m.settings.has_value()) << m.reasons.front();
+  DeckSettings settings;
+  settings.timestep = 1e-6;
+  settings.steps = 10;
+  const std::string deck = write_deck(scene, types, *m.settings, trace_plan(scene, types), settings);
+  EXPECT_NE(deck.find("read_data       atoms.data"), std::string::npos);
+  EXPECT_EQ(deck.find("create_atoms"), std::string::npos);
+  const std::string data = write_atom_data(scene, types, settings);
+  EXPECT_NE(data.find("122 atoms\n3 atom types\n"), std::string::npos);
+  // Atom k + 1: its type, diameter, density and position exactly; the frozen sphere does not move.
+  EXPECT_NE(data.find("\n3 1 0.002 7800 0 0.050000000000000003 0\n"), std::string::npos) << data.substr(0, 600);
+  const double r119 = 0.001 + 1e-5 * 19;  // the last sphere, as the case gives it
+  EXPECT_NE(data.find(fmt::format("\n122 1 {:.17g} 7800 {:.17g} 0.050000000000000003 0\n", 2.0 * r119, 0.01 * 119)),
+            std::string::npos);
+  EXPECT_NE(data.find("\n2 0 0 0 0 0 0\n"), std::string::npos);
+  EXPECT_NE(data.find("\n3 0 0 -0.10000000000000001 0 0 0\n"), std::string::npos);
+  // A dashpot in kg/s per type pair cannot be written when m* varies within a type.
+  const std::string linear = "normal = \"linear\"\ndamping = \"restitution\"";
+  std::string many_linear = text;
+  many_linear.replace(many_linear.find(kHertzModel), kHertzModel.size(), linear);
+  for (const char* key : {"steel", "glass"}) {
+    many_linear.replace(many_linear.find(fmt::format("[materials.{}]\n", key)), std::string(key).size() + 13,
+                        fmt::format("[materials.{}]\nnormal_stiffness = 1e4\n", key));
+  }
+  const ContactMapping refused = mapping_of(scene_of(many_linear));
+  ASSERT_FALSE(refused.reasons.empty());
+  EXPECT_NE(refused.reasons.front().find("one m* per type pair"), std::string::npos) << refused.reasons.front();
+}
+
 /// A log holding a thermo table of `plan`'s columns at steps 0, 10, …, `last`.
 std::string thermo_log(std::size_t columns, std::uint64_t last, std::uint64_t every, const std::string& extra = "") {
   std::string log = "LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0, compiled …)\nSetting up run\n    Step";
