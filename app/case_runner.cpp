@@ -18,11 +18,13 @@
 namespace app {
 namespace {
 
-/// The source revision of reference code `name`'s driver (part of its cache key).
-const char* driver_revision(std::string_view name) noexcept {
+/// The source revision of reference code `name`'s driver (part of its cache key); throws for a
+/// name that is no reference code (a new driver must get its own revision).
+const char* driver_revision(std::string_view name) {
   if (name == "lammps") return kLammpsDriverRevision;
   if (name == "liggghts") return kLiggghtsDriverRevision;
-  return kYadeDriverRevision;
+  if (name == "yade") return kYadeDriverRevision;
+  throw std::logic_error("no driver revision for reference code '" + std::string(name) + "'");
 }
 
 /// Why a reference code's result is taken from its committed baseline.

@@ -126,6 +126,9 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
   if (s.model.tangential_history != dem::TangentialHistory::project_rescale) {
     j["model"]["tangential_history"] = std::string(dem::to_string(s.model.tangential_history));
   }
+  if (s.model.coulomb_test != dem::CoulombTest::total) {  // only when set: older scenes keep their fingerprints
+    j["model"]["coulomb_test"] = std::string(dem::to_string(s.model.coulomb_test));
+  }
   Json particles = Json::array();
   for (const auto& p : s.particles) particles.push_back(particle_json(p));
   j["particles"] = particles;

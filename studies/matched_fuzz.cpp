@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MIT
 #include "studies/matched_fuzz.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -11,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/catalogue.hpp"
 #include "dem/contact/registry.hpp"
 
 namespace studies {
@@ -103,7 +103,7 @@ FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed) { retu
 namespace {
 
 FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
-  if (code != "lammps" && code != "yade" && code != "liggghts") {
+  if (!cases::is_reference_code(code)) {
     throw std::invalid_argument(fmt::format("unknown reference code '{}' (known: lammps, yade, liggghts)", code));
   }
   std::uint64_t mixed = seed;

@@ -64,6 +64,10 @@ constexpr std::array<std::pair<MindlinForm, std::string_view>, 2> kMindlinForm{{
     {MindlinForm::total, "total"},
     {MindlinForm::incremental, "incremental"},
 }};
+constexpr std::array<std::pair<CoulombTest, std::string_view>, 2> kCoulombTest{{
+    {CoulombTest::total, "total"},
+    {CoulombTest::spring, "spring"},
+}};
 constexpr std::array<std::pair<AdhesiveDashpot, std::string_view>, 2> kAdhesiveDashpot{{
     {AdhesiveDashpot::clamp, "clamp"},
     {AdhesiveDashpot::pulloff_cap, "pulloff_cap"},
@@ -89,6 +93,8 @@ std::string_view to_string(UnloadedSlider p) noexcept { return name_of(kUnloaded
 std::optional<UnloadedSlider> parse_unloaded_slider(std::string_view k) noexcept { return value_of(kUnloaded, k); }
 std::string_view to_string(MindlinForm p) noexcept { return name_of(kMindlinForm, p); }
 std::optional<MindlinForm> parse_mindlin_form(std::string_view k) noexcept { return value_of(kMindlinForm, k); }
+std::string_view to_string(CoulombTest p) noexcept { return name_of(kCoulombTest, p); }
+std::optional<CoulombTest> parse_coulomb_test(std::string_view k) noexcept { return value_of(kCoulombTest, k); }
 std::string_view to_string(AdhesiveDashpot p) noexcept { return name_of(kAdhesiveDashpot, p); }
 std::optional<AdhesiveDashpot> parse_adhesive_dashpot(std::string_view k) noexcept {
   return value_of(kAdhesiveDashpot, k);

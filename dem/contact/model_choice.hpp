@@ -80,6 +80,13 @@ enum class MindlinForm {
   incremental,  ///< F = F_old − k_t(a) Δς: each increment at the stiffness of its step (YADE Law2_ScGeom_MindlinPhys_Mindlin)
 };
 
+/// What a tangential spring–dashpot–slider tests against its Coulomb limit μ·basis
+/// (docs/physics-tangential.md, "Coulomb test").
+enum class CoulombTest {
+  total,   ///< the whole trial force −k ς − η_t u_t, capped to the limit (Cundall–Strack; LAMMPS) (default)
+  spring,  ///< the spring alone, k|ς| against the limit: sliding, the spring force is scaled to it and the dashpot dropped; stuck, the dashpot is added uncapped (LIGGGHTS tangential history)
+};
+
 /// How the normal dashpot is limited while a cohesion law with a pull-off force F_po > 0 (DMT)
 /// acts (docs/physics-cohesion.md, "Dashpot under adhesion").
 enum class AdhesiveDashpot {
@@ -105,6 +112,7 @@ struct ModelChoice {
   UnloadedSlider unloaded_slider = UnloadedSlider::cap;
   AdhesiveDashpot adhesive_dashpot = AdhesiveDashpot::clamp;
   MindlinForm mindlin_form = MindlinForm::total;
+  CoulombTest coulomb_test = CoulombTest::total;
   /// Bodies exactly touching (δ = 0) are in contact, so the dashpot and friction act there
   /// (YADE's Ig2/Law2 keep δ ≥ 0); default false: contact needs δ > 0. Set by matched runs only.
   bool contact_at_zero_overlap = false;
@@ -142,6 +150,10 @@ std::optional<UnloadedSlider> parse_unloaded_slider(std::string_view keyword) no
 std::string_view to_string(MindlinForm p) noexcept;
 /// Mindlin-form policy named `keyword`, or empty.
 std::optional<MindlinForm> parse_mindlin_form(std::string_view keyword) noexcept;
+/// Case-file keyword of a Coulomb-test policy ("total", "spring").
+std::string_view to_string(CoulombTest p) noexcept;
+/// Coulomb-test policy named `keyword`, or empty.
+std::optional<CoulombTest> parse_coulomb_test(std::string_view keyword) noexcept;
 /// Case-file keyword of an adhesive-dashpot policy.
 std::string_view to_string(AdhesiveDashpot p) noexcept;
 /// Adhesive-dashpot policy named `keyword`, or empty.

@@ -51,6 +51,9 @@ AtomTypes classify_particles(const cases::Scene& scene) {
   return coarse;
 }
 
-bool atoms_in_data_file(const cases::Scene& scene) { return scene.particles.size() > kMaxInlineAtoms; }
+bool atoms_in_data_file(const cases::Scene& scene) {
+  // Diameters per atom go in the data file: `set type … diameter` would give a type one diameter.
+  return scene.particles.size() > kMaxInlineAtoms || classify_particles(scene).per_atom_diameter;
+}
 
 }  // namespace reference::lammps

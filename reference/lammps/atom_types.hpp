@@ -48,7 +48,8 @@ struct AtomTypes {
 /// Sorts the scene's particles into atom types (pure; the order is deterministic).
 AtomTypes classify_particles(const cases::Scene& scene);
 
-/// True when the deck reads its atoms from a data file (more than kMaxInlineAtoms particles).
+/// True when the deck reads its atoms from a data file: more than kMaxInlineAtoms particles, or
+/// more than kMaxAtomTypes classes (diameters per atom).
 bool atoms_in_data_file(const cases::Scene& scene);
 
 }  // namespace reference::lammps

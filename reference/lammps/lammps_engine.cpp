@@ -8,24 +8,24 @@
 
 #include <fmt/format.h>
 
+#include "cases/time_step.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "dem/core/model_error.hpp"
 #include "reference/common/core_setup.hpp"
+#include "reference/common/dump_snapshots.hpp"
+#include "reference/common/dump_text.hpp"
+#include "reference/common/fix_print_table.hpp"
 #include "reference/lammps/atom_types.hpp"
 #include "reference/lammps/deck_writer.hpp"
-#include "reference/common/dump_text.hpp"
 #include "reference/lammps/lammps_runner.hpp"
 #include "reference/lammps/pair_coeff_mapping.hpp"
-#include "reference/common/fix_print_table.hpp"
 #include "reference/lammps/run_conventions.hpp"
-#include "reference/common/dump_snapshots.hpp"
 #include "reference/lammps/trace_columns.hpp"
 #include "reference/lammps/wall_mapping.hpp"
 #include "support/interrupts.hpp"
 #include "support/process.hpp"
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
-#include "cases/time_step.hpp"
 
 namespace reference {
 
@@ -65,6 +65,11 @@ Support LammpsEngine::supports(const PreparedScene& prepared) const {
     s.reasons.emplace_back(
         "LAMMPS driver: tangential_history = 'increment_project' is gran/hooke/history's rule; the "
         "driver writes pair granular, which rotates and rescales the slip (project_rescale)");
+  }
+  if (scene.model.coulomb_test == dem::CoulombTest::spring && scene.model.tangential != "none") {
+    s.reasons.emplace_back(
+        "LAMMPS driver: coulomb_test = 'spring' is LIGGGHTS' rule; pair granular caps the spring and dashpot "
+        "force together (coulomb_test = 'total')");
   }
   if (scene.model.pair_lever_arm == dem::PairLeverArm::yade_incident ||
       scene.model.wall_lever_arm == dem::WallLeverArm::yade_incident ||

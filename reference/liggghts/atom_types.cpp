@@ -15,6 +15,7 @@ std::size_t AtomTypes::material_of(std::size_t t) const {
 }
 
 std::optional<double> AtomTypes::reduced_mass(std::size_t a, std::size_t b) const {
+  if (per_atom_diameter) return std::nullopt;
   const auto mobile_mass = [&](std::size_t t) -> std::optional<double> {
     if (t < 1 || t > particles.size() || particles[t - 1].fixed) return std::nullopt;
     return particles[t - 1].mass;

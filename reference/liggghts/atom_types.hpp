@@ -45,8 +45,8 @@ struct AtomTypes {
   [[nodiscard]] std::size_t material_of(std::size_t t) const;
   /// Reduced mass of a contact between types a and b (1-based), as LIGGGHTS takes it: m_a m_b /
   /// (m_a + m_b), the mobile mass against a frozen particle, the particle's mass against a wall
-  /// type; empty when neither is a mobile particle. Meaningless when per_atom_diameter (the
-  /// masses are 0 there): callers needing m* refuse such scenes.
+  /// type; empty when neither is a mobile particle, and with per_atom_diameter (no one mass per
+  /// type).
   [[nodiscard]] std::optional<double> reduced_mass(std::size_t a, std::size_t b) const;
 };
 
@@ -55,9 +55,10 @@ struct AtomTypes {
 /// deterministic).
 AtomTypes classify(const cases::Scene& scene);
 
-/// True when the deck reads its atoms from a data file (more than kMaxInlineAtoms particles).
-[[nodiscard]] inline bool atoms_in_data_file(const cases::Scene& scene) noexcept {
-  return scene.particles.size() > kMaxInlineAtoms;
+/// True when the deck reads its atoms from a data file: more than kMaxInlineAtoms particles, or
+/// diameters per atom (`set type` would give a whole type one diameter).
+[[nodiscard]] inline bool atoms_in_data_file(const cases::Scene& scene, const AtomTypes& types) noexcept {
+  return scene.particles.size() > kMaxInlineAtoms || types.per_atom_diameter;
 }
 
 }  // namespace reference::liggghts

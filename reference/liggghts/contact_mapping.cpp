@@ -15,18 +15,24 @@ namespace {
 
 /// Relative agreement demanded between the core's pair value and what LIGGGHTS mixes.
 constexpr double kMixTolerance = 1e-12;
+/// Relative agreement demanded between a case's tangential_damping_ratio and LIGGGHTS' own
+/// 2 √(G*/E*): a ratio typed with ten digits maps.
+constexpr double kRatioTolerance = 1e-9;
 
+/// True when a and b agree to kMixTolerance.
 bool close(double a, double b) noexcept {
   return std::abs(a - b) <= kMixTolerance * std::max(std::abs(a), std::abs(b));
 }
 
+/// Appends `reason` unless it is already listed.
 void add_reason(std::vector<std::string>& reasons, std::string reason) {
   if (std::find(reasons.begin(), reasons.end(), reason) == reasons.end()) reasons.push_back(std::move(reason));
 }
 
 /// True when types a and b (1-based) can touch: at least one is a mobile particle.
 bool can_meet(const AtomTypes& types, std::size_t a, std::size_t b) {
-  return types.reduced_mass(a, b).has_value();
+  const auto mobile = [&](std::size_t t) { return t >= 1 && t <= types.particles.size() && !types.particles[t - 1].fixed; };
+  return mobile(a) || mobile(b);
 }
 
 /// Young's modulus and Poisson ratio of type t for `model hertz`, or the reason there are none.
@@ -116,6 +122,11 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
                                         scene.materials.at(material).name));
         continue;
       }
+      if (!(yn->second >= 0.0 && yn->second <= 0.5)) {
+        add_reason(reasons, fmt::format("LIGGGHTS driver: material '{}': Poisson ratio {} is outside LIGGGHTS' "
+                                        "[0, 0.5]",
+                                        scene.materials.at(material).name, yn->second));
+      }
       s.youngs_modulus[t - 1] = yn->first;
       s.poisson_ratio[t - 1] = yn->second;
       if (yn->first > 1e9) s.hard_particles = true;
@@ -136,7 +147,8 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
       const std::size_t ma = types.material_of(a);
       const std::size_t mb = types.material_of(b);
       const dem::PairLaw& law = table.law(ma, mb);
-      const double m_star = *types.reduced_mass(a, b);
+      // No single m* with diameters per atom: the one dashpot that needs it is refused below.
+      const double m_star = types.reduced_mass(a, b).value_or(0.0);
       const std::string pair = fmt::format("types {}-{} ('{}'-'{}')", a, b, scene.materials.at(ma).name,
                                            scene.materials.at(mb).name);
       double e = 1.0, mu = 0.0, kn = 0.0, kt = 0.0, gn = 0.0, ratio = 0.0;
@@ -175,7 +187,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
               }
             } else if constexpr (std::is_same_v<D, dem::RestitutionDamping>) {
               if (types.per_atom_diameter && !hertz) {
-                add_reason(reasons, fmt::format("LIGGGHTS driver: more than {} (material, radius) classes: the "
+                add_reason(reasons, fmt::format("LIGGGHTS driver: more than {} (material, radius, fixed) classes: the "
                                                 "restitution dashpot β √(m* k) of hooke/stiffness needs one m* per "
                                                 "type pair",
                                                 kMaxParticleTypes));
@@ -230,7 +242,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
             const double implied = 2.0 * std::sqrt(mindlin->p.shear_modulus / normal->effective_modulus);
             if (ratio == 0.0) {
               want_tangential_dashpot(false, "some pairs have a tangential dashpot and some none");
-            } else if (close(ratio, implied) || std::abs(ratio - implied) <= 1e-9 * implied) {
+            } else if (std::abs(ratio - implied) <= kRatioTolerance * implied) {
               want_tangential_dashpot(true, "some pairs have a tangential dashpot and some none");
             } else {
               add_reason(reasons, fmt::format("LIGGGHTS driver: {}: tangential_damping_ratio {} is not LIGGGHTS' "

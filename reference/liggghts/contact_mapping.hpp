@@ -27,13 +27,12 @@ struct ContactSettings {
   std::vector<double> friction;         ///< per type pair
   std::vector<double> kn, kt;           ///< per type pair (hooke/stiffness) [N/m]
   std::vector<double> gamman, gammat;   ///< per type pair (hooke/stiffness, absolute) [kg/s]
-  std::vector<std::string> notes;       ///< deck comments saying how each value came about
 };
 
 /// The settings, or every reason the scene's contact model has no LIGGGHTS counterpart.
 struct ContactMapping {
-  std::optional<ContactSettings> settings;
-  std::vector<std::string> reasons;
+  std::optional<ContactSettings> settings;  ///< what the deck declares, when every reason is absent
+  std::vector<std::string> reasons;         ///< one per thing LIGGGHTS cannot express, "LIGGGHTS driver: …"
 };
 
 /// Young's modulus written for a rigid wall's type: LIGGGHTS mixes a wall like a particle, and

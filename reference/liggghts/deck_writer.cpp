@@ -60,7 +60,8 @@ std::string model_settings(const ContactSettings& c) {
   return out;
 }
 
-/// A box holding every trajectory: the bodies' bounding box widened by 2 v_max T + |g| T² + 2 r_max
+/// A box holding every trajectory: the bodies' bounding box widened along each axis k by
+/// 2 v_max T + |g_k| T² + 2 r_max, and ended 2 r_max beyond a resting plane wall across that axis
 /// (atoms leaving it stop the run: `thermo_modify lost error`).
 std::pair<cases::Vector3, cases::Vector3> simulation_box(const cases::Scene& scene, double duration) {
   cases::Vector3 lo{}, hi{};
@@ -78,16 +79,26 @@ std::pair<cases::Vector3, cases::Vector3> simulation_box(const cases::Scene& sce
                                       p.velocity[2] * p.velocity[2]));
     r_max = std::max(r_max, p.radius);
   }
-  const cases::Vector3& g = scene.gravity;
-  const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-  const double margin = 2.0 * v_max * duration + g_norm * duration * duration + 2.0 * std::max(r_max, 1e-9);
+  const double skin = 2.0 * std::max(r_max, 1e-9);
   for (std::size_t k = 0; k < 3; ++k) {
+    const double margin = 2.0 * v_max * duration + std::abs(scene.gravity[k]) * duration * duration + skin;
     lo[k] -= margin;
     hi[k] += margin;
+  }
+  for (const cases::WallSpec& wall : scene.walls) {
+    const std::optional<WallPlane> plane = wall_plane(wall);
+    if (!plane || !wall_in_run(wall)) continue;
+    const auto k = static_cast<std::size_t>(plane->axis);
+    if (plane->sign > 0.0) {
+      lo[k] = std::max(lo[k], std::min(plane->position, hi[k]) - skin);
+    } else {
+      hi[k] = std::min(hi[k], std::max(plane->position, lo[k]) + skin);
+    }
   }
   return {lo, hi};
 }
 
+/// Units, atom style, newton, ghost velocities and the sanity-limit switches.
 void write_header(std::string& deck, const cases::Scene& scene, const ContactSettings& c, const DeckSettings& s) {
   deck += fmt::format("# dem-workbench LIGGGHTS deck for case '{}' (generated, do not edit)\n", deck_comment_text(scene.name));
   deck += fmt::format("# {} steps of {} s; written for LIGGGHTS-PUBLIC 3.8.0\n", s.steps, num(s.timestep));
@@ -101,9 +112,11 @@ void write_header(std::string& deck, const cases::Scene& scene, const ContactSet
   if (c.soft_particles) line(deck, "soft_particles", "yes  # a Young's modulus below 5e6 Pa");
 }
 
+/// The box (or the data file), the atom types' comments, the property tables, pair_style gran and
+/// the neighbour settings.
 void write_box_and_properties(std::string& deck, const cases::Scene& scene, const AtomTypes& types,
                               const ContactSettings& c, const DeckSettings& s) {
-  if (atoms_in_data_file(scene)) {
+  if (atoms_in_data_file(scene, types)) {
     deck += fmt::format("# {} atoms (more than {}): box, types, diameters, densities, positions and velocities come "
                         "from the data file\n",
                         scene.particles.size(), kMaxInlineAtoms);
@@ -136,7 +149,6 @@ void write_box_and_properties(std::string& deck, const cases::Scene& scene, cons
     deck += fmt::format("#   type {}: wall material '{}'{}\n", types.particles.size() + w + 1, deck_comment_text(m.name),
                         m.rigid ? " (rigid: E = 1e300 Pa)" : "");
   }
-  for (const std::string& note : c.notes) deck += "# " + deck_comment_text(note) + "\n";
   const std::size_t n = types.count();
   const auto table = [&](std::string_view id, std::string_view property, const std::vector<double>& v) {
     line(deck, "fix", fmt::format("{} all property/global {} peratomtypepair {} {}", id, property, n, values(v)));
@@ -163,8 +175,9 @@ void write_box_and_properties(std::string& deck, const cases::Scene& scene, cons
   line(deck, "neigh_modify", "delay 0 contact_distance_factor 1.1  # a separating pair forgets its slip");
 }
 
+/// The atoms inline (create_atoms, set) or nothing beyond the groups when a data file holds them.
 void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& types) {
-  if (atoms_in_data_file(scene)) {
+  if (atoms_in_data_file(scene, types)) {
     write_groups(deck, types);
     return;
   }
@@ -190,19 +203,29 @@ void write_atoms(std::string& deck, const cases::Scene& scene, const AtomTypes& 
   write_groups(deck, types);
 }
 
+/// Frozen pairs excluded, the pair-force store, walls, gravity, integration, freeze (in that order)
+/// and the time step.
 void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& types, const ContactSettings& c,
                  const DeckSettings& s) {
+  const bool any_mobile = !particle_types(types, false).empty();
+  if (!particle_types(types, true).empty()) {
+    line(deck, "neigh_modify", "exclude group tr_fixed tr_fixed  # as the core: two frozen spheres never interact");
+  }
   deck += "# the pair forces alone, stored before walls and gravity add theirs and freeze zeroes them\n";
   line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
-  for (std::size_t w = 0; w < scene.walls.size(); ++w) {
+  for (std::size_t w = 0; w < scene.walls.size() && any_mobile; ++w) {
     const std::optional<WallPlane> plane = wall_plane(scene.walls[w]);
     if (!plane) continue;  // supports() reports it
+    if (!wall_in_run(scene.walls[w])) {
+      deck += fmt::format("# wall {} ('{}') is removed at t <= 0: only the preparation met it\n", w,
+                          deck_comment_text(scene.walls[w].name));
+      continue;
+    }
     deck += fmt::format("# wall {} ('{}'): a two-sided primitive plane of type {}; its force on each atom is stored\n",
                         w, deck_comment_text(scene.walls[w].name), types.wall_type(w));
-    line(deck, "fix", fmt::format("{} all wall/gran {} primitive type {} {} store_force yes{}", wall_fix_id(w),
+    line(deck, "fix", fmt::format("{} tr_mobile wall/gran {} primitive type {} {} store_force yes{}", wall_fix_id(w),
                                   model_words(c), types.wall_type(w), plane_arguments(*plane), model_settings(c)));
   }
-  const bool any_mobile = !particle_types(types, false).empty();
   const cases::Vector3& g = scene.gravity;
   const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   if (any_mobile && g_norm > 0.0) {
@@ -220,6 +243,7 @@ void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& 
   line(deck, "timestep", num(s.timestep));
 }
 
+/// The trace's computes, variables and thermo settings, and the snapshot dump.
 void write_outputs(std::string& deck, const cases::Scene& scene, const TracePlan& plan, const DeckSettings& s) {
   for (const std::string& command : plan.commands) {
     const auto space = command.find(' ');

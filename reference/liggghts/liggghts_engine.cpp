@@ -104,7 +104,7 @@ std::string LiggghtsEngine::input_fingerprint(const PreparedScene& prepared) con
     settings.steps = cases::step_count(scene.integration.duration, settings.timestep);
     const liggghts::TracePlan plan = liggghts::trace_plan(scene, parts.types);
     std::string input = liggghts::write_deck(scene, parts.types, *parts.contacts, plan, settings);
-    if (liggghts::atoms_in_data_file(scene)) {
+    if (liggghts::atoms_in_data_file(scene, parts.types)) {
       input += "\n--- data file ---\n" + liggghts::write_atom_data(scene, parts.types, settings);
     }
     return support::sha256_hex(input);
@@ -139,7 +139,7 @@ cases::RunResult LiggghtsEngine::run(const PreparedScene& prepared, const RunOpt
   const std::filesystem::path dir = liggghts::make_run_directory(options.work_dir);
   const support::OwnedPathGuard partial(dir);  // removed if interrupted mid-run
   support::write_file(dir / liggghts::kDeckFile, deck);
-  if (liggghts::atoms_in_data_file(scene)) {
+  if (liggghts::atoms_in_data_file(scene, parts.types)) {
     support::write_file(dir / settings.data_file, liggghts::write_atom_data(scene, parts.types, settings));
   }
   const liggghts::LiggghtsRunOutcome outcome = liggghts::run_liggghts(options_.program, dir, time_left);
@@ -150,14 +150,10 @@ cases::RunResult LiggghtsEngine::run(const PreparedScene& prepared, const RunOpt
     const std::filesystem::path log_path = dir / liggghts::kLogFile;
     const cases::Trace printed = liggghts::trace_from_thermo(scene, plan, support::read_file(log_path),
                                                              log_path.string(), settings.steps);
-    // The trace in the column order every engine shares (the plan wrote it in that order).
-    result.trace = cases::trace_layout(scene);
-    std::vector<double> row(printed.columns().size());
-    for (std::size_t r = 0; r < printed.rows(); ++r) {
-      for (std::size_t c = 0; c < row.size(); ++c) row[c] = printed.values(c)[r];
-      result.trace.append_row(row);
-    }
+    liggghts::AssembledTrace assembled = liggghts::assemble_trace(scene, printed);
+    result.trace = std::move(assembled.trace);
     result.warnings = setup.warnings;
+    for (auto& w : assembled.warnings) result.warnings.push_back(std::move(w));
     const std::vector<std::uint64_t> snapshot_steps =
         cases::snapshot_steps(scene.output.snapshot_times, settings.timestep, settings.steps);
     if (!snapshot_steps.empty()) {

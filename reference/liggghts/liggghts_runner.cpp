@@ -1,23 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "reference/liggghts/liggghts_runner.hpp"
 
-#include <cerrno>
-#include <cstdlib>
 #include <cstring>
-#include <map>
-#include <stdexcept>
-#include <system_error>
 
 #include <fmt/format.h>
 
 #include "reference/common/banner_probe.hpp"
 #include "reference/common/log_lines.hpp"
 #include "reference/common/run_directory.hpp"
-#include "support/interrupts.hpp"
 #include "support/process.hpp"
 #include "support/text_file.hpp"
 #include "support/text_tokens.hpp"
-#include "support/utf8.hpp"
 
 namespace reference::liggghts {
 namespace {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "reference/liggghts/run_conventions.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace reference::liggghts {
@@ -28,7 +30,16 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, co
         "k_n, k_t per type pair; absolute_damping on: γ_n = the core's η per type pair (β(ε) √(m* k_n) for "
         "'restitution', m* of the type pair), γ_t = tangential_damping_ratio · γ_n";
   }
-  c["frozen particles"] = "fix freeze; pair gran then takes m* = the mobile mass (the core's 1/m = 0)";
+  if (std::any_of(scene.particles.begin(), scene.particles.end(), [](const cases::ParticleSpec& p) { return p.fixed; })) {
+    c["frozen particles"] =
+        "fix freeze; pair gran then takes m* = the mobile mass (the core's 1/m = 0); pairs of two frozen spheres "
+        "excluded from the neighbour list and walls acting on the mobile spheres only, as in the core";
+  }
+  c["workarounds"] =
+      "neigh_modify contact_distance_factor 1.1 (at 1 a separated pair keeps its slip until the next list build); "
+      "thermo_modify lost error (lost atoms are ignored by default); the screen unbuffered under stdbuf (some errors "
+      "reach the screen alone, unflushed); every trace formula written out as its own thermo variable (a v_name "
+      "inside a formula passes through 15 digits); model settings after a wall's arguments";
   c["tangential slip"] =
       "ς += v_t Δt, then its normal part removed without rescaling (increment_project); Coulomb test "
       "k_t |ς| > μ |F_n| on the spring alone with F_n = elastic + dashpot (elastic_damping); sliding drops the "

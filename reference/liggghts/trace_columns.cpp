@@ -36,6 +36,46 @@ double number(std::string_view token, std::string_view file, std::size_t line) {
 
 std::string column_variable(std::size_t k) { return fmt::format("tr_c{}", k); }
 
+std::string exact_column(std::size_t p, std::size_t q) { return cases::pair_column(p, q, "fn_exact"); }
+
+AssembledTrace assemble_trace(const cases::Scene& scene, const cases::Trace& printed) {
+  AssembledTrace out;
+  out.trace = cases::trace_layout(scene);  // the column order every engine shares
+  const auto index_of = [&](const std::string& name) {
+    const auto& names = printed.columns();
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end()) throw std::runtime_error(fmt::format("LIGGGHTS trace has no column '{}'", name));
+    return static_cast<std::size_t>(it - names.begin());
+  };
+  std::vector<std::size_t> sources;
+  for (const std::string& name : out.trace.columns()) sources.push_back(index_of(name));
+  std::vector<double> row(sources.size());
+  for (std::size_t r = 0; r < printed.rows(); ++r) {
+    for (std::size_t c = 0; c < sources.size(); ++c) row[c] = printed.values(sources[c])[r];
+    out.trace.append_row(row);
+  }
+  const std::vector<double>& time = printed.values(index_of("time"));
+  for (const auto& [p, q] : scene.output.trace_pairs) {
+    const std::vector<double>* exact = printed.column(exact_column(p, q));
+    if (exact == nullptr) continue;  // two bodies alone: the stored force is the pair's
+    std::size_t inexact = 0;
+    std::size_t first = 0;
+    for (std::size_t r = 0; r < exact->size(); ++r) {
+      if ((*exact)[r] != 0.0) continue;
+      if (inexact == 0) first = r;
+      ++inexact;
+    }
+    if (inexact > 0) {
+      out.warnings.push_back(fmt::format(
+          "{}: at {} of {} rows (first at t = {:.6g} s) both particles {} and {} also touched other spheres, so "
+          "LIGGGHTS' per-atom forces do not isolate this pair; the value there is particle {}'s total contact "
+          "force projected on the pair normal",
+          cases::pair_column(p, q, "fn"), inexact, exact->size(), time[first], p, q, q));
+    }
+  }
+  return out;
+}
+
 std::string wall_fix_id(std::size_t wall) { return fmt::format("tr_wall_{}", wall); }
 
 TracePlan trace_plan(const cases::Scene& scene, const AtomTypes& types) {
@@ -50,6 +90,7 @@ TracePlan trace_plan(const cases::Scene& scene, const AtomTypes& types) {
   }
   const bool only_pair = scene.particles.size() == 2 && scene.walls.empty();
   bool contacts = false;
+  std::vector<TraceColumn> exact;  // after the trace's columns: whether each pair's fn is its own
   for (const auto& [p, q] : scene.output.trace_pairs) {
     const std::size_t ip = p + 1, iq = q + 1;
     const std::string dx = fmt::format("(x[{}]-x[{}])", ip, iq);
@@ -70,6 +111,8 @@ TracePlan trace_plan(const cases::Scene& scene, const AtomTypes& types) {
       add(cases::pair_column(p, q, "fn"),
           fmt::format("({0}>0)*((c_{1}[{2}]==1)*{3}+(c_{1}[{2}]!=1)*(-{4}))", overlap, kContactCompute, ip,
                       projected(ip), projected(iq)));
+      exact.push_back({exact_column(p, q), fmt::format("({0}<=0)||(c_{1}[{2}]==1)||(c_{1}[{3}]==1)", overlap,
+                                                        kContactCompute, ip, iq)});
     }
   }
   for (const auto& [p, w] : scene.output.trace_walls) {
@@ -77,8 +120,11 @@ TracePlan trace_plan(const cases::Scene& scene, const AtomTypes& types) {
     if (!plane) throw std::invalid_argument(fmt::format("wall {} is no primitive plane", w));  // supports() rejects it
     const std::size_t id = p + 1;
     add(cases::wall_column(p, w, "overlap"), fmt::format("(r[{}]-{})", id, distance_formula(*plane, id)));
+    // A wall removed at t <= 0 has no fix (and acts on nothing); a frozen sphere meets no wall.
+    const bool acts = wall_in_run(scene.walls.at(w)) && !types.particles.at(types.type_of.at(p)).fixed;
     add(cases::wall_column(p, w, "fn"),
-        fmt::format("{}f_force_{}[{}][{}]", plane->sign > 0.0 ? "" : "-", wall_fix_id(w), id, plane->axis + 1));
+        acts ? fmt::format("{}f_force_{}[{}][{}]", plane->sign > 0.0 ? "" : "-", wall_fix_id(w), id, plane->axis + 1)
+             : std::string("0"));
   }
   const bool any_mobile = std::any_of(scene.particles.begin(), scene.particles.end(),
                                       [](const cases::ParticleSpec& p) { return !p.fixed; });
@@ -95,6 +141,7 @@ TracePlan trace_plan(const cases::Scene& scene, const AtomTypes& types) {
       add(cases::aggregate_column(a), "c_tr_coordination");
     }
   }
+  for (TraceColumn& c : exact) plan.columns.push_back(std::move(c));
   if (contacts) plan.commands.insert(plan.commands.begin(), fmt::format("compute {} all contact/atom", kContactCompute));
   plan.sources = {
       "time: step·dt",
@@ -130,7 +177,9 @@ cases::Trace trace_from_thermo(const cases::Scene& scene, const TracePlan& plan,
   for (const TraceColumn& c : plan.columns) trace.add_column(c.name);
   std::vector<double> row(plan.columns.size());
   std::uint64_t expected = 0;
-  for (++line; line < lines.size() && expected <= steps; ++line) {
+  // LIGGGHTS prints the last step even when it is off the output grid: one such row is not the trace's.
+  bool closing_row_allowed = steps % every != 0;
+  for (++line; line < lines.size(); ++line) {
     const std::string_view text = lines[line];
     if (text.substr(0, 9) == "Loop time") break;
     if (text.substr(0, 7) == "WARNING") continue;
@@ -140,14 +189,18 @@ cases::Trace trace_from_thermo(const cases::Scene& scene, const TracePlan& plan,
                                            words.size(), header.size()));
     }
     const double step = number(words[0], file_name, line + 1);
-    if (step != static_cast<double>(expected)) {
-      if (step == static_cast<double>(steps)) break;  // the closing row LIGGGHTS adds off the grid
-      throw std::runtime_error(
-          fmt::format("{}:{}: thermo row at step {}; expected step {}", file_name, line + 1, step, expected));
+    if (expected <= steps && step == static_cast<double>(expected)) {
+      for (std::size_t c = 0; c < row.size(); ++c) row[c] = number(words[c + 1], file_name, line + 1);
+      trace.append_row(row);
+      expected += every;
+      continue;
     }
-    for (std::size_t c = 0; c < row.size(); ++c) row[c] = number(words[c + 1], file_name, line + 1);
-    trace.append_row(row);
-    expected += every;
+    if (closing_row_allowed && step == static_cast<double>(steps) && expected > steps) {
+      closing_row_allowed = false;
+      continue;
+    }
+    throw std::runtime_error(fmt::format("{}:{}: thermo row at step {}; expected {}", file_name, line + 1, step,
+                                         expected <= steps ? fmt::format("step {}", expected) : "no more rows"));
   }
   const std::uint64_t wanted = steps / every + 1;
   if (trace.rows() != wanted) {

@@ -34,7 +34,11 @@ inline constexpr std::string_view kPairForceFix = "tr_pair_force";
 /// ID of the fix wall/gran of wall w.
 std::string wall_fix_id(std::size_t wall);
 
-/// The trace plan of the scene (pure).
+/// Name of the auxiliary column saying, per row, whether pair (p, q)'s fn is its own force (1) or
+/// a partner's total (0): written for scenes of more than two bodies, not part of the trace.
+std::string exact_column(std::size_t p, std::size_t q);
+
+/// The trace plan of the scene (pure): the trace's columns in its order, then the auxiliary ones.
 TracePlan trace_plan(const cases::Scene& scene, const AtomTypes& types);
 
 /// The trace from the log's thermo table: the block headed "Step tr_c0 tr_c1 …"; rows at
@@ -43,5 +47,15 @@ TracePlan trace_plan(const cases::Scene& scene, const AtomTypes& types);
 /// or malformed.
 cases::Trace trace_from_thermo(const cases::Scene& scene, const TracePlan& plan, std::string_view log_text,
                                std::string_view file_name, std::uint64_t steps);
+
+/// The trace in the column order every engine shares, and a warning per traced pair whose fn was
+/// not its own force at some rows.
+struct AssembledTrace {
+  cases::Trace trace;
+  std::vector<std::string> warnings;
+};
+
+/// The trace's columns picked from the printed table (trace_from_thermo), with the warnings.
+AssembledTrace assemble_trace(const cases::Scene& scene, const cases::Trace& printed);
 
 }  // namespace reference::liggghts

@@ -26,8 +26,11 @@ std::optional<WallPlane> wall_plane(const cases::WallSpec& wall) {
   return std::nullopt;
 }
 
+bool wall_in_run(const cases::WallSpec& wall) noexcept { return !wall.removed_at || *wall.removed_at > 0.0; }
+
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index) {
   std::vector<std::string> reasons;
+  if (!wall_in_run(wall)) return reasons;
   const std::string who = fmt::format("LIGGGHTS driver: wall {} ('{}')", index, wall.name);
   if (wall.shape != dem::WallShape::plane) {
     reasons.push_back(fmt::format("{} is a {}: only plane walls are mapped yet (primitive cylinders and STL meshes "
@@ -39,7 +42,7 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
   if (wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0) {
     reasons.push_back(who + " moves: a primitive wall only has `shear`, a velocity without motion");
   }
-  if (wall.removed_at) reasons.push_back(who + " is removed during the run: a LIGGGHTS fix stays");
+  if (wall.removed_at) reasons.push_back(who + " is removed during the run: a LIGGGHTS fix stays");  // > 0 here
   return reasons;
 }
 

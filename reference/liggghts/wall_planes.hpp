@@ -20,8 +20,12 @@ struct WallPlane {
 /// The primitive plane of `wall`, or empty when its normal is not ±(a unit axis) or it is no plane.
 std::optional<WallPlane> wall_plane(const cases::WallSpec& wall);
 
+/// False for a wall removed at t ≤ 0: it stood only through the preparation, and the deck leaves
+/// it out.
+[[nodiscard]] bool wall_in_run(const cases::WallSpec& wall) noexcept;
+
 /// One reason per property of wall `index` the deck cannot express (any shape but an axis-aligned
-/// plane, a moving wall, a removal time).
+/// plane, a moving wall, a removal during the run); none for a wall removed at t ≤ 0.
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index);
 
 /// "zplane 0" for the plane.

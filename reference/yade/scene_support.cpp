@@ -18,6 +18,10 @@ std::vector<std::string> unsupported_scene_features(const cases::Scene& scene) {
         "YADE driver: the lever arms 'radius' and 'radius_velocity' and the tangential_history "
         "'increment_project' are LAMMPS conventions, not mapped onto YADE's laws");
   }
+  if (scene.model.coulomb_test == dem::CoulombTest::spring && scene.model.tangential != "none") {
+    reasons.emplace_back(
+        "YADE driver: coulomb_test = 'spring' is LIGGGHTS' rule; YADE's laws cap the shear force as a whole");
+  }
   if (!scene.output.trace_aggregates.empty()) {
     reasons.emplace_back(
         "YADE driver: output.trace_aggregates (kinetic and rotational energy, coordination number) "

@@ -151,6 +151,30 @@ TEST(SpringSlider, UnloadedSliderOverTheCapDropsItsForceOnlyUnderTheZeroPolicy) 
   EXPECT_NEAR(loaded_zero.force.norm(), 0.5, 1e-15);
 }
 
+TEST(SpringSlider, TheSpringTestCapsTheSpringAloneAndDropsTheDashpotWhileSliding) {
+  // LIGGGHTS' rule (CoulombTest::spring). Stuck: k|ς| = 1 N below the 1.2 N limit, the dashpot
+  // γ|v| = 1 N on top: |F| = √2 N > limit, kept (the whole-force test would have capped it).
+  const Vec3 xi(5e-5, 0, 0), v(0, 0.5, 0);
+  const double k = 2e4, gamma = 2.0, limit = 1.2;
+  const auto stuck = dem::laws::spring_slider(k, gamma, limit, xi, v, 0.0, false, true);
+  EXPECT_FALSE(stuck.sliding);
+  EXPECT_TRUE(stuck.force.isApprox(-k * xi - gamma * v, 1e-15));
+  EXPECT_GT(stuck.force.norm(), limit);
+  EXPECT_TRUE(dem::laws::spring_slider(k, gamma, limit, xi, v, 0.0, false, false).sliding);
+  // Sliding: k|ς| = 3 N over the limit: the spring's force scaled to it, no dashpot, ς = −F/k.
+  const Vec3 far(1.5e-4, 0, 0);
+  const auto sliding = dem::laws::spring_slider(k, gamma, limit, far, v, 0.0, false, true);
+  ASSERT_TRUE(sliding.sliding);
+  EXPECT_TRUE(sliding.force.isApprox(Vec3(-limit, 0, 0), 1e-15));
+  EXPECT_TRUE(sliding.displacement.isApprox(Vec3(limit / k, 0, 0), 1e-15));
+  EXPECT_GE(sliding.dissipated, 0.0);
+  // No dashpot: both tests agree.
+  const auto a = dem::laws::spring_slider(k, 0.0, limit, far, v, 1e-6, false, true);
+  const auto b = dem::laws::spring_slider(k, 0.0, limit, far, v, 1e-6, false, false);
+  EXPECT_TRUE(a.force.isApprox(b.force, 1e-15));
+  EXPECT_TRUE(a.displacement.isApprox(b.displacement, 1e-15));
+}
+
 TEST(MindlinStiffness, ThesisFormHasPrefactorSixteenThirdsAndMindlinEight) {
   const double g = 3e9, r = 2e-3, d = 1e-6;
   EXPECT_NEAR(dem::laws::mindlin_thesis_stiffness(g, r, d), 16.0 / 3.0 * g * std::sqrt(r * d), 1e-6);

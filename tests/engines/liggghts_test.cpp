@@ -2,6 +2,7 @@
 // The real LIGGGHTS (ctest -L reference): every canonical two-body case it expresses runs, and the
 // core in LIGGGHTS' numerics (inhouse@liggghts) reproduces its traces at round-off; the Hertz
 // dashpot written from ε rebounds with ε; cohesion cases are n/a with the reason.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -90,9 +91,9 @@ TEST(LiggghtsManyBody, APolydispersePourFromADataFileFollowsTheCoreUntilItsConta
   if (!liggghts_installed()) GTEST_SKIP() << "liggghts not installed";
   // 150 spheres of Gaussian radii: atoms from a data file, one type per material, diameters per
   // atom. Every position of LIGGGHTS and of the core in its numerics agrees to round-off while the
-  // spheres fall and meet the floor (3e-18 m at 27 ms); after ~40 ms the contacts between the
-  // spheres amplify the codes' different summation orders tenfold per 3 ms, as a one-ulp nudge of
-  // the core's own start does (docs/metrics.md, "Round-off horizon").
+  // spheres fall and meet the floor (3e-18 m at 27 ms); from about 25 ms on the contacts between the
+  // spheres amplify the codes' different summation orders tenfold per 3 ms (1e-13 m by 45 ms), as a
+  // one-ulp nudge of the core's own start does (docs/metrics.md, "Round-off horizon").
   const cases::Scene scene = cases::load_case(std::filesystem::path(DEMWB_TEST_DATA_DIR) / "many_body" /
                                               "liggghts_pour.toml");
   ASSERT_GT(scene.particles.size(), reference::liggghts::kMaxInlineAtoms);
@@ -103,19 +104,31 @@ TEST(LiggghtsManyBody, APolydispersePourFromADataFileFollowsTheCoreUntilItsConta
       reference::run_engine(reference::InhouseEngine{}, reference::matched_scene(scene, "liggghts"), {});
   ASSERT_EQ(core.status, cases::RunStatus::ok) << core.reason;
   ASSERT_EQ(liggghts.trace.rows(), core.trace.rows());
-  double worst = 0.0;
-  for (std::size_t c = 0; c < core.trace.columns().size(); ++c) {
+  ASSERT_EQ(liggghts.trace.columns(), core.trace.columns());
+  // Positions to 1e-15 m; every other column (velocities, spins, forces, the pair's overlap and
+  // fn, the energies) to 1e-9 of its largest value: a mapping error (a diameter, a density, a
+  // dashpot) shows at order one; the coordination number exactly.
+  for (std::size_t c = 1; c < core.trace.columns().size(); ++c) {
     const std::string& name = core.trace.columns()[c];
     const std::string q = name.substr(name.find('.') + 1);
-    if (q != "x" && q != "y" && q != "z") continue;
-    for (std::size_t r = 0; r < core.trace.rows(); ++r) {
-      worst = std::max(worst, std::abs(core.trace.values(c)[r] - liggghts.trace.values(c)[r]));
+    const std::vector<double>& a = core.trace.values(c);
+    const std::vector<double>& b = liggghts.trace.values(c);
+    double scale = 0.0;
+    double worst = 0.0;
+    for (std::size_t r = 0; r < a.size(); ++r) {
+      scale = std::max(scale, std::abs(b[r]));
+      worst = std::max(worst, std::abs(a[r] - b[r]));
+    }
+    if (q == "x" || q == "y" || q == "z") {
+      EXPECT_LE(worst, 1e-15) << name << " [m], over 30 ms";
+    } else if (name == "all.coordination_number") {
+      EXPECT_EQ(worst, 0.0) << name;
+    } else {
+      EXPECT_LE(worst, 1e-9 * scale) << name << " (largest " << scale << ")";
     }
   }
-  EXPECT_LE(worst, 1e-15) << "m, over 30 ms";
-  const std::vector<double>& ke = *liggghts.trace.column("all.kinetic_energy");
-  const std::vector<double>& ke_core = *core.trace.column("all.kinetic_energy");
-  EXPECT_NEAR(ke.back(), ke_core.back(), 1e-12 * ke_core.back());
+  const std::vector<double>& z = *core.trace.column("all.coordination_number");
+  EXPECT_GT(*std::max_element(z.begin(), z.end()), 0.0);  // the spheres did meet each other
 }
 
 }  // namespace liggghts_engine_test

@@ -169,6 +169,23 @@ TEST(FakeLiggghts, ACrashBySignalIsAnErrorNamingTheSignal) {
   EXPECT_NE(r.reason.find("signal 11"), std::string::npos) << r.reason;
 }
 
+TEST(FakeLiggghts, AnErrorOnTheScreenAloneIsFoundWithAnyExitStatus) {
+  // LIGGGHTS' Error::one writes to the screen only (and aborts unflushed, which stdbuf undoes).
+  for (const int status : {1, 0}) {
+    const fs::path dir = scratch("screen-error-" + std::to_string(status));
+    fs::create_directories(dir);
+    const fs::path fake = dir / "liggghts";
+    write_script(fake, fmt::format("for a in \"$@\"; do [ \"$a\" = /dev/null ] && exec {} \"$@\"; done\n"
+                                   "echo 'ERROR on proc 0: Invalid atom vector in variable formula (variable.cpp:1)'\n"
+                                   "exit {}\n",
+                                   have_liggghts() ? support::find_program("liggghts")->string() : "/bin/false", status));
+    const Reported r = run_single("liggghts", {"--liggghts", fake.string()}, "screen-error-run-" + std::to_string(status));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_EQ(r.status, "error");
+    EXPECT_NE(r.reason.find("Invalid atom vector in variable formula"), std::string::npos) << r.reason;
+  }
+}
+
 TEST(FakeLiggghts, AnAbsentBinaryIsMissingAndFailsTheRun) {
   const std::string none = scratch("no-liggghts-baselines").string();
   fs::create_directories(none);

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "dem/contact/laws/linear_dashpot.hpp"
@@ -48,6 +49,32 @@ TEST(LammpsAtomTypes, ReducedMassIsTheMobileMassAgainstAFixedType) {
   EXPECT_DOUBLE_EQ(*types.reduced_mass(3, 1), m2);
   EXPECT_DOUBLE_EQ(*types.reduced_mass(0, 1), m1 * m2 / (m1 + m2));
   EXPECT_FALSE(types.reduced_mass(2, 3).has_value());
+}
+
+TEST(LammpsDeck, FewSpheresOfManySizesComeFromTheDataFileWithTheirOwnDiameters) {
+  // 20 spheres of 20 radii: diameters per atom, so a data file even below kMaxInlineAtoms (a
+  // `set type … diameter` would have given every sphere the type's radius 0).
+  cases::Scene scene = mixed_scene();
+  const cases::ParticleSpec first = scene.particles.front();
+  scene.particles.clear();
+  for (int k = 0; k < 20; ++k) {
+    cases::ParticleSpec p = first;
+    p.radius = 0.01 + 1e-4 * k;
+    p.effect_radius = p.radius;
+    p.position = {0.05 * k, 0.0, 0.0};
+    scene.particles.push_back(p);
+  }
+  scene.output.trace_particles = {0};
+  scene.output.trace_pairs.clear();
+  scene.output.trace_walls.clear();
+  scene.model.damping = "none";  // a dashpot per type pair needs one m* per type: n/a here
+  ASSERT_TRUE(reference::lammps::classify_particles(scene).per_atom_diameter);
+  ASSERT_TRUE(reference::lammps::atoms_in_data_file(scene));
+  const std::string deck = write_deck(scene, settings());
+  EXPECT_NE(deck.find("read_data"), std::string::npos);
+  EXPECT_EQ(deck.find("diameter 0 "), std::string::npos);
+  const std::string data = reference::lammps::write_atom_data(scene, settings());
+  EXPECT_NE(data.find(fmt::format(" {:.17g} ", 2.0 * (0.01 + 1e-4 * 19))), std::string::npos);
 }
 
 TEST(LammpsDeck, WritesAnExplicitPairCoeffForEveryTypePairAndNeverAWildcard) {

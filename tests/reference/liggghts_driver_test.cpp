@@ -18,6 +18,7 @@
 #include "reference/liggghts/deck_writer.hpp"
 #include "reference/liggghts/liggghts_runner.hpp"
 #include "reference/liggghts/trace_columns.hpp"
+#include "reference/liggghts/wall_planes.hpp"
 
 namespace liggghts_driver_test {
 
@@ -239,7 +240,11 @@ TEST(LiggghtsDeck, WritesWhatThisLiggghtsAcceptsInFullPrecision) {
   settings.timestep = 1e-6;
   settings.steps = 100;
   const std::string deck = write_deck(scene, types, *m.settings, plan, settings);
-  EXPECT_EQ(deck, write_deck(scene, types, *m.settings, plan, settings));  // a pure function
+  // Values in full: the floor sits 17 significant digits deep, and the sphere's start velocity.
+  EXPECT_NE(deck.find("zplane -0.01 "), std::string::npos);
+  EXPECT_NE(deck.find("set             atom 1 vx 0.5 vy 0 vz -0.10000000000000001 "), std::string::npos) << deck;
+  EXPECT_NE(deck.find("neigh_modify    exclude group tr_fixed tr_fixed"), std::string::npos);
+  EXPECT_NE(deck.find("fix             tr_wall_0 tr_mobile wall/gran"), std::string::npos);
   for (const char* wanted :
        {"communicate     single vel yes", "newton          off", "create_box      3 tr_box",
         "pair_style      gran model hertz tangential history limitForce on tangential_damping off",
@@ -253,10 +258,12 @@ TEST(LiggghtsDeck, WritesWhatThisLiggghtsAcceptsInFullPrecision) {
   EXPECT_EQ(deck.find("comm_modify"), std::string::npos);
   EXPECT_EQ(deck.find("pair_style      granular"), std::string::npos);
   for (const TraceColumn& c : plan.columns) EXPECT_EQ(c.formula.find("v_"), std::string::npos) << c.name;
-  // The columns are the trace's, in its order.
+  // The columns are the trace's, in its order, then whether the pair's fn is its own (a wall
+  // makes three bodies).
   const cases::Trace layout = cases::trace_layout(scene);
-  ASSERT_EQ(plan.columns.size(), layout.columns().size());
-  for (std::size_t k = 0; k < plan.columns.size(); ++k) EXPECT_EQ(plan.columns[k].name, layout.columns()[k]);
+  ASSERT_EQ(plan.columns.size(), layout.columns().size() + 1);
+  for (std::size_t k = 0; k < layout.columns().size(); ++k) EXPECT_EQ(plan.columns[k].name, layout.columns()[k]);
+  EXPECT_EQ(plan.columns.back().name, exact_column(0, 1));
   // The frozen sphere's force is its stored contact force (fix freeze zeroes fx).
   EXPECT_EQ(plan.columns[1 + 12 + 9].formula, "f_tr_pair_force[2][1]");
 }
@@ -273,7 +280,7 @@ TEST(LiggghtsDeck, ManySpheresOfManySizesComeFromADataFileWithDiametersPerAtom) 
   const AtomTypes types = classify(scene);
   ASSERT_TRUE(types.per_atom_diameter);
   ASSERT_EQ(types.particles.size(), 2u);  // (steel, mobile), (glass, frozen)
-  ASSERT_TRUE(atoms_in_data_file(scene));
+  ASSERT_TRUE(atoms_in_data_file(scene, types));
   const ContactMapping m = mapping_of(scene);
   ASSERT_TRUE(m.settings.has_value()) << m.reasons.front();
   DeckSettings settings;
@@ -342,6 +349,15 @@ TEST(LiggghtsThermo, ReadsTheTableAndRefusesAShortOrDamagedOne) {
     return std::string("no error");
   };
   EXPECT_NE(error_of(thermo_log(n, 50, 10), 100).find("rows; expected 11"), std::string::npos);
+  // The closing row twice, an on-grid row missing, or a closing row where none belongs: refused.
+  std::string twice = off_grid;
+  twice.insert(twice.find("Loop time"), closing + "\n");
+  EXPECT_NE(error_of(twice, 105).find("expected no more rows"), std::string::npos) << error_of(twice, 105);
+  std::string gap = thermo_log(n, 100, 10);
+  const std::size_t row40 = gap.find("\n      40 ") + 1;
+  gap.erase(row40, gap.find('\n', row40) + 1 - row40);
+  EXPECT_NE(error_of(gap, 100).find("thermo row at step 50; expected step 40"), std::string::npos) << error_of(gap, 100);
+  EXPECT_NE(error_of(off_grid, 100).find("expected no more rows"), std::string::npos);
   EXPECT_NE(error_of("no table here\n", 100).find("no thermo table"), std::string::npos);
   std::string damaged = thermo_log(n, 100, 10);
   const std::size_t row20 = damaged.find("\n      20 ") + 10;  // the row of step 20, its first value
@@ -351,6 +367,40 @@ TEST(LiggghtsThermo, ReadsTheTableAndRefusesAShortOrDamagedOne) {
   const std::size_t row30 = cut.find("\n      30 ") + 1;
   cut.erase(cut.rfind(' ', cut.find('\n', row30)), cut.find('\n', row30) - cut.rfind(' ', cut.find('\n', row30)));
   EXPECT_NE(error_of(cut, 100).find("values; expected"), std::string::npos) << error_of(cut, 100);
+}
+
+TEST(LiggghtsWalls, APlaneFacingDownMeasuresAndPushesAlongItsOwnNormal) {
+  // A ceiling at z = 0.02 with normal −z: the distance is 0.02 − z, and the force along the wall's
+  // normal is −F_z (positive when it pushes the sphere down, away from it).
+  cases::WallSpec ceiling;
+  ceiling.name = "ceiling";
+  ceiling.point = {0.0, 0.0, 0.02};
+  ceiling.normal = {0.0, 0.0, -1.0};
+  const std::optional<WallPlane> plane = wall_plane(ceiling);
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_EQ(plane->axis, 2);
+  EXPECT_EQ(plane->sign, -1.0);
+  EXPECT_EQ(plane_arguments(*plane), "zplane 0.02");
+  EXPECT_EQ(distance_formula(*plane, 3), "(0.02-z[3])");
+  std::string text = case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0));
+  const std::string floor = "point = [0.0, 0.0, -0.01]\nnormal = [0.0, 0.0, 1.0]";
+  text.replace(text.find(floor), floor.size(), "point = [0.0, 0.0, 0.01]\nnormal = [0.0, 0.0, -1.0]");
+  const cases::Scene scene = scene_of(text);
+  const TracePlan plan = trace_plan(scene, classify(scene));
+  const auto fn = std::find_if(plan.columns.begin(), plan.columns.end(),
+                               [](const TraceColumn& c) { return c.name == cases::wall_column(0, 0, "fn"); });
+  ASSERT_NE(fn, plan.columns.end());
+  EXPECT_EQ(fn->formula, "-f_force_tr_wall_0[1][3]");
+  EXPECT_TRUE(unmapped_wall(ceiling, 0).empty());
+  ceiling.normal = {0.0, 0.6, -0.8};
+  EXPECT_FALSE(wall_plane(ceiling).has_value());
+  EXPECT_FALSE(unmapped_wall(ceiling, 0).empty());
+  ceiling.normal = {0.0, 0.0, -1.0};
+  ceiling.removed_at = 0.0;  // stood through the preparation only: left out, not refused
+  EXPECT_FALSE(wall_in_run(ceiling));
+  EXPECT_TRUE(unmapped_wall(ceiling, 0).empty());
+  ceiling.removed_at = 1e-3;
+  EXPECT_FALSE(unmapped_wall(ceiling, 0).empty());
 }
 
 TEST(LiggghtsBanner, ReadsTheVersion) {

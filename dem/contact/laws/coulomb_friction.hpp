@@ -75,16 +75,36 @@ struct SpringSliderResult {
 /// keeps the zero displacement (LAMMPS pair granular, fix wall/gran, gran/hooke/history).
 /// Dissipation over `elapsed`: stuck, the dashpot's γ|v|² elapsed; sliding, the step's work
 /// (sliding_step_work) minus the change of the spring energy ½k|ς|² (clamped at ≥ 0).
+/// With `spring_test` (CoulombTest::spring, LIGGGHTS' tangential history) the spring force alone
+/// is tested: when k|ς| > limit the force is the spring's scaled to the limit, without the dashpot,
+/// and ς = −F/k; otherwise F = −k ς − γ v, which may exceed the limit.
 /// stiffness k [N/m] ≥ 0 (k = 0 stores no displacement), damping γ [kg/s] ≥ 0, limit [N] ≥ 0,
 /// displacements [m], v the relative velocity of the contact [m/s], elapsed [s].
 [[nodiscard]] inline SpringSliderResult spring_slider(double stiffness, double damping,
                                                       double limit, const Vec3& carried,
                                                       const Vec3& velocity, double elapsed,
-                                                      bool zero_when_unloaded) noexcept {
+                                                      bool zero_when_unloaded, bool spring_test = false) noexcept {
   SpringSliderResult r;
   const Vec3 start = stiffness > 0.0 ? carried : Vec3::Zero();
   const Vec3 integrated = carried + velocity * elapsed;
   r.displacement = stiffness > 0.0 ? integrated : Vec3::Zero();
+  if (spring_test) {
+    const Vec3 spring = -stiffness * r.displacement;
+    const double cap = std::max(limit, 0.0);
+    const double magnitude = spring.norm();
+    if (!(magnitude > cap)) {
+      r.force = spring - damping * velocity;
+      r.dissipated = damping * velocity.squaredNorm() * elapsed;
+      return r;
+    }
+    r.sliding = true;
+    r.force = spring * (cap / magnitude);
+    r.displacement = -r.force / stiffness;  // magnitude > cap ≥ 0 needs k > 0
+    const double work = sliding_step_work(-stiffness * start, r.force, velocity, elapsed);
+    const double stored = 0.5 * stiffness * (r.displacement.squaredNorm() - start.squaredNorm());
+    r.dissipated = std::max(work - stored, 0.0);
+    return r;
+  }
   r.force = -stiffness * r.displacement - damping * velocity;
   const double magnitude = r.force.norm();
   const double cap = std::max(limit, 0.0);

@@ -23,7 +23,7 @@ struct KuwabaraKonoDamping {
   static constexpr std::string_view kYade =
       "none: YADE's Hertz–Mindlin dashpot grows as δ^{1/4}, not as √δ";
   static constexpr std::string_view kLiggghts =
-      "none: no LIGGGHTS dashpot 2 E' √(R* δ)";
+      "not mapped yet: `hertz/stiffness` with gamman = 2 E'/m* per type pair gives 2 E' √(R* δ) (one m* per type pair)";
 
   double viscous_modulus;  ///< E' [Pa·s]
 

@@ -31,6 +31,7 @@ struct ContactPolicies {
   UnloadedSlider unloaded_slider = UnloadedSlider::cap;
   AdhesiveDashpot adhesive_dashpot = AdhesiveDashpot::clamp;
   MindlinForm mindlin_form = MindlinForm::total;
+  CoulombTest coulomb_test = CoulombTest::total;
 };
 
 /// Everything a sub-model may read about one contact at one evaluation.

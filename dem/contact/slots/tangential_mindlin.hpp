@@ -25,7 +25,8 @@ namespace dem {
 /// increment u_t Δt is loaded at the stiffness k_t = c a of its own step, F = F_old − c a u_t Δt,
 /// rather than the whole slip at today's stiffness. The history holds σ = −F_spring / c [m²]
 /// (carried by the TangentialHistory rule like a slip), so σ ← σ + a u_t Δt; with the dashpot
-/// η_t u_t, the Coulomb cap and the unloaded-slider rule as spring_coulomb_response. The spring
+/// η_t u_t, the Coulomb cap (either CoulombTest) and the unloaded-slider rule as
+/// spring_coulomb_response. The spring
 /// energy is |F_spring|²/(2 k_t). `c` is the stiffness per unit contact radius [N/m²], a [m].
 [[nodiscard]] inline TangentialResponse incremental_mindlin_response(double c, double a, double friction,
                                                                      double damping_ratio, const ContactInput& in,
@@ -43,6 +44,20 @@ namespace dem {
   // of k_t alone did to it (the ledger's stiffness_change; no stiffness kept: no ledger).
   const double k_then = in.committed.tangential_stiffness;
   const double restiffened = k_then > 0.0 ? laws::incremental_spring_energy(c, k_then, start) - energy(start) : 0.0;
+  if (in.policies.coulomb_test == CoulombTest::spring) {
+    // The spring alone against the limit; sliding drops the dashpot (CoulombTest::spring).
+    const Vec3 spring = -c * integrated;
+    const double spring_magnitude = spring.norm();
+    if (!(spring_magnitude > cap)) {
+      next.tangential_slip = integrated;
+      return {spring - eta_t * u_t, energy(integrated), eta_t * u_t.squaredNorm() * in.elapsed, restiffened};
+    }
+    const Vec3 capped = spring * (cap / spring_magnitude);
+    const Vec3 sigma = -capped / c;  // spring_magnitude > cap ≥ 0 needs c > 0
+    next.tangential_slip = sigma;
+    const double work = laws::sliding_step_work(-c * start, capped, u_t, in.elapsed);
+    return {capped, energy(sigma), std::max(work - (energy(sigma) - energy(start)), 0.0), restiffened};
+  }
   Vec3 force = -c * integrated - eta_t * u_t;
   const double magnitude = force.norm();
   if (!(magnitude > cap)) {

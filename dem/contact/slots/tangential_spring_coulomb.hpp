@@ -39,7 +39,7 @@ namespace dem {
   const double eta_t = damping_ratio * t_in.damping_coefficient;
   const laws::SpringSliderResult r = laws::spring_slider(
       stiffness, eta_t, friction * t_in.limit_basis, carried, u_t, in.elapsed,
-      in.policies.unloaded_slider == UnloadedSlider::zero);
+      in.policies.unloaded_slider == UnloadedSlider::zero, in.policies.coulomb_test == CoulombTest::spring);
   next.tangential_slip = r.displacement;
   return {r.force, laws::spring_energy(stiffness, r.displacement), r.dissipated};
 }
