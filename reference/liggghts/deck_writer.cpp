@@ -2,12 +2,12 @@
 #include "reference/liggghts/deck_writer.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "reference/common/atom_data.hpp"
 #include "reference/common/deck_comment.hpp"
 #include "reference/common/dump_snapshots.hpp"
 #include "reference/liggghts/wall_planes.hpp"
@@ -288,23 +288,7 @@ std::string write_atom_data(const cases::Scene& scene, const AtomTypes& types, c
   const auto [lo, hi] = simulation_box(scene, static_cast<double>(settings.steps) * settings.timestep);
   std::string out = fmt::format("dem-workbench atoms of case '{}' (generated, do not edit)\n\n{} atoms\n{} atom types\n\n",
                                 deck_comment_text(scene.name), scene.particles.size(), types.count());
-  constexpr std::array<std::string_view, 3> kAxes{"x", "y", "z"};
-  for (std::size_t k = 0; k < 3; ++k) out += fmt::format("{} {} {}lo {}hi\n", num(lo[k]), num(hi[k]), kAxes[k], kAxes[k]);
-  out += "\nAtoms\n\n";
-  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    const cases::ParticleSpec& p = scene.particles[i];
-    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, types.particle_type(i), num(2.0 * p.radius),
-                       num(scene.materials.at(p.material).density), num(p.position[0]), num(p.position[1]),
-                       num(p.position[2]));
-  }
-  out += "\nVelocities\n\n";
-  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    const cases::ParticleSpec& p = scene.particles[i];
-    const cases::Vector3 zero{};
-    const cases::Vector3& v = p.fixed ? zero : p.velocity;
-    const cases::Vector3& w = p.fixed ? zero : p.angular_velocity;
-    out += fmt::format("{} {} {} {} {} {} {}\n", i + 1, num(v[0]), num(v[1]), num(v[2]), num(w[0]), num(w[1]), num(w[2]));
-  }
+  out += atom_data_body(scene, types.type_of, lo, hi, "Atoms");
   return out;
 }
 
