@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "dem/core/vector.hpp"
 
@@ -62,6 +63,15 @@ struct SpringSliderResult {
   return -0.5 * (start_force + end_force).dot(velocity) * elapsed;
 }
 
+/// The spring-alone Coulomb test (CoulombTest::spring, LIGGGHTS' tangential history): the spring
+/// force F_s [N] scaled to `cap` [N] when |F_s| > cap, or empty while it holds (the dashpot is then
+/// added uncapped).
+[[nodiscard]] inline std::optional<Vec3> spring_over_cap(const Vec3& spring, double cap) noexcept {
+  const double magnitude = spring.norm();
+  if (!(magnitude > cap)) return std::nullopt;
+  return Vec3(spring * (cap / magnitude));
+}
+
 /// Linear spring in parallel with a dashpot, in series with a Coulomb slider (thesis eq
 /// 3.22–3.26; Cundall & Strack 1979). The stored displacement is ς = carried + v·elapsed
 /// (`carried` is the committed displacement already in the current tangent plane; nothing is
@@ -90,16 +100,15 @@ struct SpringSliderResult {
   r.displacement = stiffness > 0.0 ? integrated : Vec3::Zero();
   if (spring_test) {
     const Vec3 spring = -stiffness * r.displacement;
-    const double cap = std::max(limit, 0.0);
-    const double magnitude = spring.norm();
-    if (!(magnitude > cap)) {
+    const std::optional<Vec3> capped = spring_over_cap(spring, std::max(limit, 0.0));
+    if (!capped) {
       r.force = spring - damping * velocity;
       r.dissipated = damping * velocity.squaredNorm() * elapsed;
       return r;
     }
     r.sliding = true;
-    r.force = spring * (cap / magnitude);
-    r.displacement = -r.force / stiffness;  // magnitude > cap ≥ 0 needs k > 0
+    r.force = *capped;
+    r.displacement = -r.force / stiffness;  // |spring| > cap ≥ 0 needs k > 0
     const double work = sliding_step_work(-stiffness * start, r.force, velocity, elapsed);
     const double stored = 0.5 * stiffness * (r.displacement.squaredNorm() - start.squaredNorm());
     r.dissipated = std::max(work - stored, 0.0);

@@ -47,16 +47,15 @@ namespace dem {
   if (in.policies.coulomb_test == CoulombTest::spring) {
     // The spring alone against the limit; sliding drops the dashpot (CoulombTest::spring).
     const Vec3 spring = -c * integrated;
-    const double spring_magnitude = spring.norm();
-    if (!(spring_magnitude > cap)) {
+    const std::optional<Vec3> capped = laws::spring_over_cap(spring, cap);
+    if (!capped) {
       next.tangential_slip = integrated;
       return {spring - eta_t * u_t, energy(integrated), eta_t * u_t.squaredNorm() * in.elapsed, restiffened};
     }
-    const Vec3 capped = spring * (cap / spring_magnitude);
-    const Vec3 sigma = -capped / c;  // spring_magnitude > cap ≥ 0 needs c > 0
+    const Vec3 sigma = -*capped / c;  // |spring| > cap ≥ 0 needs c > 0
     next.tangential_slip = sigma;
-    const double work = laws::sliding_step_work(-c * start, capped, u_t, in.elapsed);
-    return {capped, energy(sigma), std::max(work - (energy(sigma) - energy(start)), 0.0), restiffened};
+    const double work = laws::sliding_step_work(-c * start, *capped, u_t, in.elapsed);
+    return {*capped, energy(sigma), std::max(work - (energy(sigma) - energy(start)), 0.0), restiffened};
   }
   Vec3 force = -c * integrated - eta_t * u_t;
   const double magnitude = force.norm();
