@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `demwb bench`: the core and LAMMPS timed on the same physics, side by side in one run.
+// `demwb bench`: the core, LAMMPS and LIGGGHTS timed on the same physics, side by side in one run.
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -12,10 +12,12 @@
 #include "bench/box_scene.hpp"
 #include "bench/chute_scene.hpp"
 #include "bench/core_run.hpp"
-#include "bench/lammps_run.hpp"
+#include "bench/code_run.hpp"
 #include "cases/case_loader.hpp"
 #include "reference/common/core_setup.hpp"
 #include "reference/lammps/deck_writer.hpp"
+#include "reference/lammps/simulation_box.hpp"
+#include "reference/liggghts/deck_parts.hpp"
 #include "reports/case_outputs.hpp"
 #include "support/text_file.hpp"
 #include "cases/time_step.hpp"
@@ -29,27 +31,50 @@ namespace po = boost::program_options;
 struct BenchOptions {
   std::string scene;
   bool inhouse = true;
-  bool lammps = true;
+  std::vector<bench::BenchCode> codes;  ///< the reference codes to time, in the order asked
   int threads = 1;
   int ranks = 1;
   std::optional<std::uint64_t> steps;
   std::size_t particles = 10000;
   std::string chute_dir;
   double timeout_s = 3600.0;
-  std::string lammps_program = "lmp";  ///< the LAMMPS binary timed
   int repeat = 1;
   std::filesystem::path out;
+
+  [[nodiscard]] bool wants(std::string_view engine) const {
+    return std::any_of(codes.begin(), codes.end(), [&](const bench::BenchCode& c) { return c.engine == engine; });
+  }
 };
 
-/// Runs LAMMPS and the core one after the other, `o.repeat` times (a LAMMPS failure ends it).
-void alternate(const BenchOptions& o, bench::BenchResult& r, const std::function<bench::LammpsRun()>& run_lammps,
+/// How to time one reference code on the scene: a run, or why the code cannot run it (n/a).
+struct CodeJob {
+  std::function<bench::CodeRun()> run;
+  std::string not_applicable;
+};
+
+/// Runs each code that can run the scene and then the core, one after the other, `o.repeat`
+/// times (a code's failure ends it); a code that cannot express the scene is n/a with its reason.
+void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<CodeJob>& jobs,
                const std::function<bench::CoreRun()>& run_core) {
-  for (int k = 0; k < o.repeat; ++k) {
-    if (run_lammps) {
-      r.lammps_runs.push_back(run_lammps());
-      if (r.lammps_runs.back().status != "ok") break;
+  for (std::size_t c = 0; c < o.codes.size(); ++c) {
+    r.codes.push_back({o.codes[c], {}, std::nullopt});
+    if (!jobs[c].run) {
+      bench::CodeRun na;
+      na.engine = o.codes[c].engine;
+      na.status = "n/a";
+      na.reason = jobs[c].not_applicable;
+      na.ranks = o.ranks;
+      r.codes.back().median = na;
     }
-    if (run_core) r.core_runs.push_back(run_core());
+  }
+  bool failed = false;
+  for (int k = 0; k < o.repeat && !failed; ++k) {
+    for (std::size_t c = 0; c < o.codes.size() && !failed; ++c) {
+      if (!jobs[c].run) continue;
+      r.codes[c].runs.push_back(jobs[c].run());
+      failed = r.codes[c].runs.back().status != "ok";
+    }
+    if (run_core && !failed) r.core_runs.push_back(run_core());
     if (o.repeat > 1) std::fprintf(stderr, "bench: repetition %d of %d done\n", k + 1, o.repeat);
   }
   if (run_core && r.core_runs.empty()) r.core_runs.push_back(run_core());
@@ -76,15 +101,23 @@ bench::BenchResult bench_chute(const BenchOptions& o) {
   r.steps = steps;
   const bench::LammpsData data = bench::read_lammps_data(*dir / "data.chute");
   r.particles = data.atoms.size();
-  std::function<bench::LammpsRun()> run_lammps;
+  std::vector<CodeJob> jobs;
   std::function<bench::CoreRun()> run_core;
-  if (o.lammps) {
-    std::string deck = fmt::format("# dem-workbench: LAMMPS's own chute benchmark, unmodified\ninclude {}\n",
-                                   (*dir / "in.chute").string());
-    if (steps > 100) deck += fmt::format("run {}\n", steps - 100);
-    run_lammps = [&o, deck, dir] {
-      return bench::run_lammps_bench(o.lammps_program, deck, o.out / "lammps", o.ranks, o.timeout_s, {*dir / "data.chute"});
-    };
+  for (const bench::BenchCode& code : o.codes) {
+    CodeJob job;
+    if (code.engine == "lammps") {
+      std::string deck = fmt::format("# dem-workbench: LAMMPS's own chute benchmark, unmodified\ninclude {}\n",
+                                     (*dir / "in.chute").string());
+      if (steps > 100) deck += fmt::format("run {}\n", steps - 100);
+      job.run = [&o, code, deck, dir] {
+        return bench::run_code_bench(code, deck, o.out / code.engine, o.ranks, o.timeout_s, {*dir / "data.chute"});
+      };
+    } else {
+      job.not_applicable = fmt::format("in.chute is a LAMMPS deck ({} has no gran/hooke/history pair style); the chute "
+                                       "is LAMMPS's own benchmark",
+                                       code.title);
+    }
+    jobs.push_back(std::move(job));
   }
   if (o.inhouse) {
     run_core = [&o, &data, steps] {
@@ -92,12 +125,13 @@ bench::BenchResult bench_chute(const BenchOptions& o) {
       return bench::run_core(bench::chute_setup(data, o.threads), steps, at);
     };
   }
-  alternate(o, r, run_lammps, run_core);
+  alternate(o, r, jobs, run_core);
   if (o.inhouse) {
     const bench::ChuteReference ref;
+    const bench::CodeBench* lammps = r.code("lammps");
     const auto lammps_value = [&](std::uint64_t step, const char* column) -> std::string {
-      if (!r.lammps || r.lammps->status != "ok") return "";
-      for (const auto& row : r.lammps->log.thermo) {
+      if (lammps == nullptr || !lammps->median || lammps->median->status != "ok") return "";
+      for (const auto& row : lammps->median->log.thermo) {
         if (row.step == step && row.values.count(column) != 0) return bench::lammps_digits(row.values.at(column));
       }
       return "";
@@ -130,33 +164,48 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
   r.particles = scene.particles.size();
   const reference::PreparedScene prepared(scene);
   const reference::CoreSetup setup = reference::core_setup(prepared, o.threads);
-  std::function<bench::LammpsRun()> run_lammps;
+  std::vector<CodeJob> jobs;
   std::function<bench::CoreRun()> run_core;
-  if (o.lammps) {
-    reference::lammps::DeckSettings settings;
-    settings.timestep = setup.simulation.timestep;
-    settings.steps = steps;
-    settings.timing_only = true;
+  // Every code with the same neighbour skin (LAMMPS driver's: a fifth of the smallest radius).
+  const double skin = reference::lammps::neighbour_skin(scene);
+  for (const bench::BenchCode& code : o.codes) {
+    CodeJob job;
+    std::string deck;
     std::vector<bench::DeckFile> files;
-    try {
-      const std::string deck = reference::lammps::write_deck(prepared, settings);
-      if (reference::lammps::atoms_in_data_file(scene)) {
-        files.push_back({settings.data_file, reference::lammps::write_atom_data(scene, settings)});
+    if (code.engine == "lammps") {
+      reference::lammps::DeckSettings settings;
+      settings.timestep = setup.simulation.timestep;
+      settings.steps = steps;
+      settings.timing_only = true;
+      try {
+        deck = reference::lammps::write_deck(prepared, settings);
+        if (reference::lammps::atoms_in_data_file(scene)) {
+          files.push_back({settings.data_file, reference::lammps::write_atom_data(scene, settings)});
+        }
+      } catch (const std::invalid_argument& e) {
+        job.not_applicable = e.what();
       }
-      run_lammps = [&o, deck, files] {
-        return bench::run_lammps_bench(o.lammps_program, deck, o.out / "lammps", o.ranks, o.timeout_s, {}, files);
-      };
-    } catch (const std::invalid_argument& e) {
-      r.lammps = bench::LammpsRun{};
-      r.lammps->status = "n/a";
-      r.lammps->reason = e.what();
+    } else {
+      const reference::liggghts::TimingDeck t =
+          reference::liggghts::timing_deck(prepared, setup.simulation.timestep, steps, skin);
+      for (const std::string& reason : t.reasons) {
+        job.not_applicable += (job.not_applicable.empty() ? "" : "; ") + reason;
+      }
+      deck = t.deck;
+      if (!t.data.empty()) files.push_back({t.data_file, t.data});
     }
+    if (job.not_applicable.empty()) {
+      job.run = [&o, code, deck, files] {
+        return bench::run_code_bench(code, deck, o.out / code.engine, o.ranks, o.timeout_s, {}, files);
+      };
+    }
+    jobs.push_back(std::move(job));
   }
   dem::SimulationSetup core = setup.simulation;
   core.scheme_settings.orientation = false;  // LAMMPS' atom_style sphere keeps none either
   core.track_energy = scene.output.trace_energy;
   if (o.inhouse) run_core = [core, steps] { return bench::run_core(core, steps, {}); };
-  alternate(o, r, run_lammps, run_core);
+  alternate(o, r, jobs, run_core);
   if (o.inhouse) {
     r.notes.push_back(fmt::format("core: {} neighbour-list builds in {} steps, {} Morton reorders; Δt = {:.3g} s",
                                   r.core->list_builds, steps, r.core->reorders, setup.simulation.timestep));
@@ -169,35 +218,39 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
 int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   po::options_description opts("options");
   opts.add_options()
-      ("engines", po::value<std::vector<std::string>>()->multitoken(), "engines to time (default inhouse,lammps)")
+      ("engines", po::value<std::vector<std::string>>()->multitoken(),
+       "engines to time: inhouse, lammps, liggghts (default inhouse,lammps)")
       ("threads", po::value<int>()->default_value(1), "OpenMP threads of the core")
-      ("ranks", po::value<int>()->default_value(1), "MPI ranks of LAMMPS (mpirun -np N)")
+      ("ranks", po::value<int>()->default_value(1), "MPI ranks of LAMMPS and LIGGGHTS (mpirun -np N)")
       ("steps", po::value<std::uint64_t>(), "time steps (chute: 1000, box: 200, a case: its duration)")
       ("particles", po::value<std::size_t>()->default_value(10000), "spheres of the box scene")
       ("chute-dir", po::value<std::string>(), "where in.chute and data.chute live")
-      ("timeout", po::value<double>()->default_value(3600.0), "seconds before a LAMMPS run is killed")
+      ("timeout", po::value<double>()->default_value(3600.0), "seconds before a LAMMPS or LIGGGHTS run is killed")
       ("lammps", po::value<std::string>(), "LAMMPS binary to time (default $DEMWB_LAMMPS, else lmp in PATH)")
-      ("repeat", po::value<int>()->default_value(1), "run both engines this many times, alternating; report medians")
+      ("liggghts", po::value<std::string>(), "LIGGGHTS binary to time (default $DEMWB_LIGGGHTS, else liggghts in PATH)")
+      ("repeat", po::value<int>()->default_value(1), "run every engine this many times, alternating; report medians")
       ("output,o", po::value<std::string>(), "output directory (default out/bench-<scene>)");
   const auto vm = parse_command(
       args,
-      "usage: demwb bench chute|box|CASE.toml [--engines inhouse,lammps] [--threads N] [--ranks N] [--steps S]\n"
-      "                   [--particles N] [-o DIR]",
+      "usage: demwb bench chute|box|CASE.toml [--engines inhouse,lammps,liggghts] [--threads N] [--ranks N]\n"
+      "                   [--steps S] [--particles N] [-o DIR]",
       opts, {"scene"});
   if (!vm) return kExitOk;
   BenchOptions o;
   o.scene = (*vm)["scene"].as<std::string>();
-  if (vm->count("engines") != 0) {
-    const std::vector<std::string> names = split_names((*vm)["engines"].as<std::vector<std::string>>());
-    o.inhouse = o.lammps = false;
-    for (const std::string& n : names) {
-      if (n == "inhouse") {
-        o.inhouse = true;
-      } else if (n == "lammps") {
-        o.lammps = true;
-      } else {
-        throw std::invalid_argument(fmt::format("--engines: '{}' cannot be benchmarked (known: inhouse, lammps)", n));
-      }
+  o.timeout_s = timeout_option(*vm);
+  const reference::ExternalPrograms programs = external_programs(*vm, o.timeout_s);
+  std::vector<std::string> names{"inhouse", "lammps"};
+  if (vm->count("engines") != 0) names = split_names((*vm)["engines"].as<std::vector<std::string>>());
+  o.inhouse = false;
+  for (const std::string& n : names) {
+    if (n == "inhouse") {
+      o.inhouse = true;
+    } else if ((n == "lammps" || n == "liggghts") && !o.wants(n)) {
+      o.codes.push_back(n == "lammps" ? bench::lammps_code(programs.lammps) : bench::liggghts_code(programs.liggghts));
+    } else if (n != "lammps" && n != "liggghts") {
+      throw std::invalid_argument(
+          fmt::format("--engines: '{}' cannot be benchmarked (known: inhouse, lammps, liggghts)", n));
     }
   }
   o.threads = (*vm)["threads"].as<int>();
@@ -208,8 +261,6 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   o.particles = (*vm)["particles"].as<std::size_t>();
   if (o.particles < 1 || o.particles > 100'000'000) throw std::invalid_argument("--particles must be between 1 and 1e8");
   if (vm->count("chute-dir") != 0) o.chute_dir = (*vm)["chute-dir"].as<std::string>();
-  o.timeout_s = timeout_option(*vm);
-  o.lammps_program = external_programs(*vm, o.timeout_s).lammps;
   o.repeat = (*vm)["repeat"].as<int>();
   if (o.repeat < 1 || o.repeat > 100) throw std::invalid_argument("--repeat must be between 1 and 100");
   o.out = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())

@@ -26,7 +26,7 @@ Shares shares(const CoreRun& c) {
           percent(c.wall_s - neighbor - forces, c.wall_s)};
 }
 
-Shares shares(const LammpsRun& l) {
+Shares shares(const CodeRun& l) {
   const auto get = [&l](const char* k) {
     const auto it = l.log.breakdown_s.find(k);
     return it == l.log.breakdown_s.end() ? 0.0 : it->second;
@@ -35,26 +35,56 @@ Shares shares(const LammpsRun& l) {
           percent(l.log.loop_s - get("Neigh") - get("Pair"), l.log.loop_s)};
 }
 
+
+/// Median of a non-empty list.
+double median_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+/// "1 rank" / "2 ranks".
+std::string ranks_text(int ranks) { return fmt::format("{} rank{}", ranks, ranks > 1 ? "s" : ""); }
+
+/// Every pairwise ratio as "1.23, 1.25".
+std::string ratio_list(const std::vector<double>& all) {
+  std::string each;
+  for (const double x : all) each += fmt::format("{}{:.2f}", each.empty() ? "" : ", ", x);
+  return each;
+}
+
 }  // namespace
 
-std::vector<double> BenchResult::ratios() const {
+const CodeBench* BenchResult::code(std::string_view engine) const {
+  for (const CodeBench& c : codes) {
+    if (c.code.engine == engine) return &c;
+  }
+  return nullptr;
+}
+
+CodeBench* BenchResult::code(std::string_view engine) {
+  return const_cast<CodeBench*>(static_cast<const BenchResult&>(*this).code(engine));
+}
+
+std::vector<double> BenchResult::ratios(std::string_view engine) const {
   std::vector<double> out;
-  for (std::size_t k = 0; k < core_runs.size() && k < lammps_runs.size(); ++k) {
-    if (lammps_runs[k].status != "ok" || lammps_runs[k].particle_steps_per_s <= 0.0) continue;
-    out.push_back(core_runs[k].particle_steps_per_s / lammps_runs[k].particle_steps_per_s);
+  const CodeBench* c = code(engine);
+  if (c == nullptr) return out;
+  for (std::size_t k = 0; k < core_runs.size() && k < c->runs.size(); ++k) {
+    if (c->runs[k].status != "ok" || c->runs[k].particle_steps_per_s <= 0.0) continue;
+    out.push_back(core_runs[k].particle_steps_per_s / c->runs[k].particle_steps_per_s);
   }
   return out;
 }
 
-std::optional<double> BenchResult::ratio() const {
-  std::vector<double> r = ratios();
-  if (r.empty()) {
-    if (!core || !lammps || lammps->status != "ok" || lammps->particle_steps_per_s <= 0.0) return std::nullopt;
-    return core->particle_steps_per_s / lammps->particle_steps_per_s;
+std::optional<double> BenchResult::ratio(std::string_view engine) const {
+  const std::vector<double> r = ratios(engine);
+  if (!r.empty()) return median_of(r);
+  const CodeBench* c = code(engine);
+  if (!core || c == nullptr || !c->median || c->median->status != "ok" || c->median->particle_steps_per_s <= 0.0) {
+    return std::nullopt;
   }
-  std::sort(r.begin(), r.end());
-  const std::size_t m = r.size() / 2;
-  return r.size() % 2 == 1 ? r[m] : 0.5 * (r[m - 1] + r[m]);
+  return core->particle_steps_per_s / c->median->particle_steps_per_s;
 }
 
 void choose_medians(BenchResult& r) {
@@ -63,16 +93,16 @@ void choose_medians(BenchResult& r) {
     return runs[runs.size() / 2];
   };
   if (!r.core_runs.empty()) r.core = median(r.core_runs, [](const CoreRun& c) { return c.particle_steps_per_s; });
-  if (!r.lammps_runs.empty()) {
-    std::vector<LammpsRun> ok;
-    for (const LammpsRun& l : r.lammps_runs) {
+  for (CodeBench& c : r.codes) {
+    if (c.runs.empty()) continue;
+    std::vector<CodeRun> ok;
+    for (const CodeRun& l : c.runs) {
       if (l.status == "ok") ok.push_back(l);
     }
-    r.lammps = ok.size() == r.lammps_runs.size()
-                   ? median(ok, [](const LammpsRun& l) { return l.particle_steps_per_s; })
-                   : r.lammps_runs.front();
-    for (const LammpsRun& l : r.lammps_runs) {
-      if (l.status != "ok") r.lammps = l;  // a failed repetition is what the result reports
+    c.median = ok.size() == c.runs.size() ? median(ok, [](const CodeRun& l) { return l.particle_steps_per_s; })
+                                          : c.runs.front();
+    for (const CodeRun& l : c.runs) {
+      if (l.status != "ok") c.median = l;  // a failed repetition is what the result reports
     }
   }
 }
@@ -81,7 +111,10 @@ bool BenchResult::ok() const {
   for (const EnergyCheck& c : checks) {
     if (!c.match) return false;
   }
-  return !lammps || lammps->status == "ok" || lammps->status == "n/a";
+  for (const CodeBench& c : codes) {
+    if (!c.median || (c.median->status != "ok" && c.median->status != "n/a")) return false;
+  }
+  return true;
 }
 
 nlohmann::json bench_json(const BenchResult& r) {
@@ -110,8 +143,9 @@ nlohmann::json bench_json(const BenchResult& r) {
         {"neighbor_builds", c.list_builds},
         {"reorders", c.reorders}};
   }
-  if (r.lammps) {
-    const LammpsRun& l = *r.lammps;
+  for (const CodeBench& c : r.codes) {
+    if (!c.median) continue;
+    const CodeRun& l = *c.median;
     nlohmann::json e{{"ranks", l.ranks}, {"status", l.status}, {"version", l.version}};
     if (l.status == "ok") {
       const Shares s = shares(l);
@@ -122,15 +156,22 @@ nlohmann::json bench_json(const BenchResult& r) {
     } else {
       e["reason"] = l.reason;
     }
-    j["engines"]["lammps"] = e;
+    j["engines"][c.code.engine] = e;
   }
-  j["ratio_inhouse_to_lammps"] = r.ratio() ? nlohmann::json(*r.ratio()) : nlohmann::json(nullptr);
+  for (const char* engine : {"lammps", "liggghts"}) {
+    const auto ratio = r.ratio(engine);
+    j[fmt::format("ratio_inhouse_to_{}", engine)] = ratio ? nlohmann::json(*ratio) : nlohmann::json(nullptr);
+  }
+  std::size_t repetitions = r.core_runs.size();
+  for (const CodeBench& c : r.codes) repetitions = std::max(repetitions, c.runs.size());
   nlohmann::json reps = nlohmann::json::array();
-  for (std::size_t k = 0; k < std::max(r.core_runs.size(), r.lammps_runs.size()); ++k) {
-    nlohmann::json rep;
+  for (std::size_t k = 0; k < repetitions; ++k) {
+    nlohmann::json rep = nlohmann::json::object();
     if (k < r.core_runs.size()) rep["inhouse_particle_steps_per_s"] = r.core_runs[k].particle_steps_per_s;
-    if (k < r.lammps_runs.size() && r.lammps_runs[k].status == "ok") {
-      rep["lammps_particle_steps_per_s"] = r.lammps_runs[k].particle_steps_per_s;
+    for (const CodeBench& c : r.codes) {
+      if (k < c.runs.size() && c.runs[k].status == "ok") {
+        rep[c.code.engine + "_particle_steps_per_s"] = c.runs[k].particle_steps_per_s;
+      }
     }
     reps.push_back(rep);
   }
@@ -157,23 +198,25 @@ std::string bench_table(const BenchResult& r) {
                        static_cast<double>(c.bytes) / static_cast<double>(c.particles), s.neighbor, s.forces,
                        s.integration);
   }
-  if (r.lammps) {
-    const LammpsRun& l = *r.lammps;
+  for (const CodeBench& c : r.codes) {
+    if (!c.median) continue;
+    const CodeRun& l = *c.median;
     if (l.status == "ok") {
       const Shares s = shares(l);
-      out += fmt::format("{:<10} {:>9} {:>10.3f} {:>18.4g} {:>15.0f} {:>9.1f}% {:>7.1f}% {:>11.1f}%\n", "lammps",
-                         fmt::format("{} rank{}", l.ranks, l.ranks > 1 ? "s" : ""), l.log.loop_s,
-                         l.particle_steps_per_s, l.bytes_per_particle, s.neighbor, s.forces, s.integration);
+      out += fmt::format("{:<10} {:>9} {:>10.3f} {:>18.4g} {:>15.0f} {:>9.1f}% {:>7.1f}% {:>11.1f}%\n", c.code.engine,
+                         ranks_text(l.ranks), l.log.loop_s, l.particle_steps_per_s, l.bytes_per_particle, s.neighbor,
+                         s.forces, s.integration);
     } else {
-      out += fmt::format("{:<10} {}: {}\n", "lammps", l.status, l.reason);
+      out += fmt::format("{:<10} {}: {}\n", c.code.engine, l.status, l.reason);
     }
   }
-  if (const auto ratio = r.ratio()) {
-    const std::vector<double> all = r.ratios();
-    std::string each;
-    for (const double x : all) each += fmt::format("{}{:.2f}", each.empty() ? "" : ", ", x);
-    out += fmt::format("ratio inhouse / lammps: {:.2f}{}\n", *ratio,
-                       all.size() > 1 ? fmt::format(" (median of {} alternating pairs: {})", all.size(), each) : "");
+  for (const CodeBench& c : r.codes) {
+    if (const auto ratio = r.ratio(c.code.engine)) {
+      const std::vector<double> all = r.ratios(c.code.engine);
+      out += fmt::format("ratio inhouse / {}: {:.2f}{}\n", c.code.engine, *ratio,
+                         all.size() > 1 ? fmt::format(" (median of {} alternating pairs: {})", all.size(), ratio_list(all))
+                                        : "");
+    }
   }
   for (const EnergyCheck& c : r.checks) {
     out += fmt::format("{}: inhouse {}, LAMMPS reference log {}{} — {}\n", c.quantity, c.core, c.reference,
@@ -196,32 +239,36 @@ std::string bench_markdown(const BenchResult& r, const std::string& command) {
                       static_cast<double>(c.bytes) / static_cast<double>(c.particles), s.neighbor, s.forces,
                       s.integration);
   }
-  if (r.lammps) {
-    const LammpsRun& l = *r.lammps;
+  for (const CodeBench& c : r.codes) {
+    if (!c.median) continue;
+    const CodeRun& l = *c.median;
     if (l.status == "ok") {
       const Shares s = shares(l);
-      md += fmt::format("| LAMMPS {} | {} rank{} | {:.3f} | {:.4g} | {:.0f} | {:.1f} % | {:.1f} % | {:.1f} % |\n",
-                        l.version, l.ranks, l.ranks > 1 ? "s" : "", l.log.loop_s, l.particle_steps_per_s,
-                        l.bytes_per_particle, s.neighbor, s.forces, s.integration);
+      md += fmt::format("| {} {} | {} | {:.3f} | {:.4g} | {:.0f} | {:.1f} % | {:.1f} % | {:.1f} % |\n", c.code.title,
+                        l.version, ranks_text(l.ranks), l.log.loop_s, l.particle_steps_per_s, l.bytes_per_particle,
+                        s.neighbor, s.forces, s.integration);
     } else {
-      md += fmt::format("| LAMMPS | {} ranks | {}: {} | | | | | |\n", l.ranks, l.status, l.reason);
+      md += fmt::format("| {} | {} | {}: {} | | | | | |\n", c.code.title, ranks_text(l.ranks), l.status, l.reason);
     }
   }
-  if (const auto ratio = r.ratio()) {
-    md += fmt::format("\nRatio of particle-steps/s, inhouse / LAMMPS, measured in this one run: **{:.2f}**", *ratio);
-    const std::vector<double> all = r.ratios();
+  for (const CodeBench& c : r.codes) {
+    const auto ratio = r.ratio(c.code.engine);
+    if (!ratio) continue;
+    md += fmt::format("\nRatio of particle-steps/s, inhouse / {}, measured in this one run: **{:.2f}**", c.code.title,
+                      *ratio);
+    const std::vector<double> all = r.ratios(c.code.engine);
     if (all.size() > 1) {
-      std::string each;
-      for (const double x : all) each += fmt::format("{}{:.2f}", each.empty() ? "" : ", ", x);
       md += fmt::format(" (median of {} pairs of runs made one after the other: {}; the table shows each engine's "
-                        "median run)", all.size(), each);
+                        "median run)",
+                        all.size(), ratio_list(all));
     }
     md += ".\n";
   }
   md += "\nBytes per particle: the core counts the capacity of its arrays, lists and history; LAMMPS "
-        "reports its own \"Per MPI rank memory allocation\" (times the ranks). Time shares: the core's "
-        "neighbour builds and force loops are timed inside the run; LAMMPS's come from its timing "
-        "breakdown (Neigh, Pair; the rest is integration, fixes and communication).\n";
+        "reports its own \"Per MPI rank memory allocation\", LIGGGHTS its \"Memory usage per processor\" "
+        "(times the ranks). Time shares: the core's neighbour builds and force loops are timed inside the "
+        "run; the codes' come from their timing breakdown (Neigh, Pair; the rest is integration, fixes, "
+        "walls and communication).\n";
   if (!r.checks.empty()) {
     md += "\n| check | inhouse | LAMMPS reference log | LAMMPS here | |\n|---|---|---|---|---|\n";
     for (const EnergyCheck& c : r.checks) {

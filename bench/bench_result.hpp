@@ -4,12 +4,13 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "bench/code_run.hpp"
 #include "bench/core_run.hpp"
-#include "bench/lammps_run.hpp"
 
 namespace bench {
 
@@ -23,6 +24,13 @@ struct EnergyCheck {
   bool match = false;     ///< core == reference (and == lammps when it ran)
 };
 
+/// Every run of one reference code in a bench, and the one the result reports.
+struct CodeBench {
+  BenchCode code;
+  std::vector<CodeRun> runs;     ///< every repetition, in order (alternating with the core's)
+  std::optional<CodeRun> median; ///< the median run by particle-steps/s, or the first failed one
+};
+
 /// Everything `demwb bench` measured on one scene.
 struct BenchResult {
   std::string scene;
@@ -30,28 +38,31 @@ struct BenchResult {
   std::size_t particles = 0;
   std::uint64_t steps = 0;
   std::optional<CoreRun> core;       ///< the core's median run (by particle-steps/s)
-  std::optional<LammpsRun> lammps;   ///< LAMMPS's median run
-  std::vector<CoreRun> core_runs;    ///< every repetition, in order (core and LAMMPS alternate)
-  std::vector<LammpsRun> lammps_runs;
+  std::vector<CoreRun> core_runs;    ///< every repetition, in order (core and the codes alternate)
+  std::vector<CodeBench> codes;      ///< the reference codes asked for, in the order asked
   std::vector<EnergyCheck> checks;
   std::vector<std::string> notes;
 
-  /// Core particle-steps/s over LAMMPS's, when both ran: the median of the ratios of the runs
-  /// made one after the other (repetition k of the core over repetition k of LAMMPS).
-  [[nodiscard]] std::optional<double> ratio() const;
-  /// Every pairwise ratio.
-  [[nodiscard]] std::vector<double> ratios() const;
-  /// True when every check matched and every engine asked for ran (or cannot express the scene).
+  /// The code with this engine name, or null.
+  [[nodiscard]] const CodeBench* code(std::string_view engine) const;
+  [[nodiscard]] CodeBench* code(std::string_view engine);
+  /// Core particle-steps/s over the code's, when both ran: the median of the ratios of the runs
+  /// made one after the other (repetition k of the core over repetition k of the code).
+  [[nodiscard]] std::optional<double> ratio(std::string_view engine) const;
+  /// Every pairwise ratio against the code.
+  [[nodiscard]] std::vector<double> ratios(std::string_view engine) const;
+  /// True when every check matched and every code asked for ran (or cannot express the scene).
   [[nodiscard]] bool ok() const;
 };
 
-/// Sets `core` and `lammps` to the median runs of `core_runs` and `lammps_runs`.
+/// Sets `core` and every code's `median` from their runs.
 void choose_medians(BenchResult& r);
 
-/// bench.json: {"scene", "n_particles", "steps", "engines": {"inhouse": {...}, "lammps": {...}},
-/// "ratio_inhouse_to_lammps", "repetitions", "checks", "notes"}.
+/// bench.json: {"scene", "n_particles", "steps", "engines": {"inhouse": {...}, "lammps": {...},
+/// "liggghts": {...}}, "ratio_inhouse_to_lammps", "ratio_inhouse_to_liggghts", "repetitions",
+/// "checks", "notes"}.
 nlohmann::json bench_json(const BenchResult& r);
-/// report.md: the scene, a table per engine, the ratio, the checks and how to reproduce.
+/// report.md: the scene, a table per engine, the ratios, the checks and how to reproduce.
 std::string bench_markdown(const BenchResult& r, const std::string& command);
 /// A short table for the terminal.
 std::string bench_table(const BenchResult& r);

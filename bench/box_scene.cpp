@@ -14,20 +14,22 @@ cases::Scene box_scene(std::size_t n, std::uint64_t steps, std::uint64_t seed) {
   constexpr double kTimestep = 5e-6;
   cases::Scene scene;
   scene.name = fmt::format("bench_box_{}", n);
-  scene.description = fmt::format("{} Hertz spheres with history friction settling in a box", n);
+  scene.description = fmt::format("{} Hertz–Mindlin spheres settling in a box", n);
   dem::MaterialProperties grain;
   grain.name = "grain";
   grain.density = 2500.0;
   grain.youngs_modulus = 1e7;
   grain.poisson_ratio = 0.3;
-  grain.damping_rate = 100.0;
-  grain.tangential_stiffness = 200.0;
+  grain.restitution = 0.5;
   grain.tangential_damping_ratio = 0.0;
   grain.friction = 0.5;
   scene.materials = {grain};
+  // The law all three timed codes express: LAMMPS `hertz/material … damping tsuji tangential
+  // mindlin`, LIGGGHTS `model hertz tangential history` (tangential_damping off).
   scene.model.normal = "hertz";
-  scene.model.damping = "lammps_mass_velocity";
-  scene.model.tangential = "spring_coulomb";
+  scene.model.damping = "tsuji";
+  scene.model.tangential = "mindlin_8g";
+  scene.model.mindlin_form = dem::MindlinForm::total;
   scene.model.friction_limit = dem::FrictionLimit::elastic_damping;
 
   // A square column of sites: w × w per layer, as many layers as needed (about w), generated at

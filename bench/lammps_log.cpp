@@ -68,6 +68,11 @@ LammpsLog parse_lammps_log(std::string_view text) {
       log.memory_mb_per_rank = std::max(log.memory_mb_per_rank, to_number(w[5]).value_or(0.0));
       continue;
     }
+    // "Pair  time (%) = 0.050545 (82.1449)" (LAMMPS before 2014, LIGGGHTS 3.8)
+    if (w.size() >= 6 && w[1] == "time" && w[2] == "(%)" && w[3] == "=") {
+      if (const auto seconds = to_number(w[4])) log.breakdown_s[std::string(w[0])] += *seconds;
+      continue;
+    }
     if (starts_with(raw, "Section |")) {
       in_breakdown = true;
       continue;

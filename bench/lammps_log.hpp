@@ -15,7 +15,7 @@ struct ThermoRow {
   std::map<std::string, double> values;
 };
 
-/// What a LAMMPS log says about a run's cost and state.
+/// What a LAMMPS or LIGGGHTS log says about a run's cost and state.
 struct LammpsLog {
   double loop_s = 0.0;                  ///< sum of "Loop time of …" over every run command
   std::uint64_t steps = 0;              ///< sum of their steps
@@ -26,7 +26,8 @@ struct LammpsLog {
   std::vector<ThermoRow> thermo;        ///< every thermo row, in order
 };
 
-/// Reads a log.lammps text (LAMMPS 2016–2022 formats).
+/// Reads a log.lammps text (LAMMPS 2016–2022 formats) or a log of LIGGGHTS 3.8 (LAMMPS 2013's
+/// memory line and timing breakdown).
 LammpsLog parse_lammps_log(std::string_view text);
 
 }  // namespace bench

@@ -14,7 +14,7 @@ namespace {
 
 // Every line below restates one step of pair_geometry and evaluate_contact_in (with
 // LinearNormal or HertzNormal, LammpsMassVelocityDamping, SpringCoulombTangential, NoCohesion,
-// NoRolling; or HertzNormal, TsujiDamping, Mindlin8GTangential in its incremental form,
+// NoRolling; or HertzNormal, TsujiDamping, Mindlin8GTangential in either form,
 // NoCohesion, NoRolling) in the same operation order, so that each result is rounded exactly as there.
 // Branches become selects: a lane computes both sides and keeps one, which is what lets the
 // compiler evaluate four lanes per instruction. No fused multiply–add: the file is compiled
@@ -211,11 +211,11 @@ template <BatchLawKind Normal, bool IncrementProject>
   }
 }
 
-/// The loop over lanes for Hertz with Tsuji's dashpot and incremental Mindlin friction (the
-/// arithmetic of HertzNormal, TsujiDamping and incremental_mindlin_response), for one
-/// tangential-history rule and one contact-velocity rule (lane_geometry); the other policies
-/// enter as numbers, as in evaluate_lanes.
-template <bool IncrementProject, bool RadiusVelocity>
+/// The loop over lanes for Hertz with Tsuji's dashpot and Mindlin friction (the arithmetic of
+/// HertzNormal, TsujiDamping and incremental_mindlin_response, or under `Total` of
+/// total_mindlin_response), for one tangential-history rule and one contact-velocity rule
+/// (lane_geometry); the other policies enter as numbers, as in evaluate_lanes.
+template <bool IncrementProject, bool RadiusVelocity, bool Total>
 [[gnu::always_inline]] inline void evaluate_mindlin_lanes(ContactBatch& b, std::uint32_t n, const BatchPolicies& p,
                                                           double elapsed) noexcept {
   const PolicyNumbers k = policy_numbers(p);
@@ -241,23 +241,54 @@ template <bool IncrementProject, bool RadiusVelocity>
     double basis = 0.0;
     normal_force_and_basis(elastic, eta, geo.normal_speed, k, normal_force, basis);
 
-    // Incremental Mindlin: σ ← σ + a u_t Δt at the contact radius a = √(R* δ), F = −c σ − η_t u_t.
     const double a = laws::mindlin_contact_radius(reduced_radius, overlap);
     const V3 tangential_velocity = geo.tangential_velocity;
     const V3 start = lane_carried_slip<IncrementProject>(b, g, geo.normal);
-    const V3 integrated = start + (a * elapsed) * tangential_velocity;
     const double eta_t = ratio * eta;
     const double limit = mu * basis;
     const double cap = limit < 0.0 ? 0.0 : limit;
-    const V3 trial = -c * integrated - eta_t * tangential_velocity;
     bool sliding = false;
     bool dropped = false;
     V3 capped;
     V3 friction;
-    coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
-    const V3 truncated = select(c > 0.0, -(capped + eta_t * tangential_velocity) / c, V3{0.0, 0.0, 0.0});
-    const V3 next_slip = select(sliding & !dropped, truncated, integrated);
+    V3 next_slip;
+    if constexpr (Total) {
+      // Total form: the spring–Coulomb slider at k_t = c a on the whole slip ς ← ς + u_t Δt
+      // (laws::spring_slider, as evaluate_lanes; c a is 8 G* a to the bit, since c = 8 G* · 1).
+      const double kt = c * a;
+      const bool spring = kt > 0.0;
+      const V3 integrated = start + tangential_velocity * elapsed;
+      const V3 stored = select(spring, integrated, V3{0.0, 0.0, 0.0});
+      const V3 trial = -kt * stored - eta_t * tangential_velocity;
+      coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
+      const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
+      next_slip = select(sliding && spring && !dropped, truncated, stored);
+    } else {
+      // Incremental: σ ← σ + a u_t Δt at the contact radius a = √(R* δ), F = −c σ − η_t u_t.
+      const V3 integrated = start + (a * elapsed) * tangential_velocity;
+      const V3 trial = -c * integrated - eta_t * tangential_velocity;
+      coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
+      const V3 truncated = select(c > 0.0, -(capped + eta_t * tangential_velocity) / c, V3{0.0, 0.0, 0.0});
+      next_slip = select(sliding & !dropped, truncated, integrated);
+    }
     store_lane(b, g, geo, normal_force, friction, next_slip);
+  }
+}
+
+/// The Mindlin lane loop of one form, chosen by the history and contact-velocity rules.
+template <bool Total>
+[[gnu::always_inline]] inline void evaluate_mindlin_form(ContactBatch& batch, std::uint32_t n,
+                                                         const BatchPolicies& policies, double elapsed) noexcept {
+  if (policies.increment_project) {
+    if (policies.radius_velocity) {
+      evaluate_mindlin_lanes<true, true, Total>(batch, n, policies, elapsed);
+    } else {
+      evaluate_mindlin_lanes<true, false, Total>(batch, n, policies, elapsed);
+    }
+  } else if (policies.radius_velocity) {
+    evaluate_mindlin_lanes<false, true, Total>(batch, n, policies, elapsed);
+  } else {
+    evaluate_mindlin_lanes<false, false, Total>(batch, n, policies, elapsed);
   }
 }
 
@@ -269,16 +300,10 @@ template <bool IncrementProject, bool RadiusVelocity>
                                                                       const BatchPolicies& policies,
                                                                       double elapsed) noexcept {
   if (policies.kind == BatchLawKind::hertz_mindlin) {
-    if (policies.increment_project) {
-      if (policies.radius_velocity) {
-        evaluate_mindlin_lanes<true, true>(batch, n, policies, elapsed);
-      } else {
-        evaluate_mindlin_lanes<true, false>(batch, n, policies, elapsed);
-      }
-    } else if (policies.radius_velocity) {
-      evaluate_mindlin_lanes<false, true>(batch, n, policies, elapsed);
+    if (policies.mindlin_total) {
+      evaluate_mindlin_form<true>(batch, n, policies, elapsed);
     } else {
-      evaluate_mindlin_lanes<false, false>(batch, n, policies, elapsed);
+      evaluate_mindlin_form<false>(batch, n, policies, elapsed);
     }
     return;
   }

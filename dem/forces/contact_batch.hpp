@@ -3,7 +3,8 @@
 // The many-body pair loop's batched contact evaluation: the same arithmetic as evaluate_contact
 // for two families of laws without cohesion or rolling resistance — a linear or Hertz spring with
 // the mass-scaled dashpot and spring–Coulomb friction (LAMMPS' granular benchmarks), and Hertz
-// with Tsuji's dashpot and incremental Mindlin friction (the packing and hopper cases) — laid
+// with Tsuji's dashpot and Mindlin friction, total or incremental (the packing and hopper cases,
+// the box benchmark) — laid
 // out as one structure of arrays per batch of pairs so
 // that the compiler evaluates several pairs per instruction. A test holds it bit-for-bit to
 // evaluate_contact on random pairs under every policy (tests/dem/contact_batch_test.cpp); the
@@ -23,16 +24,15 @@ inline constexpr std::uint32_t kContactBatch = 240;
 enum class BatchLawKind : std::uint8_t {
   linear,  ///< F = k δ (LinearNormal, thesis eq 3.10), mass-scaled dashpot, spring–Coulomb friction
   hertz,   ///< F = 4/3 E* √R* δ^{3/2} (HertzNormal, eq 3.12–3.13), mass-scaled dashpot, spring–Coulomb
-  /// Hertz, Tsuji's dashpot η = α √(m* F/δ) (TsujiDamping) and Mindlin friction k_t = 8 G* a loaded
-  /// increment by increment (Mindlin8GTangential under MindlinForm::incremental)
+  /// Hertz, Tsuji's dashpot η = α √(m* F/δ) (TsujiDamping) and Mindlin friction k_t = 8 G* a
+  /// (Mindlin8GTangential) in either MindlinForm (BatchPolicies::mindlin_total)
   hertz_mindlin,
 };
 
 /// The contact model's policies as the batch kernel reads them (values of ContactPolicies and
 /// PairLeverArm, docs/physics.md). The kernel handles every combination except the lever arm
 /// PairLeverArm::yade_incident (and radius_velocity outside the Mindlin law) and the history rule
-/// yade_rotate, which the pair loop leaves to evaluate_contact; of the Mindlin law, the
-/// incremental form only.
+/// yade_rotate, which the pair loop leaves to evaluate_contact.
 struct BatchPolicies {
   BatchLawKind kind = BatchLawKind::linear;  ///< the law the batch evaluates
   bool lever_arm_radius = false;          ///< PairLeverArm::radius (else contact_point, r − δ/2)
@@ -42,6 +42,7 @@ struct BatchPolicies {
   bool clamp_tensile = false;             ///< ContactPolicies::clamp_tensile
   bool contact_at_zero_overlap = false;   ///< ContactPolicies::contact_at_zero_overlap
   bool zero_when_unloaded = false;        ///< UnloadedSlider::zero (else cap)
+  bool mindlin_total = false;             ///< MindlinForm::total (hertz_mindlin only; else incremental)
 };
 
 /// One material pair's parameters in the batch family.

@@ -46,7 +46,7 @@ template <> struct BatchFamily<HertzMindlinLaw> {
 
 /// True when the batched kernel evaluates a law of batch family `Family` under these policies: the
 /// r − δ/2 and r lever arms (and for Mindlin the radius_velocity one), the two LAMMPS history
-/// rules, the whole-force Coulomb test, and of Mindlin the incremental form.
+/// rules, the whole-force Coulomb test, and of Mindlin either form.
 template <class Family>
 [[nodiscard]] bool batch_covers(const ContactPolicies& p, PairLeverArm arm) noexcept {
   if constexpr (!Family::kBatched) {
@@ -54,8 +54,7 @@ template <class Family>
   } else {
     constexpr bool kMindlin = Family::kKind == BatchLawKind::hertz_mindlin;
     return arm != PairLeverArm::yade_incident && (kMindlin || arm != PairLeverArm::radius_velocity) &&
-           p.tangential_history != TangentialHistory::yade_rotate && p.coulomb_test == CoulombTest::total &&
-           (!kMindlin || p.mindlin_form == MindlinForm::incremental);
+           p.tangential_history != TangentialHistory::yade_rotate && p.coulomb_test == CoulombTest::total;
   }
 }
 
@@ -380,6 +379,7 @@ BatchPolicies batch_policies(BatchLawKind kind, const ContactPolicies& p, PairLe
   b.clamp_tensile = p.clamp_tensile;
   b.contact_at_zero_overlap = p.contact_at_zero_overlap;
   b.zero_when_unloaded = p.unloaded_slider == UnloadedSlider::zero;
+  b.mindlin_total = kind == BatchLawKind::hertz_mindlin && p.mindlin_form == MindlinForm::total;
   return b;
 }
 

@@ -168,7 +168,7 @@ void write_box_and_properties(std::string& deck, const cases::Scene& scene, cons
   line(deck, "pair_coeff", "* *");
   double r_max = 0.0;
   for (const cases::ParticleSpec& p : scene.particles) r_max = std::max(r_max, p.radius);
-  line(deck, "neighbor", fmt::format("{} bin", num(std::max(r_max, 1e-9))));
+  line(deck, "neighbor", fmt::format("{} bin", num(s.skin > 0.0 ? s.skin : std::max(r_max, 1e-9))));
   // LIGGGHTS zeroes a pair's slip history when it separates only while the pair is within
   // contact_distance_factor × (r_p + r_q); at the default 1 never, so a pair that touches again
   // before the next list build would resume its old slip.
@@ -211,8 +211,10 @@ void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& 
   if (!particle_types(types, true).empty()) {
     line(deck, "neigh_modify", "exclude group tr_fixed tr_fixed  # as the core: two frozen spheres never interact");
   }
-  deck += "# the pair forces alone, stored before walls and gravity add theirs and freeze zeroes them\n";
-  line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
+  if (!s.timing_only) {
+    deck += "# the pair forces alone, stored before walls and gravity add theirs and freeze zeroes them\n";
+    line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
+  }
   for (std::size_t w = 0; w < scene.walls.size() && any_mobile; ++w) {
     const std::optional<WallPlane> plane = wall_plane(scene.walls[w]);
     if (!plane) continue;  // supports() reports it
@@ -221,10 +223,12 @@ void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& 
                           deck_comment_text(scene.walls[w].name));
       continue;
     }
-    deck += fmt::format("# wall {} ('{}'): a two-sided primitive plane of type {}; its force on each atom is stored\n",
-                        w, deck_comment_text(scene.walls[w].name), types.wall_type(w));
-    line(deck, "fix", fmt::format("{} tr_mobile wall/gran {} primitive type {} {} store_force yes{}", wall_fix_id(w),
-                                  model_words(c), types.wall_type(w), plane_arguments(*plane), model_settings(c)));
+    deck += fmt::format("# wall {} ('{}'): a two-sided primitive plane of type {}{}\n", w,
+                        deck_comment_text(scene.walls[w].name), types.wall_type(w),
+                        s.timing_only ? "" : "; its force on each atom is stored");
+    line(deck, "fix", fmt::format("{} tr_mobile wall/gran {} primitive type {} {}{}{}", wall_fix_id(w), model_words(c),
+                                  types.wall_type(w), plane_arguments(*plane),
+                                  s.timing_only ? "" : " store_force yes", model_settings(c)));
   }
   const cases::Vector3& g = scene.gravity;
   const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
@@ -279,7 +283,12 @@ std::string write_deck(const cases::Scene& scene, const AtomTypes& types, const 
   write_box_and_properties(deck, scene, types, contacts, settings);
   write_atoms(deck, scene, types);
   write_fixes(deck, scene, types, contacts, settings);
-  write_outputs(deck, scene, plan, settings);
+  if (settings.timing_only) {
+    line(deck, "thermo_modify", "lost error  # atoms leaving the box stop the run");
+    line(deck, "thermo", fmt::format("{}", std::max<std::uint64_t>(settings.steps, 1)));
+  } else {
+    write_outputs(deck, scene, plan, settings);
+  }
   line(deck, "run", fmt::format("{}", settings.steps));
   return deck;
 }

@@ -16,6 +16,8 @@ struct DeckSettings {
   std::uint64_t steps = 0;                       ///< steps to run
   std::string snapshot_file = "snapshots.dump";  ///< dump custom output
   std::string data_file = "atoms.data";          ///< atoms of a large scene (atoms_in_data_file), read by `read_data`
+  bool timing_only = false;  ///< `demwb bench`: no stored forces, trace columns or snapshots; thermo at the end
+  double skin = 0.0;         ///< neighbour skin [m]; 0: the largest radius
 };
 
 /// The whole LIGGGHTS deck: a pure function of the scene, its contact settings, trace plan and

@@ -13,6 +13,7 @@
 #include "reference/common/dump_text.hpp"
 #include "reference/liggghts/atom_types.hpp"
 #include "reference/liggghts/contact_mapping.hpp"
+#include "reference/liggghts/deck_parts.hpp"
 #include "reference/liggghts/run_conventions.hpp"
 #include "reference/liggghts/trace_columns.hpp"
 #include "reference/liggghts/wall_planes.hpp"
@@ -22,57 +23,7 @@
 #include "support/text_file.hpp"
 
 namespace reference {
-namespace {
 
-/// Everything the deck is made of, or the reasons it cannot be written.
-struct DeckParts {
-  liggghts::AtomTypes types;
-  std::optional<liggghts::ContactSettings> contacts;
-  std::vector<std::string> reasons;
-};
-
-DeckParts deck_parts(const PreparedScene& prepared) {
-  const cases::Scene& scene = prepared.scene();
-  DeckParts parts;
-  parts.types = liggghts::classify(scene);
-  std::vector<std::string>& reasons = parts.reasons;
-  for (std::size_t w = 0; w < scene.walls.size(); ++w) {
-    if (scene.walls[w].mesh) continue;  // one reason per mesh below
-    for (auto& reason : liggghts::unmapped_wall(scene.walls[w], w)) reasons.push_back(std::move(reason));
-  }
-  for (const cases::MeshSpec& mesh : scene.meshes) {
-    reasons.push_back(fmt::format("LIGGGHTS driver: mesh '{}' is not mapped yet (fix mesh/surface + fix wall/gran "
-                                  "mesh is LIGGGHTS' own)",
-                                  mesh.name));
-  }
-  if (scene.domain.any_periodic()) {
-    reasons.emplace_back("LIGGGHTS driver: periodic boundaries are not mapped yet (the trace formulas read "
-                         "wrapped positions)");
-  }
-  if (scene.fluid) {
-    reasons.emplace_back("LIGGGHTS driver: fluid forces (drag, buoyancy, plug flow) need CFDEM coupling; the "
-                         "standalone LIGGGHTS has none");
-  }
-  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    const cases::ParticleSpec& p = scene.particles[i];
-    if (!p.motion.empty()) {
-      reasons.push_back(fmt::format("LIGGGHTS driver: particle {} has a prescribed motion (not mapped yet)", i));
-    }
-    if (p.charge != 0.0) {
-      reasons.push_back(fmt::format("LIGGGHTS driver: particle {} is charged; pair gran has no electrostatics", i));
-    }
-  }
-  try {
-    liggghts::ContactMapping mapping = liggghts::map_contacts(scene, prepared.pair_table(), parts.types);
-    for (auto& reason : mapping.reasons) reasons.push_back(std::move(reason));
-    parts.contacts = std::move(mapping.settings);
-  } catch (const dem::ModelError& e) {
-    reasons.push_back(std::string("LIGGGHTS driver: the contact model is incomplete: ") + e.what());
-  }
-  return parts;
-}
-
-}  // namespace
 
 const liggghts::LiggghtsProbe& LiggghtsEngine::probe() const {
   std::call_once(probed_, [this] { probe_ = liggghts::probe_liggghts(options_.program, options_.probe_timeout_s); });
@@ -90,12 +41,12 @@ std::string LiggghtsEngine::location() const {
 
 Support LiggghtsEngine::supports(const PreparedScene& prepared) const {
   Support s;
-  s.reasons = deck_parts(prepared).reasons;
+  s.reasons = liggghts::deck_parts(prepared).reasons;
   return s;
 }
 
 std::string LiggghtsEngine::input_fingerprint(const PreparedScene& prepared) const {
-  const DeckParts parts = deck_parts(prepared);
+  const liggghts::DeckParts parts = liggghts::deck_parts(prepared);
   if (!parts.reasons.empty() || !parts.contacts) return {};
   try {
     const cases::Scene& scene = prepared.scene();
@@ -123,7 +74,7 @@ cases::RunResult LiggghtsEngine::run(const PreparedScene& prepared, const RunOpt
         fmt::format("LIGGGHTS timed out: its version probe used the whole time limit ({:.3g} s)", options.timeout_s),
         "");
   }
-  const DeckParts parts = deck_parts(prepared);
+  const liggghts::DeckParts parts = liggghts::deck_parts(prepared);
   if (!parts.reasons.empty() || !parts.contacts) {
     Support s;
     s.reasons = parts.reasons;

@@ -18,8 +18,9 @@
 namespace {
 
 /// A settling box of two materials in a law the batched kernel evaluates: `normal` "linear" or
-/// "hertz" with LAMMPS's mass-scaled dashpot and spring–Coulomb friction, or "hertz_mindlin"
-/// (Hertz, Tsuji's dashpot, incremental Mindlin friction, the tensile clamp).
+/// "hertz" with LAMMPS's mass-scaled dashpot and spring–Coulomb friction, "hertz_mindlin"
+/// (Hertz, Tsuji's dashpot, incremental Mindlin friction, the tensile clamp) or
+/// "hertz_mindlin_total" (the same with Mindlin friction in the total form: the box benchmark's).
 dem::SimulationSetup batched_box(std::uint32_t seed, const std::string& normal, dem::PairLeverArm arm,
                                  dem::TangentialHistory history) {
   dem::SimulationSetup s =
@@ -36,11 +37,11 @@ dem::SimulationSetup batched_box(std::uint32_t seed, const std::string& normal, 
   b.poisson_ratio = 0.25;
   s.materials = {a, b};
   for (std::size_t k = 0; k < s.particles.size(); k += 3) s.particles[k].material = 1;
-  if (normal == "hertz_mindlin") {  // the packing cases' law: Tsuji's dashpot, incremental Mindlin
+  if (normal.starts_with("hertz_mindlin")) {  // the packing cases' law: Tsuji's dashpot, Mindlin
     s.model.normal = "hertz";
     s.model.damping = "tsuji";
     s.model.tangential = "mindlin_8g";
-    s.model.mindlin_form = dem::MindlinForm::incremental;
+    s.model.mindlin_form = normal == "hertz_mindlin" ? dem::MindlinForm::incremental : dem::MindlinForm::total;
     s.model.clamp_tensile = true;
     s.materials[1].restitution = 0.8;
   } else {
@@ -84,12 +85,12 @@ void expect_same(const Snapshot& a, const Snapshot& b, const std::string& what) 
 TEST(BatchedPairLoop, ALedgerNeverChangesTheTrajectory) {
   const int steps = test_support::full_or_sanitized(300, 100);
   std::uint32_t seed = 31;
-  for (const char* normal : {"linear", "hertz", "hertz_mindlin"}) {
+  for (const char* normal : {"linear", "hertz", "hertz_mindlin", "hertz_mindlin_total"}) {
     int arm_index = 0;
     for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius,
                            dem::PairLeverArm::radius_velocity}) {
       ++arm_index;
-      if (arm == dem::PairLeverArm::radius_velocity && std::string(normal) != "hertz_mindlin") continue;
+      if (arm == dem::PairLeverArm::radius_velocity && !std::string(normal).starts_with("hertz_mindlin")) continue;
       int history_index = 0;
       for (const auto history : {dem::TangentialHistory::project_rescale, dem::TangentialHistory::increment_project}) {
         const dem::SimulationSetup setup = batched_box(seed++, normal, arm, history);

@@ -31,6 +31,7 @@ struct Case {
   bool clamp;
   bool zero_overlap;
   dem::UnloadedSlider unloaded;
+  dem::MindlinForm form = dem::MindlinForm::incremental;  ///< of the hertz_mindlin family
 };
 
 /// Bits of a double, so that −0 and +0 (and the payload of a NaN) count as different.
@@ -90,7 +91,7 @@ dem::PairLaw law_for(const Case& c, std::mt19937_64& rng) {
     law.damping = dem::TsujiDamping{e, dem::laws::tsuji_factor(e)};
     const double shear = unit(rng) < 0.1 ? 0.0 : modulus / (2.0 + unit(rng));
     law.tangential = dem::Mindlin8GTangential{{shear, unit(rng) < 0.1 ? 0.0 : unit(rng), ratio}};
-    law.policies.mindlin_form = dem::MindlinForm::incremental;
+    law.policies.mindlin_form = c.form;
   } else {
     if (c.normal == dem::BatchLawKind::linear) {
       law.normal = dem::LinearNormal{1e4 + 1e5 * unit(rng)};
@@ -130,7 +131,8 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
   // policies); the comparison with evaluate_contact below checks that mapping too.
   dem::BatchPolicies policies;
   for (std::uint32_t g = 0; g < lanes; ++g) {
-    pairs.push_back(random_pair(rng, c.normal == dem::BatchLawKind::hertz_mindlin ? 1e-5 : 1.0));
+    const bool incremental = c.normal == dem::BatchLawKind::hertz_mindlin && c.form == dem::MindlinForm::incremental;
+    pairs.push_back(random_pair(rng, incremental ? 1e-5 : 1.0));
     laws.push_back(law_for(c, rng));
     policies = dem::batch_policies(c.normal, laws.back().policies, c.arm);
     const RandomPair& r = pairs.back();
@@ -209,8 +211,12 @@ void check_case(const Case& c, std::uint64_t seed, std::uint32_t lanes, double e
 TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
   Reached reached;  // the spring–Coulomb families
   Reached mindlin;  // Hertz with Tsuji's dashpot and incremental Mindlin friction
+  Reached total;    // the same with Mindlin friction in the total form
   std::uint64_t seed = 20261204;
-  for (const auto normal : {dem::BatchLawKind::linear, dem::BatchLawKind::hertz, dem::BatchLawKind::hertz_mindlin}) {
+  for (const auto [normal, form] : {std::pair{dem::BatchLawKind::linear, dem::MindlinForm::incremental},
+                                    std::pair{dem::BatchLawKind::hertz, dem::MindlinForm::incremental},
+                                    std::pair{dem::BatchLawKind::hertz_mindlin, dem::MindlinForm::incremental},
+                                    std::pair{dem::BatchLawKind::hertz_mindlin, dem::MindlinForm::total}}) {
     for (const auto arm : {dem::PairLeverArm::contact_point, dem::PairLeverArm::radius,
                            dem::PairLeverArm::radius_velocity}) {
       // The r contact velocity with r − δ/2 lever arms: the Mindlin family's only.
@@ -222,11 +228,13 @@ TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
           for (const bool clamp : {false, true}) {
             for (const bool zero_overlap : {false, true}) {
               for (const auto unloaded : {dem::UnloadedSlider::cap, dem::UnloadedSlider::zero}) {
-                const Case c{normal, arm, history, limit, clamp, zero_overlap, unloaded};
+                const Case c{normal, arm, history, limit, clamp, zero_overlap, unloaded, form};
                 // Batches of every length up to a full one, so the vector loops' tails run too;
                 // one step into the contact, and at its first evaluation (elapsed 0).
                 const auto lanes = static_cast<std::uint32_t>(1 + seed % dem::kContactBatch);
-                Reached& tally = normal == dem::BatchLawKind::hertz_mindlin ? mindlin : reached;
+                Reached& tally = normal != dem::BatchLawKind::hertz_mindlin ? reached
+                                 : form == dem::MindlinForm::total                ? total
+                                                                                  : mindlin;
                 check_case(c, seed++, lanes, 1e-6, tally);
                 check_case(c, seed++, dem::kContactBatch, 1e-6, tally);
                 check_case(c, seed++, dem::kContactBatch, 0.0, tally);
@@ -246,9 +254,14 @@ TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
   EXPECT_GT(mindlin.sticking, 1000);
   EXPECT_GT(mindlin.apart, 1000);
   EXPECT_GT(mindlin.dropped, 20);
+  EXPECT_GT(total.sliding, 1000);
+  EXPECT_GT(total.sticking, 1000);
+  EXPECT_GT(total.apart, 1000);
+  EXPECT_GT(total.dropped, 20);
   std::cout << "spring-Coulomb: " << reached.sliding << " sliding, " << reached.sticking << " sticking, " << reached.apart
             << " apart, " << reached.dropped << " dropped; Mindlin: " << mindlin.sliding << ", " << mindlin.sticking
-            << ", " << mindlin.apart << ", " << mindlin.dropped << "\n";
+            << ", " << mindlin.apart << ", " << mindlin.dropped << "; total-form Mindlin: " << total.sliding << ", "
+            << total.sticking << ", " << total.apart << ", " << total.dropped << "\n";
 }
 
 }  // namespace

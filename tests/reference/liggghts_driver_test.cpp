@@ -15,6 +15,7 @@
 #include "reference/common/prepared_scene.hpp"
 #include "reference/liggghts/atom_types.hpp"
 #include "reference/liggghts/contact_mapping.hpp"
+#include "reference/liggghts/deck_parts.hpp"
 #include "reference/liggghts/deck_writer.hpp"
 #include "reference/liggghts/liggghts_runner.hpp"
 #include "reference/liggghts/trace_columns.hpp"
@@ -266,6 +267,36 @@ TEST(LiggghtsDeck, WritesWhatThisLiggghtsAcceptsInFullPrecision) {
   EXPECT_EQ(plan.columns.back().name, exact_column(0, 1));
   // The frozen sphere's force is its stored contact force (fix freeze zeroes fx).
   EXPECT_EQ(plan.columns[1 + 12 + 9].formula, "f_tr_pair_force[2][1]");
+}
+
+TEST(LiggghtsDeck, TheTimingDeckIsTheReferenceDeckWithoutItsOutputs) {
+  // `demwb bench`: the same atoms, model, walls and integration, the skin it is given, and none
+  // of the stored forces, trace columns or snapshots the reference run reads back.
+  const cases::Scene scene =
+      scene_of(case_text(kHertzModel + "\nclamp_tensile = true", with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0), true));
+  const reference::PreparedScene prepared(scene);
+  const TimingDeck t = timing_deck(prepared, 1e-6, 100, 3e-4);
+  ASSERT_TRUE(t.reasons.empty()) << t.reasons.front();
+  EXPECT_TRUE(t.data.empty());  // two spheres: atoms inline
+  for (const char* wanted :
+       {"pair_style      gran model hertz tangential history limitForce on tangential_damping off",
+        "neighbor        0.00029999999999999997 bin", "contact_distance_factor 1.1",
+        "primitive type 3 zplane -0.01 limitForce on tangential_damping off", "fix             tr_freeze tr_fixed freeze",
+        "thermo_modify   lost error", "thermo          100", "run             100", "create_atoms    1 single 0 0 0"}) {
+    EXPECT_NE(t.deck.find(wanted), std::string::npos) << wanted << "\n" << t.deck;
+  }
+  for (const char* absent : {"store/force", "store_force", "variable", "thermo_style", "dump"}) {
+    EXPECT_EQ(t.deck.find(absent), std::string::npos) << absent << "\n" << t.deck;
+  }
+  // A scene LIGGGHTS cannot express: reasons and no deck.
+  const cases::Scene jkr = scene_of(case_text("normal = \"hertz\"\ndamping = \"tsuji\"\ntangential = \"mindlin_8g\"\n"
+                                              "cohesion = \"jkr\"",
+                                              with_ratio(kSteel, 0.0) + "surface_energy = 0.1\n",
+                                              with_ratio(kGlass, 0.0) + "surface_energy = 0.1\n"));
+  const TimingDeck refused = timing_deck(reference::PreparedScene(jkr), 1e-6, 100, 3e-4);
+  ASSERT_FALSE(refused.reasons.empty());
+  EXPECT_TRUE(refused.deck.empty());
+  EXPECT_NE(refused.reasons.front().find("cohesion"), std::string::npos) << refused.reasons.front();
 }
 
 TEST(LiggghtsDeck, ManySpheresOfManySizesComeFromADataFileWithDiametersPerAtom) {
