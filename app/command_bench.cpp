@@ -204,8 +204,32 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
   dem::SimulationSetup core = setup.simulation;
   core.scheme_settings.orientation = false;  // LAMMPS' atom_style sphere keeps none either
   core.track_energy = scene.output.trace_energy;
-  if (o.inhouse) run_core = [core, steps] { return bench::run_core(core, steps, {}); };
+  if (o.inhouse) {
+    run_core = [core, steps] {
+      const std::vector<std::uint64_t> at{steps};
+      return bench::run_core(core, steps, at);
+    };
+  }
   alternate(o, r, jobs, run_core);
+  // The same physics: each engine's translational kinetic energy at the last step (LAMMPS' default
+  // thermo prints TotEng, which is kinetic alone under a granular pair style).
+  if (r.core && !r.core->energies.empty()) r.kinetic_energy_at_end["inhouse"] = r.core->energies.back().second.translational;
+  for (const bench::CodeBench& c : r.codes) {
+    if (!c.median || c.median->status != "ok" || c.median->log.thermo.empty()) continue;
+    const bench::ThermoRow& last = c.median->log.thermo.back();
+    if (last.step != steps) continue;
+    for (const char* column : {"KinEng", "TotEng"}) {
+      if (last.values.count(column) != 0) {
+        r.kinetic_energy_at_end[c.code.engine] = last.values.at(column);
+        break;
+      }
+    }
+  }
+  if (!r.kinetic_energy_at_end.empty()) {
+    std::string each;
+    for (const auto& [engine, e] : r.kinetic_energy_at_end) each += fmt::format("{}{} {:.6g}", each.empty() ? "" : ", ", engine, e);
+    r.notes.push_back(fmt::format("translational kinetic energy at step {} [J]: {}", steps, each));
+  }
   if (o.inhouse) {
     r.notes.push_back(fmt::format("core: {} neighbour-list builds in {} steps, {} Morton reorders; Δt = {:.3g} s",
                                   r.core->list_builds, steps, r.core->reorders, setup.simulation.timestep));

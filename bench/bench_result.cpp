@@ -182,6 +182,7 @@ nlohmann::json bench_json(const BenchResult& r) {
                       {"lammps", c.lammps}, {"match", c.match}});
   }
   j["checks"] = checks;
+  if (!r.kinetic_energy_at_end.empty()) j["kinetic_energy_at_end"] = r.kinetic_energy_at_end;
   j["notes"] = r.notes;
   return j;
 }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -41,6 +42,9 @@ struct BenchResult {
   std::vector<CoreRun> core_runs;    ///< every repetition, in order (core and the codes alternate)
   std::vector<CodeBench> codes;      ///< the reference codes asked for, in the order asked
   std::vector<EnergyCheck> checks;
+  /// Translational kinetic energy at the last step by engine [J] (a box or case file): the
+  /// codes ran the same physics when these agree to the chaos of the contacts.
+  std::map<std::string, double> kinetic_energy_at_end;
   std::vector<std::string> notes;
 
   /// The code with this engine name, or null.
