@@ -44,7 +44,7 @@ sweeps::SweepRun run_job(const sweeps::SweepSpec& spec, const sweeps::SweepPoint
   const auto start = std::chrono::steady_clock::now();
   try {
     const std::vector<std::pair<std::string, double>> values = sweeps::point_overrides(spec, point);
-    const std::string text = sweeps::override_case(case_text, spec.case_file.string(), values, seed);
+    const std::string text = sweeps::override_case(case_text, spec.case_file.string(), values, seed, spec.fixed);
     cases::Scene scene = cases::load_case_text(text, spec.case_file.string(), ctx.load);
     scene.compare.metrics = metrics;
     ctx.options.work_dir = out / "work" / fmt::format("p{:04d}_s{}", point.index, seed);
@@ -223,8 +223,14 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
   SweepPlan plan;
   plan.spec = sweeps::load_sweep((*vm)["sweep"].as<std::string>());
   plan.case_text = cases::read_case_file(plan.spec.case_file);
-  // The base case must load as it is: its errors are the user's to fix before any run.
+  // The base case must load as it is, and with the sweep's fixed settings: their errors are the
+  // user's to fix before any run.
   const cases::Scene base = cases::load_case_text(plan.case_text, plan.spec.case_file.string(), load_options(*vm));
+  if (!plan.spec.fixed.empty()) {
+    static_cast<void>(cases::load_case_text(
+        sweeps::override_case(plan.case_text, plan.spec.case_file.string(), {}, std::nullopt, plan.spec.fixed),
+        plan.spec.case_file.string(), load_options(*vm)));
+  }
   plan.engines = plan.spec.engines.empty() ? base.compare.engines : plan.spec.engines;
   if (vm->count("engines") != 0) plan.engines = split_names({(*vm)["engines"].as<std::string>()});
   for (const auto& e : plan.engines) {

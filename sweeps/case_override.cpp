@@ -87,10 +87,28 @@ void set_number(toml::node& node, double value, const std::string& key, const st
   throw cases::CaseError(path, key, "holds no number to sweep (sweep numbers only)");
 }
 
+/// Replaces the value at `node` by a fixed setting's, which must be of the same kind.
+void set_fixed(toml::node& node, const FixedSetting& f, const std::string& path) {
+  if (const auto* number = std::get_if<double>(&f.value)) {
+    set_number(node, *number, f.key, path);
+    return;
+  }
+  if (const auto* flag = std::get_if<bool>(&f.value)) {
+    auto* b = node.as_boolean();
+    if (b == nullptr) throw cases::CaseError(path, f.key, "holds no boolean; the sweep sets one");
+    *b = *flag;
+    return;
+  }
+  auto* str = node.as_string();
+  if (str == nullptr) throw cases::CaseError(path, f.key, "holds no string; the sweep sets one");
+  *str = std::get<std::string>(f.value);
+}
+
 }  // namespace
 
 std::string override_case(std::string_view text, const std::string& path,
-                          const std::vector<std::pair<std::string, double>>& values, std::optional<std::uint64_t> seed) {
+                          const std::vector<std::pair<std::string, double>>& values, std::optional<std::uint64_t> seed,
+                          const std::vector<FixedSetting>& fixed) {
   toml::table root;
   try {
     root = toml::parse(text, std::string_view(path));
@@ -98,6 +116,7 @@ std::string override_case(std::string_view text, const std::string& path,
     throw cases::CaseError(path, "(syntax)", std::string(e.description()), static_cast<int>(e.source().begin.line),
                            static_cast<int>(e.source().begin.column));
   }
+  for (const FixedSetting& f : fixed) set_fixed(find_node(root, f.key, path), f, path);
   for (const auto& [key, value] : values) set_number(find_node(root, key, path), value, key, path);
   if (seed) {
     toml::array* populations = root["populations"].as_array();

@@ -333,6 +333,25 @@ void write_sweep_report(const SweepResults& r, const std::filesystem::path& dir)
       "Case `{}`; {} points × {} seeds × {} engine(s) = {} rows in {:.1f} s{}. Reproduce with:\n\n```sh\n{}\n```\n\n",
       r.spec.case_file.string(), r.points.size(), r.spec.seeds.size(), r.engines.size(), r.rows.size(), r.seconds,
       r.ranks > 1 ? fmt::format(" on {} MPI ranks", r.ranks) : std::string(), r.command);
+  if (!r.spec.fixed.empty()) {
+    std::string held;
+    for (const FixedSetting& f : r.spec.fixed) {
+      const std::string value = std::visit(
+          [](const auto& v) -> std::string {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, std::string>) {
+              return fmt::format("\"{}\"", v);
+            } else if constexpr (std::is_same_v<T, bool>) {
+              return v ? "true" : "false";
+            } else {
+              return fmt::format("{:.17g}", v);
+            }
+          },
+          f.value);
+      held += fmt::format("{}`{} = {}`", held.empty() ? "" : ", ", reports::inert_text(f.key), reports::inert_text(value));
+    }
+    md += "Held in every run (the sweep's `set`): " + held + ".\n\n";
+  }
   md += "Each cell is the mean over the seeds ± its standard error (sample s.d./√n) and the number of "
         "seeds that gave a value. A many-body run is chaotic: one seed is one sample of the ensemble.\n\n";
   std::size_t failed = 0;

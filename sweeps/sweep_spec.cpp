@@ -24,7 +24,8 @@ using cases::loader::Value;
 constexpr auto kTopKeys = std::to_array<std::string_view>({"sweep", "parameters", "beverloo"});
 constexpr auto kBeverlooKeys = std::to_array<std::string_view>(
     {"orifice", "orifice_scale", "grain_diameter", "grain_density", "flow_rate", "packing_fraction", "gravity"});
-constexpr auto kSweepKeys = std::to_array<std::string_view>({"name", "description", "case", "seeds", "engines", "metrics", "timeout"});
+constexpr auto kSweepKeys =
+    std::to_array<std::string_view>({"name", "description", "case", "seeds", "engines", "metrics", "timeout", "set"});
 constexpr auto kAxisKeys = std::to_array<std::string_view>({"key", "label", "values", "scale", "with"});
 constexpr auto kLinkedKeys = std::to_array<std::string_view>({"key", "values"});
 constexpr std::array<std::string_view, 2> kScales{"linear", "log"};
@@ -123,8 +124,24 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
       spec.metrics.push_back(name);
     }
   }
+  std::set<std::string> taken;  // every key a setting, an axis or a linked key sets
+  if (const auto v = sweep.find("set")) {
+    for (const auto& [key, value] : v->table().entries()) {
+      check_axis_key(value, key);
+      taken.insert(key);
+      const toml::node& node = value.node();
+      if (node.is_string()) {
+        spec.fixed.push_back({key, value.string()});
+      } else if (node.is_boolean()) {
+        spec.fixed.push_back({key, value.boolean()});
+      } else if (node.is_number()) {
+        spec.fixed.push_back({key, value.number()});
+      } else {
+        value.fail("a setting is a string, a number or a boolean");
+      }
+    }
+  }
   const Value parameters = root.require("parameters", "array of tables [[parameters]]");
-  std::set<std::string> taken;  // every key an axis or a linked key sets
   for (const Value& entry : parameters.elements()) {
     const Table t = entry.table();
     t.allow_only(kAxisKeys);

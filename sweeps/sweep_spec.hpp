@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "sweeps/case_override.hpp"
+
 namespace sweeps {
 
 /// A case-file key that moves with an axis: it takes its own value at each of the axis' values
@@ -51,6 +53,7 @@ struct SweepSpec {
   /// Seconds before a reference code's run is killed ([sweep] timeout); none: the command's
   /// --timeout. An explicit --timeout wins over it.
   std::optional<double> timeout_s;
+  std::vector<FixedSetting> fixed;    ///< [sweep] set: case keys held at one value in every run
   std::vector<SweepAxis> axes;        ///< the matrix is their Cartesian product
   std::optional<BeverlooSpec> beverloo;  ///< fit Beverloo's law to the flow rates ([beverloo])
 };

@@ -59,6 +59,51 @@ TEST(CaseOverride, NamesTheKeyThatCannotBeSwept) {
   EXPECT_EQ(key_of("materials.m.cohesive_stiffness", 1.0), "(no error)");
 }
 
+TEST(CaseOverride, FixedSettingsReplaceValuesOfTheirOwnKind) {
+  const std::string base = test_support::small_agglomerate(8, 1);
+  const std::vector<sweeps::FixedSetting> fixed{{"integration.scheme", std::string("rk4")},
+                                                {"materials.m.cohesive_stiffness", 300.0}};
+  const cases::Scene s = cases::load_case_text(sweeps::override_case(base, "small.toml", {}, std::nullopt, fixed),
+                                               "small.toml");
+  EXPECT_EQ(s.integration.scheme, dem::SchemeId::rk4);
+  EXPECT_EQ(s.materials[0].cohesive_stiffness, 300.0);
+  // A swept value is applied after the fixed ones.
+  const cases::Scene swept = cases::load_case_text(
+      sweeps::override_case(base, "small.toml", {{"materials.m.cohesive_stiffness", 400.0}}, std::nullopt,
+                            {{"materials.m.cohesive_stiffness", 300.0}}),
+      "small.toml");
+  EXPECT_EQ(swept.materials[0].cohesive_stiffness, 400.0);
+  const auto key_of = [&](const sweeps::FixedSetting& f) {
+    return error_key([&] { static_cast<void>(sweeps::override_case(base, "small.toml", {}, std::nullopt, {f})); });
+  };
+  EXPECT_EQ(key_of({"model.normal", 2.0}), "model.normal");                          // a string, not a number
+  EXPECT_EQ(key_of({"materials.m.density", std::string("heavy")}), "materials.m.density");  // a number
+  EXPECT_EQ(key_of({"model.normal", true}), "model.normal");                         // not a boolean
+  EXPECT_EQ(key_of({"model.mindlin_frm", std::string("total")}), "model.mindlin_frm");  // absent: never added
+}
+
+TEST(SweepSpec, SetHoldsKeysAtOneValueAndMayNotAlsoBeSwept) {
+  const fs::path dir = fs::temp_directory_path() / "demwb-sweep-spec-set";
+  support::write_file(dir / "small.toml", test_support::small_agglomerate());
+  const std::string head = "[sweep]\nname = \"x\"\ncase = \"small.toml\"\nseeds = [1]\n";
+  const std::string axis = "[[parameters]]\nkey = \"a.b\"\nvalues = [1.0]\n";
+  const sweeps::SweepSpec spec = sweeps::load_sweep_text(
+      head + "set = { \"model.damping\" = \"tsuji\", \"integration.rotation\" = false, \"c.d\" = 2 }\n" + axis,
+      dir / "set.toml");
+  ASSERT_EQ(spec.fixed.size(), 3U);
+  EXPECT_EQ(spec.fixed[0].key, "model.damping");
+  EXPECT_EQ(std::get<std::string>(spec.fixed[0].value), "tsuji");
+  EXPECT_EQ(std::get<bool>(spec.fixed[1].value), false);
+  EXPECT_EQ(std::get<double>(spec.fixed[2].value), 2.0);
+  const auto fails = [&](const std::string& text) {
+    return error_key([&] { static_cast<void>(sweeps::load_sweep_text(text, dir / "bad.toml")); }) != "(no error)";
+  };
+  EXPECT_TRUE(fails(head + "set = { \"a.b\" = 3.0 }\n" + axis));          // also an axis
+  EXPECT_TRUE(fails(head + "set = { \"m\" = [1, 2] }\n" + axis));          // not a single value
+  EXPECT_TRUE(fails(head + "set = { \"bad key\" = 1 }\n" + axis));        // not a dotted key
+  EXPECT_TRUE(fails(head + "set = 3\n" + axis));                           // not a table
+}
+
 TEST(SweepSpec, ExpandsTheMatrixFirstAxisSlowest) {
   const fs::path dir = fs::temp_directory_path() / "demwb-sweep-spec";
   support::write_file(dir / "small.toml", test_support::small_agglomerate());
