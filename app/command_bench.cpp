@@ -53,7 +53,8 @@ struct CodeJob {
 };
 
 /// Runs each code that can run the scene and then the core, one after the other, `o.repeat`
-/// times (a code's failure ends it); a code that cannot express the scene is n/a with its reason.
+/// times; a code that fails (missing, crashed, timed out) is not run again and reports that
+/// failure, the others go on; a code that cannot express the scene is n/a with its reason.
 void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<CodeJob>& jobs,
                const std::function<bench::CoreRun()>& run_core) {
   for (std::size_t c = 0; c < o.codes.size(); ++c) {
@@ -67,17 +68,16 @@ void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<C
       r.codes.back().median = na;
     }
   }
-  bool failed = false;
-  for (int k = 0; k < o.repeat && !failed; ++k) {
-    for (std::size_t c = 0; c < o.codes.size() && !failed; ++c) {
-      if (!jobs[c].run) continue;
+  std::vector<bool> failed(o.codes.size(), false);
+  for (int k = 0; k < o.repeat; ++k) {
+    for (std::size_t c = 0; c < o.codes.size(); ++c) {
+      if (!jobs[c].run || failed[c]) continue;
       r.codes[c].runs.push_back(jobs[c].run());
-      failed = r.codes[c].runs.back().status != "ok";
+      failed[c] = r.codes[c].runs.back().status != "ok";
     }
-    if (run_core && !failed) r.core_runs.push_back(run_core());
+    if (run_core) r.core_runs.push_back(run_core());
     if (o.repeat > 1) std::fprintf(stderr, "bench: repetition %d of %d done\n", k + 1, o.repeat);
   }
-  if (run_core && r.core_runs.empty()) r.core_runs.push_back(run_core());
   bench::choose_medians(r);
 }
 
@@ -215,14 +215,17 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
   // thermo prints TotEng, which is kinetic alone under a granular pair style).
   if (r.core && !r.core->energies.empty()) r.kinetic_energy_at_end["inhouse"] = r.core->energies.back().second.translational;
   for (const bench::CodeBench& c : r.codes) {
-    if (!c.median || c.median->status != "ok" || c.median->log.thermo.empty()) continue;
-    const bench::ThermoRow& last = c.median->log.thermo.back();
-    if (last.step != steps) continue;
+    if (!c.median || c.median->status != "ok") continue;
+    const auto& thermo = c.median->log.thermo;
     for (const char* column : {"KinEng", "TotEng"}) {
-      if (last.values.count(column) != 0) {
-        r.kinetic_energy_at_end[c.code.engine] = last.values.at(column);
+      if (!thermo.empty() && thermo.back().step == steps && thermo.back().values.count(column) != 0) {
+        r.kinetic_energy_at_end[c.code.engine] = thermo.back().values.at(column);
         break;
       }
+    }
+    if (r.kinetic_energy_at_end.count(c.code.engine) == 0) {
+      r.notes.push_back(fmt::format("{}'s log has no kinetic energy at step {}: its physics is not compared", c.code.title,
+                                    steps));
     }
   }
   if (!r.kinetic_energy_at_end.empty()) {
@@ -257,7 +260,7 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   const auto vm = parse_command(
       args,
       "usage: demwb bench chute|box|CASE.toml [--engines inhouse,lammps,liggghts] [--threads N] [--ranks N]\n"
-      "                   [--steps S] [--particles N] [-o DIR]",
+      "                   [--steps S] [--particles N] [--repeat N] [-o DIR]",
       opts, {"scene"});
   if (!vm) return kExitOk;
   BenchOptions o;
@@ -266,6 +269,7 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   const reference::ExternalPrograms programs = external_programs(*vm, o.timeout_s);
   std::vector<std::string> names{"inhouse", "lammps"};
   if (vm->count("engines") != 0) names = split_names((*vm)["engines"].as<std::vector<std::string>>());
+  if (names.empty()) throw std::invalid_argument("--engines: name at least one of inhouse, lammps, liggghts");
   o.inhouse = false;
   for (const std::string& n : names) {
     if (n == "inhouse") {

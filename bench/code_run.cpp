@@ -3,9 +3,12 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "reference/common/log_lines.hpp"
+#include "reference/common/run_directory.hpp"
 #include "reference/lammps/lammps_runner.hpp"
 #include "reference/liggghts/liggghts_runner.hpp"
 #include "support/process.hpp"
@@ -32,8 +35,9 @@ CodeRun run_code_bench(const BenchCode& code, const std::string& deck, const std
     return run;
   }
   const bool liggghts = code.engine == "liggghts";
-  const auto version = liggghts ? reference::liggghts::probe_liggghts(code.program, reference::liggghts::kProbeTimeout).version
-                                : reference::lammps::lammps_version(code.program);
+  const double probe_s = std::min(timeout_s, reference::liggghts::kProbeTimeout);
+  const auto version = liggghts ? reference::liggghts::probe_liggghts(code.program, probe_s).version
+                                : reference::lammps::lammps_version(code.program, probe_s);
   if (version) run.version = *version;
   std::optional<std::filesystem::path> mpirun;
   if (ranks > 1) {
@@ -44,6 +48,11 @@ CodeRun run_code_bench(const BenchCode& code, const std::string& deck, const std
     }
   }
   std::filesystem::create_directories(dir);
+  // Nothing of an earlier run may pass for this one's.
+  for (const std::string& stale : {code.log_file, std::string("stdout.txt"), std::string("stderr.txt")}) {
+    std::error_code ec;
+    std::filesystem::remove(dir / stale, ec);
+  }
   support::write_file(dir / "deck.in", deck);
   for (const DeckFile& f : files) support::write_file(dir / f.name, f.content);
   for (const auto& file : links) {
@@ -69,6 +78,9 @@ CodeRun run_code_bench(const BenchCode& code, const std::string& deck, const std
   spec.working_directory = dir;
   spec.stdout_file = dir / "stdout.txt";
   spec.stderr_file = dir / "stderr.txt";
+  // As the reference runs: a code run alone is an Open MPI singleton, its session files kept
+  // inside the run directory (two singletons starting at once race on a shared one).
+  if (!mpirun) spec.environment = reference::mpi_singleton_environment(dir);
   spec.environment["OMP_NUM_THREADS"] = "1";
   if (mpirun && geteuid() == 0) {
     spec.environment["OMPI_ALLOW_RUN_AS_ROOT"] = "1";

@@ -129,6 +129,22 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
   if (s.model.coulomb_test != dem::CoulombTest::total) {  // only when set: older scenes keep their fingerprints
     j["model"]["coulomb_test"] = std::string(dem::to_string(s.model.coulomb_test));
   }
+  // Each policy that changes a result, only when it differs from its default (so that scenes
+  // without it keep their fingerprints): a cached LAMMPS result of incremental Mindlin must never
+  // answer for the total form.
+  if (s.model.mindlin_form != dem::MindlinForm::total) {
+    j["model"]["mindlin_form"] = std::string(dem::to_string(s.model.mindlin_form));
+  }
+  if (s.model.mindlin_radius != dem::MindlinRadius::overlap) {
+    j["model"]["mindlin_radius"] = std::string(dem::to_string(s.model.mindlin_radius));
+  }
+  if (s.model.unloaded_slider != dem::UnloadedSlider::cap) {
+    j["model"]["unloaded_slider"] = std::string(dem::to_string(s.model.unloaded_slider));
+  }
+  if (s.model.adhesive_dashpot != dem::AdhesiveDashpot::clamp) {
+    j["model"]["adhesive_dashpot"] = std::string(dem::to_string(s.model.adhesive_dashpot));
+  }
+  if (s.model.contact_at_zero_overlap) j["model"]["contact_at_zero_overlap"] = true;
   Json particles = Json::array();
   for (const auto& p : s.particles) particles.push_back(particle_json(p));
   j["particles"] = particles;

@@ -90,6 +90,7 @@ void set_number(toml::node& node, double value, const std::string& key, const st
 /// Replaces the value at `node` by a fixed setting's, which must be of the same kind.
 void set_fixed(toml::node& node, const FixedSetting& f, const std::string& path) {
   if (const auto* number = std::get_if<double>(&f.value)) {
+    if (!node.is_number()) throw cases::CaseError(path, f.key, "holds no number; the sweep sets one");
     set_number(node, *number, f.key, path);
     return;
   }

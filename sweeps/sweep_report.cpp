@@ -344,7 +344,7 @@ void write_sweep_report(const SweepResults& r, const std::filesystem::path& dir)
             } else if constexpr (std::is_same_v<T, bool>) {
               return v ? "true" : "false";
             } else {
-              return fmt::format("{:.17g}", v);
+              return fmt::format("{}", v);  // the shortest text that reads back as v
             }
           },
           f.value);

@@ -128,6 +128,9 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
   if (const auto v = sweep.find("set")) {
     for (const auto& [key, value] : v->table().entries()) {
       check_axis_key(value, key);
+      if (key.starts_with("populations") && key.ends_with(".seed")) {
+        value.fail("a population's seed is the sweep's: list it in sweep.seeds");
+      }
       taken.insert(key);
       const toml::node& node = value.node();
       if (node.is_string()) {
@@ -137,7 +140,8 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
       } else if (node.is_number()) {
         spec.fixed.push_back({key, value.number()});
       } else {
-        value.fail("a setting is a string, a number or a boolean");
+        value.fail("a setting is a string, a number or a boolean; quote a dotted key: set = { \"model.mindlin_form\" = "
+                   "\"total\" }");
       }
     }
   }
@@ -150,7 +154,7 @@ SweepSpec load_sweep_text(const std::string& text, const std::filesystem::path& 
     axis.key = key.string();
     check_axis_key(key, axis.key);
     if (!taken.insert(axis.key).second) {
-      key.fail(fmt::format("'{}' is set twice in the sweep (an axis or a linked key)", axis.key));
+      key.fail(fmt::format("'{}' is set twice in the sweep (by sweep.set, an axis or a linked key)", axis.key));
     }
     axis.label = t.has("label") ? t.require("label").string() : axis.key.substr(axis.key.find_last_of('.') + 1);
     for (const Value& x : t.require("values").elements()) axis.values.push_back(x.number());

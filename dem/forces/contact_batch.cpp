@@ -157,6 +157,24 @@ struct PolicyNumbers {
   friction = select(sliding, select(dropped, V3{0.0, 0.0, 0.0}, capped), trial);
 }
 
+/// The spring–Coulomb slider of one lane (laws::spring_slider's arithmetic): a spring k_t on the
+/// slip ς = carried + u_t Δt (none stored when k_t = 0) and the dashpot η_t u_t, capped at `cap`;
+/// `friction` the force that acts, `next_slip` the slip to commit (truncated when sliding).
+[[gnu::always_inline]] inline void lane_spring_slider(double kt, double eta_t, V3 carried, V3 tangential_velocity,
+                                                      double elapsed, double cap, const PolicyNumbers& k,
+                                                      V3& friction, V3& next_slip) noexcept {
+  const bool spring = kt > 0.0;
+  const V3 integrated = carried + tangential_velocity * elapsed;
+  const V3 stored = select(spring, integrated, V3{0.0, 0.0, 0.0});
+  const V3 trial = -kt * stored - eta_t * tangential_velocity;
+  bool sliding = false;
+  bool dropped = false;
+  V3 capped;
+  coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
+  const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
+  next_slip = select(sliding && spring && !dropped, truncated, stored);
+}
+
 /// The loop over lanes for one normal law and one tangential-history rule. The other policies
 /// enter as numbers, so that no select depends on a condition that is the same for every lane
 /// (which the vectoriser cannot mask): the lever arm r − f δ with f = ½ or 0 (exactly r − δ/2,
@@ -194,19 +212,11 @@ template <BatchLawKind Normal, bool IncrementProject>
     const V3 tangential_velocity = geo.tangential_velocity;
     const double eta_t = ratio * eta;
     const double limit = mu * basis;
-    const bool spring = kt > 0.0;
-    const V3 integrated = carried + tangential_velocity * elapsed;
-    const V3 stored = select(spring, integrated, V3{0.0, 0.0, 0.0});
-    const V3 trial = -kt * stored - eta_t * tangential_velocity;
     const double cap = limit < 0.0 ? 0.0 : limit;
     // UnloadedSlider::zero: a capped slider with nothing stored gives no force and keeps ς = 0.
-    bool sliding = false;
-    bool dropped = false;
-    V3 capped;
     V3 friction;
-    coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
-    const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
-    const V3 next_slip = select(sliding && spring && !dropped, truncated, stored);
+    V3 next_slip;
+    lane_spring_slider(kt, eta_t, carried, tangential_velocity, elapsed, cap, k, friction, next_slip);
     store_lane(b, g, geo, normal_force, friction, next_slip);
   }
 }
@@ -247,24 +257,17 @@ template <bool IncrementProject, bool RadiusVelocity, bool Total>
     const double eta_t = ratio * eta;
     const double limit = mu * basis;
     const double cap = limit < 0.0 ? 0.0 : limit;
-    bool sliding = false;
-    bool dropped = false;
-    V3 capped;
     V3 friction;
     V3 next_slip;
     if constexpr (Total) {
       // Total form: the spring–Coulomb slider at k_t = c a on the whole slip ς ← ς + u_t Δt
-      // (laws::spring_slider, as evaluate_lanes; c a is 8 G* a to the bit, since c = 8 G* · 1).
-      const double kt = c * a;
-      const bool spring = kt > 0.0;
-      const V3 integrated = start + tangential_velocity * elapsed;
-      const V3 stored = select(spring, integrated, V3{0.0, 0.0, 0.0});
-      const V3 trial = -kt * stored - eta_t * tangential_velocity;
-      coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);
-      const V3 truncated = -(capped + eta_t * tangential_velocity) / kt;
-      next_slip = select(sliding && spring && !dropped, truncated, stored);
+      // (c a is 8 G* a to the bit, since c = 8 G* · 1).
+      lane_spring_slider(c * a, eta_t, start, tangential_velocity, elapsed, cap, k, friction, next_slip);
     } else {
       // Incremental: σ ← σ + a u_t Δt at the contact radius a = √(R* δ), F = −c σ − η_t u_t.
+      bool sliding = false;
+      bool dropped = false;
+      V3 capped;
       const V3 integrated = start + (a * elapsed) * tangential_velocity;
       const V3 trial = -c * integrated - eta_t * tangential_velocity;
       coulomb_cap(trial, integrated, cap, k, sliding, dropped, capped, friction);

@@ -31,8 +31,9 @@ enum class BatchLawKind : std::uint8_t {
 
 /// The contact model's policies as the batch kernel reads them (values of ContactPolicies and
 /// PairLeverArm, docs/physics.md). The kernel handles every combination except the lever arm
-/// PairLeverArm::yade_incident (and radius_velocity outside the Mindlin law) and the history rule
-/// yade_rotate, which the pair loop leaves to evaluate_contact.
+/// PairLeverArm::yade_incident (and radius_velocity outside the Mindlin law), the history rule
+/// yade_rotate, CoulombTest::spring and models that keep an extended history (an energy ledger),
+/// which the pair loop leaves to evaluate_contact.
 struct BatchPolicies {
   BatchLawKind kind = BatchLawKind::linear;  ///< the law the batch evaluates
   bool lever_arm_radius = false;          ///< PairLeverArm::radius (else contact_point, r − δ/2)

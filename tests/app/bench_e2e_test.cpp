@@ -46,6 +46,9 @@ TEST(DemwbBench, BadUsageExitsTwoNamingTheProblem) {
   const auto threads = demwb({"bench", "box", "--threads", "0"});
   EXPECT_EQ(threads.exit_code, 2);
   EXPECT_NE(threads.err.find("--threads"), std::string::npos) << threads.err;
+  const auto none = demwb({"bench", "box", "--engines", ","});
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("name at least one"), std::string::npos) << none.err;
   const auto engines = demwb({"bench", "box", "--engines", "yade"});
   EXPECT_EQ(engines.exit_code, 2);
   EXPECT_NE(engines.err.find("cannot be benchmarked"), std::string::npos) << engines.err;

@@ -213,7 +213,7 @@ TEST(ContactBatch, MatchesEvaluateContactBitForBitUnderEveryPolicy) {
   Reached mindlin;  // Hertz with Tsuji's dashpot and incremental Mindlin friction
   Reached total;    // the same with Mindlin friction in the total form
   std::uint64_t seed = 20261204;
-  for (const auto [normal, form] : {std::pair{dem::BatchLawKind::linear, dem::MindlinForm::incremental},
+  for (const auto& [normal, form] : {std::pair{dem::BatchLawKind::linear, dem::MindlinForm::incremental},
                                     std::pair{dem::BatchLawKind::hertz, dem::MindlinForm::incremental},
                                     std::pair{dem::BatchLawKind::hertz_mindlin, dem::MindlinForm::incremental},
                                     std::pair{dem::BatchLawKind::hertz_mindlin, dem::MindlinForm::total}}) {

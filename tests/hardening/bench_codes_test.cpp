@@ -86,13 +86,19 @@ TEST(BenchCodes, RanksRunLiggghtsUnderMpirun) {
             std::string::npos);
 }
 
-TEST(BenchCodes, AMissingLiggghtsIsMissingAndFailsTheBench) {
-  const Bench b = bench_box("bench-no-liggghts", {"--engines", "inhouse,liggghts", "--liggghts", "/nonexistent/liggghts"});
+TEST(BenchCodes, AMissingLiggghtsIsMissingAndFailsTheBenchWhileTheOthersStillRun) {
+  const Bench b = bench_box("bench-no-liggghts", {"--engines", "inhouse,liggghts,lammps", "--liggghts",
+                                                  "/nonexistent/liggghts", "--repeat", "2"});
   EXPECT_EQ(b.exit_code, 1) << b.output;
   EXPECT_EQ(b.json["engines"]["liggghts"]["status"], "missing");
   EXPECT_NE(b.json["engines"]["liggghts"]["reason"].get<std::string>().find("/nonexistent/liggghts"), std::string::npos);
   EXPECT_TRUE(b.json["ratio_inhouse_to_liggghts"].is_null());
-  EXPECT_EQ(b.json["engines"]["inhouse"]["threads"], 1);  // the core still ran
+  EXPECT_EQ(b.json["engines"]["inhouse"]["threads"], 1);  // the core still ran, every repetition
+  EXPECT_EQ(b.json["repetitions"].size(), 2U);
+  if (have("lmp")) {  // and so did LAMMPS, listed after the missing code
+    EXPECT_EQ(b.json["engines"]["lammps"]["status"], "ok") << b.json.dump();
+    EXPECT_TRUE(b.json["ratio_inhouse_to_lammps"].is_number());
+  }
 }
 
 TEST(BenchCodes, ACrashingLiggghtsIsAnErrorNamingTheSignal) {

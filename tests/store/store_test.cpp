@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <set>
 
 #include <unistd.h>
 
@@ -133,6 +134,31 @@ TEST(SceneFingerprint, ChangesWithThePhysicsAndNotWithTheFileItCameFrom) {
   EXPECT_EQ(store::scene_fingerprint(a), store::scene_fingerprint(b));
   b.particles[0].velocity[0] *= 1.0 + 1e-15;
   EXPECT_NE(store::scene_fingerprint(a), store::scene_fingerprint(b));
+}
+
+TEST(SceneFingerprint, EveryContactPolicyThatChangesAResultChangesIt) {
+  // A cache keyed by the fingerprint must never serve one policy's result for another's.
+  const cases::Scene a = single_collision();
+  const std::string base = store::scene_fingerprint(a);
+  std::vector<std::function<void(dem::ModelChoice&)>> changes{
+      [](dem::ModelChoice& m) { m.mindlin_form = dem::MindlinForm::incremental; },
+      [](dem::ModelChoice& m) { m.mindlin_radius = dem::MindlinRadius::contact_radius; },
+      [](dem::ModelChoice& m) { m.unloaded_slider = dem::UnloadedSlider::zero; },
+      [](dem::ModelChoice& m) { m.adhesive_dashpot = dem::AdhesiveDashpot::pulloff_cap; },
+      [](dem::ModelChoice& m) { m.coulomb_test = dem::CoulombTest::spring; },
+      [](dem::ModelChoice& m) { m.contact_at_zero_overlap = true; },
+      [](dem::ModelChoice& m) { m.tangential_history = dem::TangentialHistory::increment_project; },
+      [](dem::ModelChoice& m) { m.pair_lever_arm = dem::PairLeverArm::radius; },
+      [](dem::ModelChoice& m) { m.wall_lever_arm = dem::WallLeverArm::radius; },
+      [](dem::ModelChoice& m) { m.friction_limit = dem::FrictionLimit::elastic; },
+      [](dem::ModelChoice& m) { m.jkr_rupture = dem::JkrRupture::load; },
+      [](dem::ModelChoice& m) { m.clamp_tensile = !m.clamp_tensile; }};
+  std::set<std::string> seen{base};
+  for (std::size_t k = 0; k < changes.size(); ++k) {
+    cases::Scene b = a;
+    changes[k](b.model);
+    EXPECT_TRUE(seen.insert(store::scene_fingerprint(b)).second) << "change " << k << " left the fingerprint alone";
+  }
 }
 
 TEST(ResultCache, ReturnsAStoredResultOnlyForTheSameSceneEngineAndVersion) {

@@ -102,6 +102,8 @@ TEST(SweepSpec, SetHoldsKeysAtOneValueAndMayNotAlsoBeSwept) {
   EXPECT_TRUE(fails(head + "set = { \"m\" = [1, 2] }\n" + axis));          // not a single value
   EXPECT_TRUE(fails(head + "set = { \"bad key\" = 1 }\n" + axis));        // not a dotted key
   EXPECT_TRUE(fails(head + "set = 3\n" + axis));                           // not a table
+  EXPECT_TRUE(fails(head + "set = { \"populations[0].seed\" = 7 }\n" + axis));  // the sweep's seeds do that
+  EXPECT_TRUE(fails(head + "set = { model.damping = \"tsuji\" }\n" + axis));  // unquoted: a nested table
 }
 
 TEST(SweepSpec, ExpandsTheMatrixFirstAxisSlowest) {
