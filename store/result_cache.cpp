@@ -24,10 +24,20 @@ std::filesystem::path ResultCache::default_dir() {
   return ".demwb-cache";
 }
 
+namespace {
+
+/// Generation of the cache keys, part of every entry's file name: raised whenever the scene
+/// fingerprint learns a field that older entries were keyed without (2: the Mindlin form, the
+/// unloaded-slider and adhesive-dashpot rules), so that no entry made before can answer for a
+/// scene it does not describe.
+constexpr std::string_view kKeyGeneration = "2";
+
+}  // namespace
+
 std::filesystem::path ResultCache::path_of(const cases::Scene& scene, std::string_view engine,
                                            const std::string& version) const {
-  const std::string name =
-      scene_fingerprint(scene).substr(0, 32) + "-" + support::sha256_hex(version).substr(0, 12) + ".json";
+  const std::string name = scene_fingerprint(scene).substr(0, 32) + "-" +
+                           support::sha256_hex(version + "\n" + std::string(kKeyGeneration)).substr(0, 12) + ".json";
   return dir_ / std::string(engine) / name;
 }
 
