@@ -274,9 +274,11 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   for (const std::string& n : names) {
     if (n == "inhouse") {
       o.inhouse = true;
-    } else if ((n == "lammps" || n == "liggghts") && !o.wants(n)) {
-      o.codes.push_back(n == "lammps" ? bench::lammps_code(programs.lammps) : bench::liggghts_code(programs.liggghts));
-    } else if (n != "lammps" && n != "liggghts") {
+    } else if (n == "lammps" || n == "liggghts") {
+      if (o.wants(n)) continue;  // named twice
+      o.codes.push_back(n == "lammps" ? bench::lammps_code(programs.lammps, programs.probe_timeout_s)
+                                      : bench::liggghts_code(programs.liggghts, programs.probe_timeout_s));
+    } else {
       throw std::invalid_argument(
           fmt::format("--engines: '{}' cannot be benchmarked (known: inhouse, lammps, liggghts)", n));
     }

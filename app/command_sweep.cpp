@@ -225,12 +225,12 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
   plan.case_text = cases::read_case_file(plan.spec.case_file);
   // The base case must load as it is and with the sweep's fixed settings: their errors are the
   // user's to fix before any run. The runs' engines and metrics are those of the latter.
-  static_cast<void>(cases::load_case_text(plan.case_text, plan.spec.case_file.string(), load_options(*vm)));
-  const cases::Scene base = cases::load_case_text(
-      plan.spec.fixed.empty()
-          ? plan.case_text
-          : sweeps::override_case(plan.case_text, plan.spec.case_file.string(), {}, std::nullopt, plan.spec.fixed),
-      plan.spec.case_file.string(), load_options(*vm));
+  cases::Scene base = cases::load_case_text(plan.case_text, plan.spec.case_file.string(), load_options(*vm));
+  if (!plan.spec.fixed.empty()) {
+    base = cases::load_case_text(
+        sweeps::override_case(plan.case_text, plan.spec.case_file.string(), {}, std::nullopt, plan.spec.fixed),
+        plan.spec.case_file.string(), load_options(*vm));
+  }
   plan.engines = plan.spec.engines.empty() ? base.compare.engines : plan.spec.engines;
   if (vm->count("engines") != 0) plan.engines = split_names({(*vm)["engines"].as<std::string>()});
   for (const auto& e : plan.engines) {

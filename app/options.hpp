@@ -25,12 +25,13 @@ cases::LoadOptions load_options(const boost::program_options::variables_map& vm)
 double timeout_option(const boost::program_options::variables_map& vm);
 
 /// The run options of `vm` that a command passes on to the one it starts (gate → suite, suite and
-/// refresh → sweep): --timeout, --threads, and --no-cache, --cache, --lammps, --yade when given.
+/// refresh → sweep): --timeout, --threads, and --no-cache, --cache, --lammps, --yade, --liggghts
+/// when given.
 std::vector<std::string> forwarded_run_options(const boost::program_options::variables_map& vm);
 
 /// Arguments of `demwb sweep` for running `sweep_file` into `out` with `jobs` runs at once and
 /// the run options of `vm` that a sweep shares (--timeout, --threads, --cache, --no-cache,
-/// --lammps, --yade): how suite (full tier) and refresh --sweep start a sweep.
+/// --lammps, --yade, --liggghts): how suite (full tier) and refresh --sweep start a sweep.
 std::vector<std::string> sweep_arguments(const std::filesystem::path& sweep_file, const std::filesystem::path& out,
                                          unsigned jobs, const boost::program_options::variables_map& vm);
 

@@ -62,10 +62,6 @@ const CodeBench* BenchResult::code(std::string_view engine) const {
   return nullptr;
 }
 
-CodeBench* BenchResult::code(std::string_view engine) {
-  return const_cast<CodeBench*>(static_cast<const BenchResult&>(*this).code(engine));
-}
-
 std::vector<double> BenchResult::ratios(std::string_view engine) const {
   std::vector<double> out;
   const CodeBench* c = code(engine);

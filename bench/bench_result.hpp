@@ -49,7 +49,6 @@ struct BenchResult {
 
   /// The code with this engine name, or null.
   [[nodiscard]] const CodeBench* code(std::string_view engine) const;
-  [[nodiscard]] CodeBench* code(std::string_view engine);
   /// Core particle-steps/s over the code's, when both ran: the median of the ratios of the runs
   /// made one after the other (repetition k of the core over repetition k of the code).
   [[nodiscard]] std::optional<double> ratio(std::string_view engine) const;

@@ -16,10 +16,12 @@
 
 namespace bench {
 
-BenchCode lammps_code(const std::string& program) { return {"lammps", "LAMMPS", program, "lammps", "log.lammps"}; }
+BenchCode lammps_code(const std::string& program, double probe_timeout_s) {
+  return {"lammps", "LAMMPS", program, "lammps", reference::lammps::kLogFile, probe_timeout_s};
+}
 
-BenchCode liggghts_code(const std::string& program) {
-  return {"liggghts", "LIGGGHTS", program, "liggghts", reference::liggghts::kLogFile};
+BenchCode liggghts_code(const std::string& program, double probe_timeout_s) {
+  return {"liggghts", "LIGGGHTS", program, "liggghts", reference::liggghts::kLogFile, probe_timeout_s};
 }
 
 CodeRun run_code_bench(const BenchCode& code, const std::string& deck, const std::filesystem::path& dir, int ranks,
@@ -35,7 +37,7 @@ CodeRun run_code_bench(const BenchCode& code, const std::string& deck, const std
     return run;
   }
   const bool liggghts = code.engine == "liggghts";
-  const double probe_s = std::min(timeout_s, reference::liggghts::kProbeTimeout);
+  const double probe_s = std::min(timeout_s, code.probe_timeout_s);
   const auto version = liggghts ? reference::liggghts::probe_liggghts(code.program, probe_s).version
                                 : reference::lammps::lammps_version(code.program, probe_s);
   if (version) run.version = *version;
@@ -88,12 +90,7 @@ CodeRun run_code_bench(const BenchCode& code, const std::string& deck, const std
   }
   spec.timeout_s = timeout_s;
   const support::ProcessResult result = support::run_process(spec);
-  std::string log_text;
-  try {
-    log_text = support::read_file(dir / code.log_file);
-  } catch (const std::exception&) {
-    // no log: reported below as an error with the stderr tail
-  }
+  const std::string log_text = support::read_file_or_empty(dir / code.log_file);  // none: an error below
   run.log = parse_lammps_log(log_text);
   if (!result.started) {
     run.status = "error";

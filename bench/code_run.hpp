@@ -17,12 +17,13 @@ struct BenchCode {
   std::string program;   ///< the binary timed
   std::string package;   ///< the Debian package that installs it
   std::string log_file;  ///< the log the run writes
+  double probe_timeout_s = 10.0;  ///< limit of the version probe (and never beyond the run's timeout)
 };
 
 /// LAMMPS run as `program` (log.lammps).
-BenchCode lammps_code(const std::string& program);
+BenchCode lammps_code(const std::string& program, double probe_timeout_s);
 /// LIGGGHTS run as `program` (log.liggghts; its screen unbuffered, where some errors go alone).
-BenchCode liggghts_code(const std::string& program);
+BenchCode liggghts_code(const std::string& program, double probe_timeout_s);
 
 /// What timing a reference code on one deck measured.
 struct CodeRun {

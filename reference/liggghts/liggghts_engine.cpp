@@ -7,16 +7,13 @@
 #include <fmt/format.h>
 
 #include "cases/time_step.hpp"
-#include "dem/core/model_error.hpp"
 #include "reference/common/core_setup.hpp"
 #include "reference/common/dump_snapshots.hpp"
 #include "reference/common/dump_text.hpp"
 #include "reference/liggghts/atom_types.hpp"
-#include "reference/liggghts/contact_mapping.hpp"
 #include "reference/liggghts/deck_parts.hpp"
 #include "reference/liggghts/run_conventions.hpp"
 #include "reference/liggghts/trace_columns.hpp"
-#include "reference/liggghts/wall_planes.hpp"
 #include "support/interrupts.hpp"
 #include "support/process.hpp"
 #include "support/sha256.hpp"

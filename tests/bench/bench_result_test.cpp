@@ -29,9 +29,9 @@ bench::CodeRun code(const std::string& engine, const std::string& status, double
 bench::BenchResult two_codes() {
   bench::BenchResult r;
   r.core_runs = {core(300.0), core(200.0), core(400.0)};
-  r.codes.push_back({bench::lammps_code("lmp"), {code("lammps", "ok", 100.0), code("lammps", "ok", 100.0),
+  r.codes.push_back({bench::lammps_code("lmp", 10.0), {code("lammps", "ok", 100.0), code("lammps", "ok", 100.0),
                                                  code("lammps", "ok", 200.0)}, std::nullopt});
-  r.codes.push_back({bench::liggghts_code("liggghts"), {code("liggghts", "ok", 150.0), code("liggghts", "ok", 400.0),
+  r.codes.push_back({bench::liggghts_code("liggghts", 10.0), {code("liggghts", "ok", 150.0), code("liggghts", "ok", 400.0),
                                                         code("liggghts", "ok", 100.0)}, std::nullopt});
   bench::choose_medians(r);
   return r;

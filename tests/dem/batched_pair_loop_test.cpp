@@ -107,6 +107,20 @@ TEST(BatchedPairLoop, ALedgerNeverChangesTheTrajectory) {
   }
 }
 
+TEST(BatchedPairLoop, TheSpringAloneCoulombTestIsNeverBatched) {
+  // The kernel tests the whole force against the Coulomb limit; under CoulombTest::spring the pair
+  // loop must leave every pair to evaluate_contact. With a tangential dashpot the two tests differ,
+  // so a batched run would leave the ledger's (always unbatched) trajectory.
+  const int steps = test_support::full_or_sanitized(300, 100);
+  for (const char* normal : {"hertz", "hertz_mindlin_total"}) {
+    dem::SimulationSetup setup =
+        batched_box(47, normal, dem::PairLeverArm::contact_point, dem::TangentialHistory::project_rescale);
+    setup.model.coulomb_test = dem::CoulombTest::spring;
+    for (dem::MaterialProperties& m : setup.materials) m.tangential_damping_ratio = 0.5;
+    expect_same(run(setup, false, 1, steps), run(setup, true, 1, steps), std::string(normal) + ", spring test");
+  }
+}
+
 TEST(BatchedPairLoop, ADrivenSpherePushesThroughTheBatchAsThroughEvaluateContact) {
   // A fixed sphere under prescribed motion ploughs through the box: the batch must take its
   // motion's velocity, as evaluate_contact does.
