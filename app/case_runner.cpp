@@ -192,6 +192,20 @@ void refine_reference_runs(const cases::Scene& scene, std::vector<cases::RunResu
   }
 }
 
+/// Each reference code not among `engines`, with what its driver says of the prepared scene.
+std::vector<comparison::UnlistedCode> unlisted_codes(const reference::PreparedScene& prepared,
+                                                     const std::vector<std::string>& engines,
+                                                     const reference::ExternalPrograms& programs) {
+  std::vector<comparison::UnlistedCode> out;
+  for (const std::string_view code : cases::reference_codes()) {
+    if (std::find(engines.begin(), engines.end(), code) != engines.end()) continue;
+    const auto engine = reference::make_engine(std::string(code), programs);
+    if (!engine) throw std::logic_error("no driver for reference code '" + std::string(code) + "'");
+    out.push_back({std::string(code), engine->supports(prepared).reasons});
+  }
+  return out;
+}
+
 }  // namespace
 
 comparison::CaseOutcome run_case(const cases::Scene& input, const std::vector<std::string>& engines,
@@ -222,7 +236,9 @@ comparison::CaseOutcome run_case(const cases::Scene& input, const std::vector<st
     if (context.on_engine_done) context.on_engine_done(scene, runs.back());
   }
   if (context.refine_time_step) refine_reference_runs(scene, runs, context);
-  return comparison::evaluate_runs(scene, std::move(runs));
+  comparison::CaseOutcome outcome = comparison::evaluate_runs(scene, std::move(runs));
+  if (context.survey_unlisted) outcome.unlisted = unlisted_codes(prepared, engines, context.programs);
+  return outcome;
 }
 
 std::vector<std::string> engines_to_run(const cases::Scene& scene, std::vector<std::string> requested) {

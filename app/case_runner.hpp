@@ -31,6 +31,10 @@ struct RunContext {
   /// Check each native reference-code run's time step by halving it (docs/metrics.md,
   /// "Reference discretisation error"); sweeps, whose ensembles are statistics, turn it off.
   bool refine_time_step = true;
+  /// Ask every reference code that is not among a case's engines whether it can express the
+  /// prepared scene (its driver's mappings alone; nothing runs), so that the report says what
+  /// each code makes of every case (suite, gate and compare).
+  bool survey_unlisted = false;
   /// Called after each engine of a case finished (progress lines); may be called from several
   /// threads at once when cases run concurrently.
   std::function<void(const cases::Scene&, const cases::RunResult&)> on_engine_done;
@@ -43,6 +47,7 @@ struct RunContext {
 /// there, stored after a successful run, and replaced by the committed baseline (with a warning)
 /// when not installed. Each native reference-code run that ran (or came from the cache) then has
 /// its time step checked by halving (comparison::refine_time_step) when `refine_time_step` is set.
+/// With `survey_unlisted` the outcome also holds each unlisted reference code's verdict.
 /// Unknown engine names must have been rejected by the caller.
 comparison::CaseOutcome run_case(const cases::Scene& scene, const std::vector<std::string>& engines,
                                  const RunContext& context);

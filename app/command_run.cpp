@@ -65,6 +65,12 @@ void print_engine_notes(const comparison::CaseOutcome& o) {
     std::cout << fmt::format("{}: {} — {}\n", r.engine, cases::to_string(r.status), r.reason);
     if (!r.log_tail.empty()) std::cout << r.log_tail;
   }
+  for (const auto& u : o.unlisted) {
+    std::string reason;
+    for (const auto& r : u.reasons) reason += (reason.empty() ? "" : "; ") + r;
+    std::cout << fmt::format("{} (not among the engines): {}{}\n", u.engine, reports::unlisted_verdict(u),
+                             reason.empty() ? " (add it with --engines)" : " — " + reason);
+  }
   for (const auto& r : o.runs) {
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s: %s\n", r.engine.c_str(), w.c_str());
   }
@@ -133,7 +139,8 @@ int command_compare(const std::vector<std::string>& args, const Invocation& inv)
                                         ? std::filesystem::path((*vm)["output"].as<std::string>())
                                         : std::filesystem::temp_directory_path() / "demwb-compare";
   const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(out);  // removed if interrupted
-  const RunContext context = run_context(*vm, out / "work");
+  RunContext context = run_context(*vm, out / "work");
+  context.survey_unlisted = true;
   const comparison::CaseOutcome outcome = run_case(scene, engines, context);
   if (vm->count("output") != 0) {
     reports::write_case_outputs(outcome, out, reports::reproduce_command(inv.argc, inv.argv), context.wall_times);

@@ -61,6 +61,9 @@ std::string summary_table(const std::vector<SuiteEntry>& entries) {
     for (const auto& r : e.outcome->runs) {
       engines += (engines.empty() ? "" : ", ") + r.engine + " (" + std::string(cases::to_string(r.status)) + ")";
     }
+    for (const auto& u : e.outcome->unlisted) {  // not listed by the case: the driver's verdict
+      engines += fmt::format("{}{} (not listed: {})", engines.empty() ? "" : ", ", u.engine, reports::unlisted_verdict(u));
+    }
     std::optional<double> worst;
     std::size_t green = 0;
     for (const auto& c : e.outcome->comparisons) {
@@ -113,6 +116,7 @@ SuiteRun run_suite(const std::string& suite_name, const std::filesystem::path& o
   const support::OwnedPathGuard partial = support::OwnedPathGuard::if_new(out);  // removed if interrupted
   RunContext context = run_context(vm, out);
   context.tier = tier_option(vm);
+  context.survey_unlisted = true;
   const auto files = cases::case_files(dir);
   if (files.empty()) throw std::runtime_error("suite " + dir.string() + " holds no *.toml case");
   const bool terminal = ::isatty(STDERR_FILENO) != 0;

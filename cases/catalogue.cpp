@@ -122,8 +122,14 @@ std::string_view matched_code(std::string_view engine) noexcept {
   return is_reference_code(code) ? code : std::string_view{};
 }
 
+std::span<const std::string_view> reference_codes() noexcept {
+  static constexpr std::array<std::string_view, 3> kCodes{"lammps", "yade", "liggghts"};
+  return kCodes;
+}
+
 bool is_reference_code(std::string_view name) noexcept {
-  return name == "lammps" || name == "yade" || name == "liggghts";
+  const auto codes = reference_codes();
+  return std::find(codes.begin(), codes.end(), name) != codes.end();
 }
 
 }  // namespace cases

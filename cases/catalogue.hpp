@@ -26,7 +26,9 @@ const MetricInfo* find_metric(std::string_view name) noexcept;
 std::span<const std::string_view> engine_catalogue() noexcept;
 /// True when `name` is in the engine catalogue.
 bool is_known_engine(std::string_view name) noexcept;
-/// True for the external reference codes (LAMMPS, YADE), whose results are cached and baselined.
+/// The external reference codes (LAMMPS, YADE, LIGGGHTS), in the order reports list them.
+std::span<const std::string_view> reference_codes() noexcept;
+/// True for the external reference codes, whose results are cached and baselined.
 bool is_reference_code(std::string_view name) noexcept;
 
 /// Name of the in-house engine run with the numerics of reference code `code`: "inhouse@<code>".

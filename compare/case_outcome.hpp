@@ -12,6 +12,14 @@
 
 namespace comparison {
 
+/// A reference code the case does not list among its engines, with its driver's verdict on the
+/// prepared scene (asked of the driver's mappings; the code does not run). Reports show it, so
+/// that every case says what every reference code makes of it.
+struct UnlistedCode {
+  std::string engine;
+  std::vector<std::string> reasons;  ///< why the code cannot express the case; empty: it can
+};
+
 /// Everything one comparison of one case produced: the scene, each engine's run, the metrics
 /// computed from each run and the discrepancy rows (docs/architecture.md, "The flow of one
 /// comparison", steps 1–4).
@@ -20,6 +28,7 @@ struct CaseOutcome {
   std::vector<cases::RunResult> runs;
   std::map<std::string, MetricSet> metrics;  ///< engine name → metrics
   std::vector<Comparison> comparisons;
+  std::vector<UnlistedCode> unlisted;  ///< reference codes not run, when the command asked (app::RunContext)
 };
 
 /// Worst status over the outcome's comparisons (pass when there are none).

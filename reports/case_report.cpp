@@ -90,6 +90,26 @@ std::string runs_section(const comparison::CaseOutcome& o, int level) {
   return md + t.render() + "\n";
 }
 
+/// The reference codes the case does not list, with their drivers' verdicts (empty when the
+/// command did not ask them).
+std::string unlisted_section(const comparison::CaseOutcome& o, int level) {
+  if (o.unlisted.empty()) return {};
+  std::string md = heading(level, "Reference codes not among the engines");
+  md += "Each driver was asked whether its code can express the prepared scene; none of them ran.";
+  if (std::any_of(o.unlisted.begin(), o.unlisted.end(), [](const auto& u) { return u.reasons.empty(); })) {
+    md += " A code that can is not run here because the case's `[compare] engines` does not list it (a "
+          "many-body case is compared over seeds in cross-code ensembles instead).";
+  }
+  md += "\n\n";
+  MarkdownTable t({"code", "verdict", "reason"});
+  for (const auto& u : o.unlisted) {
+    std::string reason;
+    for (const auto& r : u.reasons) reason += (reason.empty() ? "" : "; ") + r;
+    t.add_row({u.engine, unlisted_verdict(u), reason.empty() ? "—" : reason});
+  }
+  return md + t.render() + "\n";
+}
+
 std::string metrics_section(const comparison::CaseOutcome& o, int level) {
   if (o.scene.compare.metrics.empty()) return "";
   std::vector<std::string> header{"metric", "unit"};
@@ -308,6 +328,10 @@ std::string discrepancy_table(const comparison::CaseOutcome& o) {
   return t.render();
 }
 
+std::string unlisted_verdict(const comparison::UnlistedCode& code) {
+  return code.reasons.empty() ? "expresses it" : "n/a";
+}
+
 std::string case_section(const comparison::CaseOutcome& o, const std::filesystem::path& plot_dir,
                          const std::filesystem::path& report_dir, int level) {
   const cases::Scene& s = o.scene;
@@ -319,6 +343,7 @@ std::string case_section(const comparison::CaseOutcome& o, const std::filesystem
   md += model_section(s, level + 1);
   md += stages_section(s, level + 1);
   md += runs_section(o, level + 1);
+  md += unlisted_section(o, level + 1);
   md += metrics_section(o, level + 1);
   if (!o.comparisons.empty()) {
     md += heading(level + 1, fmt::format("Discrepancies against `{}`", s.compare.reference));

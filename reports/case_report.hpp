@@ -15,6 +15,9 @@ std::string case_section(const comparison::CaseOutcome& outcome,
                          const std::filesystem::path& plot_dir,
                          const std::filesystem::path& report_dir, int level);
 
+/// A reference code's verdict on a case that does not list it: "n/a" or "expresses it".
+std::string unlisted_verdict(const comparison::UnlistedCode& code);
+
 /// Discrepancy table of one case (one row per comparison).
 std::string discrepancy_table(const comparison::CaseOutcome& outcome);
 

@@ -101,6 +101,19 @@ nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome, bool
     engines[run.engine] = engine_entry(run, m == outcome.metrics.end() ? comparison::MetricSet{} : m->second, wall_times);
   }
   doc["engines"] = engines;
+  if (!outcome.unlisted.empty()) {
+    // Reference codes the case does not list: what each driver makes of the scene (none ran).
+    Json unlisted = Json::object();
+    for (const auto& u : outcome.unlisted) {
+      Json entry = Json::object();
+      entry["status"] = u.reasons.empty() ? "expressible" : "n/a";
+      std::string reason;
+      for (const auto& r : u.reasons) reason += (reason.empty() ? "" : "; ") + r;
+      if (!reason.empty()) entry["reason"] = reason;
+      unlisted[u.engine] = entry;
+    }
+    doc["unlisted_codes"] = unlisted;
+  }
   Json rows = Json::array();
   for (const auto& c : outcome.comparisons) rows.push_back(comparison_entry(c));
   doc["comparisons"] = rows;

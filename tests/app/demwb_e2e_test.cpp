@@ -91,6 +91,27 @@ TEST(DemwbCompare, PrintsTheTableAndPassesOnTheCanonicalCases) {
   }
 }
 
+TEST(DemwbCompare, SaysWhatEachReferenceCodeTheCaseDoesNotListMakesOfIt) {
+  // JKR pull-off on the core and the closed form alone: LAMMPS has JKR, YADE and LIGGGHTS do not.
+  // The verdicts come from the drivers' mappings; no code runs (none needs to be installed).
+  const fs::path file = scratch("unlisted") / "jkr_pulloff.toml";
+  fs::create_directories(file.parent_path());
+  support::write_file(file, demwb_e2e::canonical_text_unmatched("jkr_pulloff", R"(["inhouse", "analytic"])"));
+  const fs::path out = scratch("unlisted-out");
+  const auto r = demwb({"compare", file.string(), "--lammps", "/nonexistent/lmp", "-o", out.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("lammps (not among the engines): expresses it"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("liggghts (not among the engines): n/a — LIGGGHTS driver:"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(support::read_file(out / "results.json"));
+  EXPECT_EQ(j["unlisted_codes"]["lammps"]["status"], "expressible");
+  EXPECT_EQ(j["unlisted_codes"]["yade"]["status"], "n/a");
+  EXPECT_NE(j["unlisted_codes"]["yade"]["reason"].get<std::string>().find("JKR"), std::string::npos) << j.dump(1);
+  EXPECT_EQ(j["unlisted_codes"]["liggghts"]["status"], "n/a");
+  EXPECT_NE(j["unlisted_codes"]["liggghts"]["reason"].get<std::string>().find("sjkr"), std::string::npos) << j.dump(1);
+  EXPECT_EQ(j["engines"].size(), 2U) << "nothing but the listed engines ran";
+  EXPECT_NE(support::read_file(out / "report.md").find("| liggghts | n/a | LIGGGHTS driver:"), std::string::npos);
+}
+
 TEST(DemwbCompare, ExitsNonZeroWhenAComparisonFails) {
   // The canonical case with an impossible amplitude tolerance, on the core and the closed form
   // (the failing row is theirs; the reference codes would only add minutes of runs).
@@ -171,6 +192,21 @@ TEST(DemwbSuite, CanonicalSuitePassesTheGateWithOneReportCoveringEveryCaseThatPa
     EXPECT_TRUE(fs::exists(out / target)) << target;
   }
   EXPECT_GE(figures, j["cases"].size());
+  // Every case says what every reference code makes of it: a run (ok, or n/a with the driver's
+  // reason), or, for a code the case does not list, its driver's verdict.
+  for (const auto& c : j["cases"]) {
+    for (const char* code : {"lammps", "yade", "liggghts"}) {
+      const bool ran = c["engines"].contains(code);
+      const bool surveyed = c.contains("unlisted_codes") && c["unlisted_codes"].contains(code);
+      EXPECT_NE(ran, surveyed) << c["case"] << ": " << code << " should be either an engine or an unlisted code";
+      if (surveyed && c["unlisted_codes"][code]["status"] == "n/a") {
+        EXPECT_FALSE(c["unlisted_codes"][code]["reason"].get<std::string>().empty()) << c["case"] << ": " << code;
+      }
+      if (ran && c["engines"][code]["status"] == "n/a") {
+        EXPECT_FALSE(c["engines"][code]["reason"].get<std::string>().empty()) << c["case"] << ": " << code;
+      }
+    }
+  }
   EXPECT_TRUE(fs::exists(out / "junit.xml"));
 
   support::ProcessSpec probe;

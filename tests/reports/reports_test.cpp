@@ -186,4 +186,48 @@ TEST(CaseReport, ShowsTheCalibrationTableAndWhyAMetricIsNotCompared) {
       << md;
 }
 
+/// An outcome whose case lists the core alone: LAMMPS expresses it, LIGGGHTS cannot.
+comparison::CaseOutcome unlisted_outcome() {
+  comparison::CaseOutcome o;
+  o.scene.name = "pour";
+  o.scene.source_sha256 = "0123456789abcdef0123";
+  cases::RunResult r;
+  r.engine = "inhouse";
+  r.status = cases::RunStatus::ok;
+  o.runs.push_back(r);
+  o.metrics["inhouse"] = {};
+  o.unlisted.push_back({"lammps", {}});
+  o.unlisted.push_back({"liggghts", {"no incremental Mindlin", "no cone | walls"}});
+  return o;
+}
+
+TEST(ResultsJson, CarriesTheVerdictsOfReferenceCodesTheCaseDoesNotList) {
+  const auto j = reports::results_json(unlisted_outcome());
+  EXPECT_EQ(j["unlisted_codes"]["lammps"]["status"], "expressible");
+  EXPECT_FALSE(j["unlisted_codes"]["lammps"].contains("reason"));
+  EXPECT_EQ(j["unlisted_codes"]["liggghts"]["status"], "n/a");
+  EXPECT_EQ(j["unlisted_codes"]["liggghts"]["reason"], "no incremental Mindlin; no cone | walls");
+  EXPECT_FALSE(j["engines"].contains("liggghts")) << "a code that did not run is no engine entry";
+  // A command that did not ask (demwb run) writes no such key.
+  comparison::CaseOutcome asked_none = unlisted_outcome();
+  asked_none.unlisted.clear();
+  EXPECT_FALSE(reports::results_json(asked_none).contains("unlisted_codes"));
+}
+
+TEST(CaseReport, ListsTheReferenceCodesTheCaseDoesNotListWithTheirVerdicts) {
+  const std::string md = reports::case_section(unlisted_outcome(), "/tmp/plots", "/tmp", 2);
+  EXPECT_NE(md.find("### Reference codes not among the engines"), std::string::npos) << md;
+  EXPECT_NE(md.find("| lammps | expresses it | — |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| liggghts | n/a | no incremental Mindlin; no cone \\| walls |"), std::string::npos) << md;
+  EXPECT_NE(md.find("does not list it"), std::string::npos) << md;
+  // Only codes that cannot: no sentence about codes that could run.
+  comparison::CaseOutcome none_can = unlisted_outcome();
+  none_can.unlisted.erase(none_can.unlisted.begin());
+  const std::string only_na = reports::case_section(none_can, "/tmp/plots", "/tmp", 2);
+  EXPECT_NE(only_na.find("| liggghts | n/a |"), std::string::npos) << only_na;
+  EXPECT_EQ(only_na.find("does not list it"), std::string::npos) << only_na;
+  none_can.unlisted.clear();
+  EXPECT_EQ(reports::case_section(none_can, "/tmp/plots", "/tmp", 2).find("not among the engines"), std::string::npos);
+}
+
 }  // namespace
