@@ -31,7 +31,8 @@ constexpr std::array kMixingRules{dem::MixingRule::harmonic, dem::MixingRule::ar
 /// Keys of [model] that name policies rather than sub-models.
 constexpr auto kPolicyKeys = std::to_array<std::string_view>(
     {"clamp_tensile", "friction_limit", "jkr_rupture", "wall_lever_arm", "pair_lever_arm", "tangential_history",
-     "mindlin_radius", "unloaded_slider", "adhesive_dashpot", "mindlin_form", "coulomb_test"});
+     "mindlin_radius", "unloaded_slider", "adhesive_dashpot", "mindlin_form", "coulomb_test",
+     "constant_torque_form"});
 
 /// Reads the optional policy `key` of [model] into `field`: `names` lists its keywords (the
 /// admissible values an error names), `parse` maps one to its enumerator, `what` says what it is.
@@ -66,6 +67,8 @@ void read_policies(const Table& model, dem::ModelChoice& choice) {
               "Mindlin-form policy", choice.mindlin_form);
   read_policy(model, "coulomb_test", std::to_array<Names>({"total", "spring"}), dem::parse_coulomb_test,
               "Coulomb-test policy", choice.coulomb_test);
+  read_policy(model, "constant_torque_form", std::to_array<Names>({"tangent", "projected"}),
+              dem::parse_constant_torque_form, "constant-torque form", choice.constant_torque_form);
   read_policy(model, "adhesive_dashpot", std::to_array<Names>({"clamp", "pulloff_cap"}), dem::parse_adhesive_dashpot,
               "adhesive-dashpot policy", choice.adhesive_dashpot);
 }

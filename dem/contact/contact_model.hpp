@@ -195,7 +195,8 @@ template <class Slots>
                                               cohesion.force, cohesion.pulloff_force);
     const TangentialInput t_in{elastic, eta, basis, cohesion.contact_radius};
     tangential = slots.tangential([&](const auto& m) { return m.evaluate(in, t_in, next); });
-    rolling = slots.rolling([&](const auto& m) { return m.evaluate(in, basis, next); });
+    const RollingInput r_in{basis, elastic.force};
+    rolling = slots.rolling([&](const auto& m) { return m.evaluate(in, r_in, next); });
     next.max_overlap = std::max(committed.max_overlap, g.overlap);
     next.normal = g.normal;
   } else {

@@ -68,6 +68,10 @@ constexpr std::array<std::pair<CoulombTest, std::string_view>, 2> kCoulombTest{{
     {CoulombTest::total, "total"},
     {CoulombTest::spring, "spring"},
 }};
+constexpr std::array<std::pair<ConstantTorqueForm, std::string_view>, 2> kConstantTorqueForm{{
+    {ConstantTorqueForm::tangent, "tangent"},
+    {ConstantTorqueForm::projected, "projected"},
+}};
 constexpr std::array<std::pair<AdhesiveDashpot, std::string_view>, 2> kAdhesiveDashpot{{
     {AdhesiveDashpot::clamp, "clamp"},
     {AdhesiveDashpot::pulloff_cap, "pulloff_cap"},
@@ -95,6 +99,10 @@ std::string_view to_string(MindlinForm p) noexcept { return name_of(kMindlinForm
 std::optional<MindlinForm> parse_mindlin_form(std::string_view k) noexcept { return value_of(kMindlinForm, k); }
 std::string_view to_string(CoulombTest p) noexcept { return name_of(kCoulombTest, p); }
 std::optional<CoulombTest> parse_coulomb_test(std::string_view k) noexcept { return value_of(kCoulombTest, k); }
+std::string_view to_string(ConstantTorqueForm p) noexcept { return name_of(kConstantTorqueForm, p); }
+std::optional<ConstantTorqueForm> parse_constant_torque_form(std::string_view k) noexcept {
+  return value_of(kConstantTorqueForm, k);
+}
 std::string_view to_string(AdhesiveDashpot p) noexcept { return name_of(kAdhesiveDashpot, p); }
 std::optional<AdhesiveDashpot> parse_adhesive_dashpot(std::string_view k) noexcept {
   return value_of(kAdhesiveDashpot, k);

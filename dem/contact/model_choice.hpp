@@ -87,6 +87,18 @@ enum class CoulombTest {
   spring,  ///< the spring alone, k|ς| against the limit: sliding, the spring force is scaled to it and the dashpot dropped; stuck, the dashpot is added uncapped (LIGGGHTS tangential history)
 };
 
+/// How the constant directional rolling torque (`rolling = "constant_torque"`) takes its size
+/// and direction (docs/physics-tangential.md, "Rolling resistance").
+enum class ConstantTorqueForm {
+  /// μ_r R* F ω̂_t: F the friction-limit basis, ω̂_t the unit vector of the tangent-plane part of
+  /// ω_p − ω_q (default; Ai et al., Powder Technol. 206 (2011), model type A).
+  tangent,
+  /// μ_r R* F_el (ω̂ − (ω̂·n) n): F_el the elastic normal force, ω̂ the unit vector of the whole
+  /// ω_p − ω_q, of which the tangent-plane part is kept without renormalising (LIGGGHTS
+  /// rolling_friction cdt).
+  projected,
+};
+
 /// How the normal dashpot is limited while a cohesion law with a pull-off force F_po > 0 (DMT)
 /// acts (docs/physics-cohesion.md, "Dashpot under adhesion").
 enum class AdhesiveDashpot {
@@ -113,6 +125,7 @@ struct ModelChoice {
   AdhesiveDashpot adhesive_dashpot = AdhesiveDashpot::clamp;
   MindlinForm mindlin_form = MindlinForm::total;
   CoulombTest coulomb_test = CoulombTest::total;
+  ConstantTorqueForm constant_torque_form = ConstantTorqueForm::tangent;
   /// Bodies exactly touching (δ = 0) are in contact, so the dashpot and friction act there
   /// (YADE's Ig2/Law2 keep δ ≥ 0); default false: contact needs δ > 0. Set by matched runs only.
   bool contact_at_zero_overlap = false;
@@ -154,6 +167,10 @@ std::optional<MindlinForm> parse_mindlin_form(std::string_view keyword) noexcept
 std::string_view to_string(CoulombTest p) noexcept;
 /// Coulomb-test policy named `keyword`, or empty.
 std::optional<CoulombTest> parse_coulomb_test(std::string_view keyword) noexcept;
+/// Case-file keyword of a constant-torque form ("tangent", "projected").
+std::string_view to_string(ConstantTorqueForm p) noexcept;
+/// Constant-torque form named `keyword`, or empty.
+std::optional<ConstantTorqueForm> parse_constant_torque_form(std::string_view keyword) noexcept;
 /// Case-file keyword of an adhesive-dashpot policy.
 std::string_view to_string(AdhesiveDashpot p) noexcept;
 /// Adhesive-dashpot policy named `keyword`, or empty.

@@ -68,7 +68,8 @@ PairLaw make_pair_law(const ModelChoice& choice, const PairProperties& propertie
       make_alternative<RollingModel>(Slot::rolling, choice.rolling, properties),
       ContactPolicies{choice.clamp_tensile, choice.friction_limit, choice.jkr_rupture,
                       choice.contact_at_zero_overlap, choice.tangential_history, choice.mindlin_radius,
-                      choice.unloaded_slider, choice.adhesive_dashpot, choice.mindlin_form, choice.coulomb_test},
+                      choice.unloaded_slider, choice.adhesive_dashpot, choice.mindlin_form, choice.coulomb_test,
+                      choice.constant_torque_form},
   };
 }
 

@@ -72,9 +72,13 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
                                     "while the bodies overlap",
                                     model.cohesion));
   }
-  if (model.rolling != "none") {
-    add_reason(reasons, fmt::format("LIGGGHTS driver: rolling = '{}' is not mapped yet (rolling_friction cdt and "
-                                    "epsd2 are candidates)",
+  if (model.rolling == "constant_torque") {
+    s.rolling = "cdt";  // the directional torque of Ai et al.; its form is a convention (matched: projected)
+  } else if (model.rolling != "none") {
+    add_reason(reasons, fmt::format("LIGGGHTS driver: rolling = '{}' has no LIGGGHTS counterpart: its epsd2 is a "
+                                    "torque spring k_t R*² (the tangential stiffness, not a rolling one) fed by the "
+                                    "tangent spin, capped at μ_r R* |F_n|, stored without turning with the contact "
+                                    "and without a dashpot; epsd adds a dashpot of its own",
                                     model.rolling));
   }
   if (model.pair_lever_arm != dem::PairLeverArm::contact_point) {
@@ -111,7 +115,9 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
   s.youngs_modulus.assign(n, 0.0);
   s.poisson_ratio.assign(n, 0.0);
   s.restitution.assign(n * n, 1.0);  // e = 1: no dashpot where nothing meets
-  for (std::vector<double>* v : {&s.friction, &s.kn, &s.kt, &s.gamman, &s.gammat}) v->assign(n * n, 0.0);
+  for (std::vector<double>* v : {&s.friction, &s.kn, &s.kt, &s.gamman, &s.gammat, &s.rolling_friction}) {
+    v->assign(n * n, 0.0);
+  }
   if (hertz) {
     for (std::size_t t = 1; t <= n; ++t) {
       const std::size_t material = types.material_of(t);
@@ -151,7 +157,8 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
       const double m_star = types.reduced_mass(a, b).value_or(0.0);
       const std::string pair = fmt::format("types {}-{} ('{}'-'{}')", a, b, scene.materials.at(ma).name,
                                            scene.materials.at(mb).name);
-      double e = 1.0, mu = 0.0, kn = 0.0, kt = 0.0, gn = 0.0, ratio = 0.0;
+      double e = 1.0, mu = 0.0, kn = 0.0, kt = 0.0, gn = 0.0, ratio = 0.0, mu_r = 0.0;
+      if (const auto* rolling = std::get_if<dem::ConstantTorqueRolling>(&law.rolling)) mu_r = rolling->rolling_friction;
       std::visit(
           [&](const auto& normal) {
             using N = std::decay_t<decltype(normal)>;
@@ -262,6 +269,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
         s.kt[k] = kt;
         s.gamman[k] = gn;
         s.gammat[k] = ratio * gn;
+        s.rolling_friction[k] = mu_r;
       }
     }
   }

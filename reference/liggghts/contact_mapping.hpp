@@ -18,6 +18,7 @@ namespace reference::liggghts {
 struct ContactSettings {
   std::string normal;                   ///< "hertz" or "hooke/stiffness"
   std::string tangential;               ///< "history" or "no_history"
+  std::string rolling;                  ///< "cdt", or empty without rolling resistance
   std::vector<std::string> options;     ///< model settings, e.g. "tangential_damping off"
   bool hard_particles = false;          ///< a Young's modulus above LIGGGHTS' 1e9 Pa sanity limit
   bool soft_particles = false;          ///< one below its 5e6 Pa limit
@@ -27,6 +28,7 @@ struct ContactSettings {
   std::vector<double> friction;         ///< per type pair
   std::vector<double> kn, kt;           ///< per type pair (hooke/stiffness) [N/m]
   std::vector<double> gamman, gammat;   ///< per type pair (hooke/stiffness, absolute) [kg/s]
+  std::vector<double> rolling_friction; ///< μ_r per type pair (rolling_friction cdt)
 };
 
 /// The settings, or every reason the scene's contact model has no LIGGGHTS counterpart.

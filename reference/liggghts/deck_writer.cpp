@@ -50,7 +50,10 @@ void write_groups(std::string& deck, const AtomTypes& types) {
 }
 
 /// The model words of pair_style gran and fix wall/gran.
-std::string model_words(const ContactSettings& c) { return fmt::format("model {} tangential {}", c.normal, c.tangential); }
+std::string model_words(const ContactSettings& c) {
+  return fmt::format("model {} tangential {}{}", c.normal, c.tangential,
+                     c.rolling.empty() ? "" : " rolling_friction " + c.rolling);
+}
 
 /// The model settings ("limitForce on", …): after the model words on pair_style gran, at the end
 /// of fix wall/gran (before `primitive` they end the model words too early).
@@ -164,6 +167,7 @@ void write_box_and_properties(std::string& deck, const cases::Scene& scene, cons
     table("tr_gammat", "gammat_abs", c.gammat);
   }
   table("tr_friction", "coefficientFriction", c.friction);
+  if (!c.rolling.empty()) table("tr_rolling", "coefficientRollingFriction", c.rolling_friction);
   line(deck, "pair_style", "gran " + model_words(c) + model_settings(c));
   line(deck, "pair_coeff", "* *");
   double r_max = 0.0;

@@ -17,6 +17,8 @@ cases::Scene matched_scene(const PreparedScene& prepared) {
   matched.model.tangential_history = dem::TangentialHistory::increment_project;
   // tangential_model_history.h: k_t|ς| against μ|F_n|; sliding drops the dashpot, sticking adds it uncapped.
   matched.model.coulomb_test = dem::CoulombTest::spring;
+  // rolling_model_cdt.h: μ_r k_n δ R* along the unit relative spin, its twist part dropped afterwards.
+  matched.model.constant_torque_form = dem::ConstantTorqueForm::projected;
   // surface_model_default.h: c_r = r − δ/2 for v_t and the torque, pairs and walls alike.
   matched.model.pair_lever_arm = dem::PairLeverArm::contact_point;
   matched.model.wall_lever_arm = dem::WallLeverArm::contact_point;

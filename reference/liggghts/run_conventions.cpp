@@ -16,7 +16,8 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, co
                         ? "velocity Verlet (fix nve/sphere, I = 0.4 m r²); forces see v(t + Δt/2), ω(t + Δt/2)"
                         : "velocity Verlet (fix nve); ω held (rotation = false)";
   c["time step"] = fmt::format("{:.17g} s, {} steps (the core's)", settings.timestep, settings.steps);
-  std::string words = fmt::format("pair_style gran model {} tangential {}", contacts.normal, contacts.tangential);
+  std::string words = fmt::format("pair_style gran model {} tangential {}{}", contacts.normal, contacts.tangential,
+                                  contacts.rolling.empty() ? "" : " rolling_friction " + contacts.rolling);
   for (const std::string& o : contacts.options) words += " " + o;
   c["contact model"] = words + "; the same words on every fix wall/gran";
   if (contacts.normal == "hertz") {
@@ -44,6 +45,12 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, co
       "ς += v_t Δt, then its normal part removed without rescaling (increment_project); Coulomb test "
       "k_t |ς| > μ |F_n| on the spring alone with F_n = elastic + dashpot (elastic_damping); sliding drops the "
       "tangential dashpot; sticking adds it after the test, so |F_t| may exceed μ |F_n|";
+  if (contacts.rolling == "cdt") {
+    c["rolling resistance"] =
+        "rolling_friction cdt: τ_p = −μ_r R* k_n δ (ω̂ − (ω̂·n) n), ω̂ the unit vector of ω_p − ω_q (of ω_p at a wall, "
+        "R* = r), k_n δ the elastic normal force; the twist part dropped after normalising (the core's "
+        "constant_torque_form = 'projected'); μ_r per type pair (coefficientRollingFriction)";
+  }
   c["lever arm"] = "r − δ/2 for the torque and the contact-point velocity, pairs and walls (contact_point)";
   if (!scene.walls.empty()) {
     c["walls"] =

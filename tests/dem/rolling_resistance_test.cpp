@@ -61,6 +61,40 @@ TEST(ConstantTorqueRolling, NoTorqueWithoutRollingSpin) {
   EXPECT_EQ(c.torque_on_p, Vec3::Zero());
 }
 
+TEST(ConstantTorqueRolling, TheProjectedFormIsLiggghtsCdtOnTheElasticForce) {
+  // LIGGGHTS rolling_friction cdt: μ_r R* F_el along the unit whole spin, its twist part dropped
+  // afterwards. A linear spring 1e5 N/m at δ = 1e-4 m: F_el = 10 N; a dashpot of 2 N/(m/s) at an
+  // approach of 0.5 m/s raises the friction-limit basis to 11 N, which the projected form ignores.
+  dem::PairProperties p;
+  p.normal_stiffness = 1e5;
+  p.damping_coefficient = 2.0;
+  p.rolling_friction = 0.1;
+  dem::ModelChoice c;
+  c.damping = "lammps_velocity";
+  c.rolling = "constant_torque";
+  c.constant_torque_form = dem::ConstantTorqueForm::projected;
+  const dem::PairLaw projected = dem::make_pair_law(c, p);
+  c.constant_torque_form = dem::ConstantTorqueForm::tangent;
+  const dem::PairLaw tangent = dem::make_pair_law(c, p);
+  const Vec3 spin(3.0, 100.0, 40.0);
+  const dem::ContactGeometry g = floor_contact(1e-4, Vec3(1, 0, -0.5), spin);
+  const dem::ContactOutcome a = dem::evaluate_contact(projected, g, dem::ContactHistory{}, 1e-6);
+  const dem::ContactOutcome b = dem::evaluate_contact(tangent, g, dem::ContactHistory{}, 1e-6);
+  ASSERT_NEAR(b.normal_force, 11.0, 1e-12);
+  const Vec3 unit = spin.normalized();
+  const Vec3 expected = -0.1 * kRadius * 10.0 * Vec3(unit.x(), unit.y(), 0.0);  // |·| = μ_r R* F_el sin θ
+  EXPECT_TRUE(a.torque_on_p.isApprox(expected, 1e-14)) << a.torque_on_p.transpose();
+  EXPECT_TRUE(b.torque_on_p.isApprox(-0.1 * kRadius * 11.0 * Vec3(3.0, 100.0, 0.0).normalized(), 1e-14));
+  EXPECT_TRUE(a.torque_on_q.isApprox(-a.torque_on_p, 1e-15));
+  // A spin in the tangent plane: the two forms differ by their force alone.
+  const dem::ContactGeometry rolling = floor_contact(1e-4, Vec3(1, 0, 0), Vec3(0, 100.0, 0));
+  const Vec3 t = dem::evaluate_contact(projected, rolling, {}, 1e-6).torque_on_p;
+  EXPECT_TRUE(t.isApprox(Vec3(0, -0.1 * kRadius * 10.0, 0), 1e-14)) << t.transpose();
+  // Pure twist: no torque in either form.
+  EXPECT_EQ(dem::laws::projected_rolling_torque(0.1, kRadius, 10.0, Vec3(0, 0, 7.0), Vec3::UnitZ()), Vec3::Zero());
+  EXPECT_EQ(dem::laws::projected_rolling_torque(0.1, kRadius, 10.0, Vec3::Zero(), Vec3::UnitZ()), Vec3::Zero());
+}
+
 TEST(SpringDashpotSliderRolling, StuckSpringGivesTorqueRStarNCrossPseudoForce) {
   const double k_r = 1e3, gamma_r = 0.02;
   const dem::PairLaw law = rolling_law("spring_dashpot_slider", 10.0, k_r, gamma_r);

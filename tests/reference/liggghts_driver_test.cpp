@@ -209,13 +209,48 @@ TEST(LiggghtsContactMapping, EveryInexpressibleChoiceIsRefusedWithItsReason) {
   EXPECT_TRUE(says(reasons("normal = \"linear\"\ndamping = \"tsuji\"", "normal_stiffness = 1e4\n",
                            "normal_stiffness = 1e4\n"),
                    "tsuji"));
-  EXPECT_TRUE(says(reasons(kHertzModel + "\nrolling = \"constant_torque\"", "rolling_friction = 0.1\n",
-                           "rolling_friction = 0.1\n"),
-                   "rolling"));
+  EXPECT_TRUE(says(reasons(kHertzModel + "\nrolling = \"spring_dashpot_slider\"",
+                           "rolling_friction = 0.1\nrolling_stiffness = 10.0\nrolling_damping = 0.0\n",
+                           "rolling_friction = 0.1\nrolling_stiffness = 10.0\nrolling_damping = 0.0\n"),
+                   "epsd2"));
   // A [[pairs]] override of E* is not what LIGGGHTS mixes from E and ν.
   const std::string overridden = case_text(kHertzModel, keys0, keys1) +
                                  "[[pairs]]\nmaterials = [\"steel\", \"glass\"]\neffective_modulus = 1.0e7\n";
   EXPECT_TRUE(says(mapping_of(scene_of(overridden)).reasons, "E* = 1e+07 Pa"));
+}
+
+TEST(LiggghtsContactMapping, TheConstantRollingTorqueIsCdtWithItsCoefficientPerTypePair) {
+  const cases::Scene scene = scene_of(case_text(kHertzModel + "\nrolling = \"constant_torque\"",
+                                                with_ratio(kSteel, 0.0) + "rolling_friction = 0.05\n",
+                                                with_ratio(kGlass, 0.0) + "rolling_friction = 0.02\n"));
+  const ContactMapping m = mapping_of(scene);
+  ASSERT_TRUE(m.reasons.empty()) << m.reasons.front();
+  EXPECT_EQ(m.settings->rolling, "cdt");
+  // Types: steel, glass, the floor (glass); μ_r mixed by the core's rule (min) per type pair.
+  const std::vector<double>& mu = m.settings->rolling_friction;
+  ASSERT_EQ(mu.size(), 9U);
+  EXPECT_EQ(mu[0], 0.05);  // steel–steel
+  EXPECT_EQ(mu[1], 0.02);  // steel–glass
+  EXPECT_EQ(mu[3], 0.02);  // glass–steel
+  EXPECT_EQ(mu[2], 0.02);  // steel–floor
+  const AtomTypes types = classify(scene);
+  const std::string deck = write_deck(scene, types, *m.settings, trace_plan(scene, types), DeckSettings{1e-6, 100});
+  EXPECT_NE(deck.find("gran model hertz tangential history rolling_friction cdt tangential_damping off\n"),
+            std::string::npos)
+      << deck;
+  EXPECT_NE(deck.find("wall/gran model hertz tangential history rolling_friction cdt primitive"), std::string::npos)
+      << deck;
+  EXPECT_NE(deck.find("property/global coefficientRollingFriction peratomtypepair 3 0.050000000000000003 0.02"),
+            std::string::npos)
+      << deck;
+  // Without rolling resistance the deck names neither.
+  const cases::Scene plain = scene_of(case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0)));
+  const ContactMapping p = mapping_of(plain);
+  ASSERT_TRUE(p.reasons.empty());
+  const AtomTypes plain_types = classify(plain);
+  const std::string plain_deck =
+      write_deck(plain, plain_types, *p.settings, trace_plan(plain, plain_types), DeckSettings{1e-6, 100});
+  EXPECT_EQ(plain_deck.find("rolling"), std::string::npos);
 }
 
 TEST(LiggghtsContactMapping, ARigidWallIsATypeOfEnormousModulus) {

@@ -35,4 +35,19 @@ namespace dem::laws {
   return -(rolling_friction * reduced_radius * basis / magnitude) * rolling;
 }
 
+/// LIGGGHTS' constant directional rolling torque on p (`rolling_friction cdt`, LIGGGHTS-PUBLIC
+/// 3.8.0 src/rolling_model_cdt.h): τ_p = −μ_r R* F_el (ω̂ − (ω̂·n) n), ω̂ the unit vector of the
+/// whole relative spin ω_p − ω_q, F_el ≥ 0 the elastic normal force [N]. The twist part is dropped
+/// after normalising, so the torque shrinks as ω_p − ω_q turns towards n (zero for pure twist);
+/// it equals constant_rolling_torque when the spin lies in the tangent plane. Zero when
+/// ω_p − ω_q = 0.
+[[nodiscard]] inline Vec3 projected_rolling_torque(double rolling_friction, double reduced_radius,
+                                                   double elastic_force, const Vec3& relative_angular_velocity,
+                                                   const Vec3& normal) noexcept {
+  const double magnitude = relative_angular_velocity.norm();
+  if (!(magnitude > 0.0)) return Vec3::Zero();
+  const Vec3 along = relative_angular_velocity * (rolling_friction * elastic_force * reduced_radius / magnitude);
+  return -(along - along.dot(normal) * normal);
+}
+
 }  // namespace dem::laws

@@ -63,7 +63,7 @@ struct NoCohesion : NoneModelInfo {
 struct NoRolling : NoneModelInfo {
   static constexpr std::string_view kDescription = "no rolling resistance";
   static NoRolling from_pair(const PairProperties&) { return {}; }
-  [[nodiscard]] RollingResponse evaluate(const ContactInput&, double, ContactHistory&) const noexcept {
+  [[nodiscard]] RollingResponse evaluate(const ContactInput&, const RollingInput&, ContactHistory&) const noexcept {
     return {};
   }
 };

@@ -16,7 +16,7 @@
 //   damping:    double coefficient(const ContactGeometry&, const NormalResponse&) const noexcept
 //   tangential: TangentialResponse evaluate(const ContactInput&, const TangentialInput&,
 //                                           ContactHistory& next) const noexcept
-//   rolling:    RollingResponse evaluate(const ContactInput&, double normal_force,
+//   rolling:    RollingResponse evaluate(const ContactInput&, const RollingInput&,
 //                                        ContactHistory& next) const noexcept
 namespace dem {
 
@@ -32,6 +32,7 @@ struct ContactPolicies {
   AdhesiveDashpot adhesive_dashpot = AdhesiveDashpot::clamp;
   MindlinForm mindlin_form = MindlinForm::total;
   CoulombTest coulomb_test = CoulombTest::total;
+  ConstantTorqueForm constant_torque_form = ConstantTorqueForm::tangent;
 };
 
 /// Everything a sub-model may read about one contact at one evaluation.
@@ -76,6 +77,12 @@ struct TangentialInput {
   double damping_coefficient;  ///< normal dashpot η_n [kg/s] of this contact
   double limit_basis;          ///< the normal force the Coulomb limit is based on [N], ≥ 0
   double contact_radius = 0.0; ///< the cohesion law's contact radius a [m], 0 when it sets none
+};
+
+/// Normal-force information the rolling sub-model uses.
+struct RollingInput {
+  double limit_basis;    ///< the normal force the Coulomb limit is based on [N], ≥ 0
+  double elastic_force;  ///< the elastic normal force [N] (ConstantTorqueForm::projected)
 };
 
 /// What a tangential sub-model returns.

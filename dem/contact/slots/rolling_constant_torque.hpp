@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string_view>
 
 #include "dem/contact/laws/rolling_resistance.hpp"
@@ -14,7 +15,8 @@ namespace dem {
 /// Rolling sub-model `constant_torque` (constant directional torque, "type A", Ai et al. 2011):
 /// τ_p = −μ_r R* F ω̂_r with F the friction-limit basis and ω_r the tangent-plane part of the
 /// relative angular velocity ω_p − ω_q (ω_q = 0 for a wall); q receives −τ_p, a pure couple, so
-/// angular momentum about the contact point is conserved. Zero when ω_r = 0.
+/// angular momentum about the contact point is conserved. Zero when ω_r = 0. Under
+/// ConstantTorqueForm::projected it is LIGGGHTS' form instead (laws::projected_rolling_torque).
 struct ConstantTorqueRolling {
   static constexpr std::string_view kKeyword = "constant_torque";
   static constexpr std::string_view kDescription =
@@ -26,7 +28,8 @@ struct ConstantTorqueRolling {
   static constexpr std::string_view kYade =
       "none in the installed build (CohFrictMat rolling is elastic–plastic, not constant)";
   static constexpr std::string_view kLiggghts =
-      "not mapped yet: `rolling_friction cdt` is μ_r k_n δ R* (elastic force only) against ω_p − ω_q";
+      "`rolling_friction cdt`: μ_r R* k_n δ (the elastic force) along ω̂_p − ω̂_q, its tangent part "
+      "(constant_torque_form = 'projected')";
 
   double rolling_friction;  ///< μ_r [-]
 
@@ -36,10 +39,14 @@ struct ConstantTorqueRolling {
                               "rolling = 'constant_torque'")};
   }
   /// Torques on p and q; dissipation μ_r R* F |ω_r| · elapsed.
-  [[nodiscard]] RollingResponse evaluate(const ContactInput& in, double basis,
+  [[nodiscard]] RollingResponse evaluate(const ContactInput& in, const RollingInput& normal,
                                          ContactHistory&) const noexcept {
-    const Vec3 torque = laws::constant_rolling_torque(rolling_friction, in.g.reduced_radius, basis,
-                                                      in.g.relative_angular_velocity, in.g.normal);
+    const Vec3 torque =
+        in.policies.constant_torque_form == ConstantTorqueForm::projected
+            ? laws::projected_rolling_torque(rolling_friction, in.g.reduced_radius, std::abs(normal.elastic_force),
+                                             in.g.relative_angular_velocity, in.g.normal)
+            : laws::constant_rolling_torque(rolling_friction, in.g.reduced_radius, normal.limit_basis,
+                                            in.g.relative_angular_velocity, in.g.normal);
     const double power = -torque.dot(in.g.relative_angular_velocity);
     return {torque, -torque, std::max(power, 0.0) * in.elapsed};
   }

@@ -27,7 +27,8 @@ struct SpringDashpotSliderRolling {
   static constexpr std::string_view kYade =
       "none: CohFrictMat's moment law has no dashpot and a different stiffness definition";
   static constexpr std::string_view kLiggghts =
-      "not mapped yet: `rolling_friction epsd2` is a spring k_t R*² capped at μ_r |F_n| R*, without a dashpot";
+      "none: `rolling_friction epsd2` is a torque spring k_t R*² (the tangential stiffness) fed by the tangent "
+      "spin, capped at μ_r |F_n| R*, not turned with the contact, without a dashpot";
 
   double stiffness;         ///< k_r [N/m]
   double damping;           ///< γ_r [kg/s]
@@ -41,13 +42,13 @@ struct SpringDashpotSliderRolling {
             required_property(pair, &PairProperties::rolling_friction, "rolling_friction", who)};
   }
   /// Torques on p and q; updates next.rolling_slip.
-  [[nodiscard]] RollingResponse evaluate(const ContactInput& in, double basis,
+  [[nodiscard]] RollingResponse evaluate(const ContactInput& in, const RollingInput& normal,
                                          ContactHistory& next) const noexcept {
     const double r = in.g.reduced_radius;
     const Vec3 v_roll = laws::rolling_velocity(r, in.g.relative_angular_velocity, in.g.normal);
     const Vec3 carried = laws::carry_into_tangent_plane(in.committed.rolling_slip, in.g.normal);
     const laws::SpringSliderResult s = laws::spring_slider(
-        stiffness, damping, rolling_friction * basis, carried, v_roll, in.elapsed,
+        stiffness, damping, rolling_friction * normal.limit_basis, carried, v_roll, in.elapsed,
         in.policies.unloaded_slider == UnloadedSlider::zero);
     next.rolling_slip = s.displacement;
     const Vec3 torque = laws::rolling_torque(r, in.g.normal, s.force);
