@@ -6,7 +6,7 @@
 #include "dem/core/model_error.hpp"
 #include "reference/liggghts/deck_writer.hpp"
 #include "reference/liggghts/trace_columns.hpp"
-#include "reference/liggghts/wall_planes.hpp"
+#include "reference/liggghts/primitive_walls.hpp"
 
 namespace reference::liggghts {
 
@@ -18,6 +18,14 @@ DeckParts deck_parts(const PreparedScene& prepared) {
   for (std::size_t w = 0; w < scene.walls.size(); ++w) {
     if (scene.walls[w].mesh) continue;  // one reason per mesh below
     for (auto& reason : unmapped_wall(scene.walls[w], w)) reasons.push_back(std::move(reason));
+    for (auto& reason : cylinder_end_reasons(scene, w)) reasons.push_back(std::move(reason));
+  }
+  for (const auto& [p, w] : scene.output.trace_walls) {
+    if (!wall_plane(scene.walls.at(w))) {
+      reasons.push_back(fmt::format("LIGGGHTS driver: the traced contact of particle {} with wall {} ('{}'): only a "
+                                    "plane wall's overlap and force are traced",
+                                    p, w, scene.walls.at(w).name));
+    }
   }
   for (const cases::MeshSpec& mesh : scene.meshes) {
     reasons.push_back(fmt::format("LIGGGHTS driver: mesh '{}' is not mapped yet (fix mesh/surface + fix wall/gran "

@@ -10,7 +10,7 @@
 #include "reference/common/atom_data.hpp"
 #include "reference/common/deck_comment.hpp"
 #include "reference/common/dump_snapshots.hpp"
-#include "reference/liggghts/wall_planes.hpp"
+#include "reference/liggghts/primitive_walls.hpp"
 
 namespace reference::liggghts {
 namespace {
@@ -220,18 +220,19 @@ void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& 
     line(deck, "fix", fmt::format("{} all store/force", kPairForceFix));
   }
   for (std::size_t w = 0; w < scene.walls.size() && any_mobile; ++w) {
-    const std::optional<WallPlane> plane = wall_plane(scene.walls[w]);
-    if (!plane) continue;  // supports() reports it
+    const std::string primitive = primitive_arguments(scene.walls[w]);
+    if (primitive.empty()) continue;  // supports() reports it
     if (!wall_in_run(scene.walls[w])) {
       deck += fmt::format("# wall {} ('{}') is removed at t <= 0: only the preparation met it\n", w,
                           deck_comment_text(scene.walls[w].name));
       continue;
     }
-    deck += fmt::format("# wall {} ('{}'): a two-sided primitive plane of type {}{}\n", w,
-                        deck_comment_text(scene.walls[w].name), types.wall_type(w),
+    deck += fmt::format("# wall {} ('{}'): a two-sided primitive {} of type {}{}\n", w,
+                        deck_comment_text(scene.walls[w].name),
+                        wall_plane(scene.walls[w]) ? "plane" : "cylinder, unbounded along its axis", types.wall_type(w),
                         s.timing_only ? "" : "; its force on each atom is stored");
     line(deck, "fix", fmt::format("{} tr_mobile wall/gran {} primitive type {} {}{}{}", wall_fix_id(w), model_words(c),
-                                  types.wall_type(w), plane_arguments(*plane),
+                                  types.wall_type(w), primitive,
                                   s.timing_only ? "" : " store_force yes", model_settings(c)));
   }
   const cases::Vector3& g = scene.gravity;

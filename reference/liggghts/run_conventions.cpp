@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "reference/liggghts/primitive_walls.hpp"
+
 namespace reference::liggghts {
 
 std::map<std::string, std::string> run_conventions(const cases::Scene& scene, const ContactSettings& contacts,
@@ -54,9 +56,15 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, co
   c["lever arm"] = "r − δ/2 for the torque and the contact-point velocity, pairs and walls (contact_point)";
   if (!scene.walls.empty()) {
     c["walls"] =
-        "fix wall/gran … primitive type T xplane|yplane|zplane: a wall is an atom type mixed like a particle "
-        "(rigid: E = 1e300 Pa); planes push from both sides; R* = r, m* = m; history zeroed when the sphere "
-        "leaves";
+        "fix wall/gran … primitive type T xplane|yplane|zplane, or xcylinder|ycylinder|zcylinder R c1 c2: a wall "
+        "is an atom type mixed like a particle (rigid: E = 1e300 Pa); planes and cylinders push from both sides; "
+        "R* = r, m* = m; history zeroed when the sphere leaves";
+    if (std::any_of(scene.walls.begin(), scene.walls.end(),
+                    [](const cases::WallSpec& w) { return wall_cylinder(w).has_value(); })) {
+      c["walls"] += "; a primitive cylinder is unbounded along its axis, the core's ends where its height does, so "
+                    "the two agree while no sphere passes an end (one that starts beyond an end touching the "
+                    "extended surface makes the case n/a)";
+    }
   }
   c["contact onset"] = "pairs touch while |x_p − x_q| < r_p + r_q (strict)";
   std::string sources;

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "reference/liggghts/wall_planes.hpp"
+#include "reference/liggghts/primitive_walls.hpp"
 #include "support/text_tokens.hpp"
 
 namespace reference::liggghts {

@@ -17,9 +17,10 @@
 #include "reference/liggghts/contact_mapping.hpp"
 #include "reference/liggghts/deck_parts.hpp"
 #include "reference/liggghts/deck_writer.hpp"
+#include "reference/liggghts/liggghts_engine.hpp"
 #include "reference/liggghts/liggghts_runner.hpp"
+#include "reference/liggghts/primitive_walls.hpp"
 #include "reference/liggghts/trace_columns.hpp"
-#include "reference/liggghts/wall_planes.hpp"
 
 namespace liggghts_driver_test {
 
@@ -433,6 +434,62 @@ TEST(LiggghtsThermo, ReadsTheTableAndRefusesAShortOrDamagedOne) {
   const std::size_t row30 = cut.find("\n      30 ") + 1;
   cut.erase(cut.rfind(' ', cut.find('\n', row30)), cut.find('\n', row30) - cut.rfind(' ', cut.find('\n', row30)));
   EXPECT_NE(error_of(cut, 100).find("values; expected"), std::string::npos) << error_of(cut, 100);
+}
+
+TEST(LiggghtsWalls, AnAxisAlignedCylinderIsAPrimitiveWithItsCentreInLiggghtsOrder) {
+  cases::WallSpec barrel;
+  barrel.name = "barrel";
+  barrel.shape = dem::WallShape::frustum;
+  barrel.point = {0.001, 0.002, 0.003};
+  barrel.size_u = barrel.size_v = 0.01;
+  barrel.length = 0.04;
+  // Axis z: centre (x, y); axis y: (z, x); axis x: (y, z) — primitive_wall_definitions.h Dim<dim>.
+  barrel.normal = {0.0, 0.0, 1.0};
+  EXPECT_EQ(primitive_arguments(barrel), "zcylinder 0.01 0.001 0.002");
+  barrel.normal = {0.0, -1.0, 0.0};
+  EXPECT_EQ(primitive_arguments(barrel), "ycylinder 0.01 0.0030000000000000001 0.001");
+  const std::optional<WallCylinder> down = wall_cylinder(barrel);
+  ASSERT_TRUE(down.has_value());
+  EXPECT_DOUBLE_EQ(down->low, 0.002 - 0.04);  // the axis points from the base towards the other end
+  EXPECT_DOUBLE_EQ(down->high, 0.002);
+  barrel.normal = {1.0, 0.0, 0.0};
+  EXPECT_EQ(primitive_arguments(barrel), "xcylinder 0.01 0.002 0.0030000000000000001");
+  EXPECT_TRUE(unmapped_wall(barrel, 0).empty());
+  barrel.normal = {0.6, 0.8, 0.0};
+  EXPECT_TRUE(primitive_arguments(barrel).empty());
+  EXPECT_NE(unmapped_wall(barrel, 0).at(0).find("tilted: a primitive cylinder"), std::string::npos);
+  barrel.normal = {0.0, 0.0, 1.0};
+  barrel.size_v = 0.005;  // a cone
+  EXPECT_TRUE(primitive_arguments(barrel).empty());
+  EXPECT_NE(unmapped_wall(barrel, 0).at(0).find("is a cone: only plane and cylinder walls"), std::string::npos);
+}
+
+TEST(LiggghtsWalls, ASphereStartingBeyondACylindersEndOnItsExtendedSurfaceIsNotApplicable) {
+  // LIGGGHTS' primitive cylinder has no ends: a sphere below a barrel whose extended surface it
+  // touches would be pushed there, the core's barrel ends at its base.
+  const std::string barrel = R"([[walls]]
+type = "cylinder"
+name = "barrel"
+base = [0.0, 0.0, 0.0]
+axis = [0.0, 0.0, 1.0]
+radius = 0.00809
+height = 0.02
+material = "glass"
+)";
+  std::string text = case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0)) + barrel;
+  // Sphere 1 (r 3 mm, centre x = 5.1 mm) touches the barrel (R 8.09 mm) from inside, within its height.
+  EXPECT_TRUE(cylinder_end_reasons(scene_of(text), 1).empty());
+  const std::string at_zero = "position = [0.0051, 0.0, 0.0]";
+  text.replace(text.find(at_zero), at_zero.size(), "position = [0.0051, 0.0, -0.001]");
+  const std::vector<std::string> reasons = cylinder_end_reasons(scene_of(text), 1);
+  ASSERT_EQ(reasons.size(), 1U);
+  EXPECT_NE(reasons[0].find("particle 1 starts beyond an end of cylinder wall 1 ('barrel')"), std::string::npos)
+      << reasons[0];
+  // A traced contact with a cylinder has no overlap formula here.
+  std::string traced = case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0)) + barrel;
+  traced.replace(traced.find("trace_walls = [[0, 0]]"), 22, "trace_walls = [[0, 1]]");
+  const reference::Support s = reference::LiggghtsEngine{}.supports(scene_of(traced));
+  EXPECT_NE(s.explain().find("only a plane wall's overlap and force are traced"), std::string::npos) << s.explain();
 }
 
 TEST(LiggghtsWalls, APlaneFacingDownMeasuresAndPushesAlongItsOwnNormal) {
