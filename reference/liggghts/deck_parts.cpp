@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "reference/liggghts/deck_parts.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "dem/core/model_error.hpp"
@@ -27,10 +29,15 @@ DeckParts deck_parts(const PreparedScene& prepared) {
                                     p, w, scene.walls.at(w).name));
     }
   }
-  for (const cases::MeshSpec& mesh : scene.meshes) {
-    reasons.push_back(fmt::format("LIGGGHTS driver: mesh '{}' is not mapped yet (fix mesh/surface + fix wall/gran "
-                                  "mesh is LIGGGHTS' own)",
-                                  mesh.name));
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {  // the facets share the mesh's motion and removal
+    const auto first = std::find_if(scene.walls.begin(), scene.walls.end(),
+                                    [&](const cases::WallSpec& w) { return w.mesh == m; });
+    if (first == scene.walls.end() || !wall_in_run(*first)) continue;
+    const std::string who = fmt::format("LIGGGHTS driver: mesh '{}'", scene.meshes[m].name);
+    if (first->velocity[0] != 0.0 || first->velocity[1] != 0.0 || first->velocity[2] != 0.0) {
+      reasons.push_back(who + " moves (fix move/mesh is not mapped yet)");
+    }
+    if (first->removed_at) reasons.push_back(who + " is removed during the run: a LIGGGHTS fix stays");
   }
   if (scene.domain.any_periodic()) {
     reasons.emplace_back("LIGGGHTS driver: periodic boundaries are not mapped yet (the trace formulas read "
@@ -62,6 +69,9 @@ DeckParts deck_parts(const PreparedScene& prepared) {
 TimingDeck timing_deck(const PreparedScene& prepared, double timestep, std::uint64_t steps, double skin) {
   TimingDeck out;
   DeckParts parts = deck_parts(prepared);
+  if (!prepared.scene().meshes.empty()) {
+    parts.reasons.emplace_back("LIGGGHTS driver: demwb bench does not write mesh files yet");
+  }
   if (!parts.reasons.empty()) {  // deck_parts leaves the contacts empty only with a reason
     out.reasons = std::move(parts.reasons);
     return out;

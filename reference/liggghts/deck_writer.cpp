@@ -49,6 +49,9 @@ void write_groups(std::string& deck, const AtomTypes& types) {
   }
 }
 
+/// The fix holding mesh `m`'s facets (one fix wall/gran, tr_mesh_walls, makes them all granular walls).
+std::string mesh_fix_id(std::size_t m) { return fmt::format("tr_mesh_{}", m); }
+
 /// The model words of pair_style gran and fix wall/gran.
 std::string model_words(const ContactSettings& c) {
   return fmt::format("model {} tangential {}{}", c.normal, c.tangential,
@@ -87,6 +90,15 @@ std::pair<cases::Vector3, cases::Vector3> simulation_box(const cases::Scene& sce
     const double margin = 2.0 * v_max * duration + std::abs(scene.gravity[k]) * duration * duration + skin;
     lo[k] -= margin;
     hi[k] += margin;
+  }
+  for (const cases::WallSpec& wall : scene.walls) {  // a mesh lies inside the box (fix mesh/surface)
+    if (!wall.mesh || !wall_in_run(wall)) continue;
+    for (const cases::Vector3& corner : wall.corners) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], corner[k] - skin);
+        hi[k] = std::max(hi[k], corner[k] + skin);
+      }
+    }
   }
   for (const cases::WallSpec& wall : scene.walls) {
     const std::optional<WallPlane> plane = wall_plane(wall);
@@ -235,6 +247,29 @@ void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& 
                                   types.wall_type(w), primitive,
                                   s.timing_only ? "" : " store_force yes", model_settings(c)));
   }
+  std::string meshes;  // LIGGGHTS 3.8 takes one fix wall/gran of type mesh, holding every mesh
+  std::size_t mesh_count = 0;
+  for (std::size_t m = 0; m < scene.meshes.size() && any_mobile; ++m) {
+    const auto first = std::find_if(scene.walls.begin(), scene.walls.end(),
+                                    [&](const cases::WallSpec& w) { return w.mesh == m; });
+    if (first == scene.walls.end()) continue;
+    const auto w = static_cast<std::size_t>(first - scene.walls.begin());
+    if (!wall_in_run(*first)) {
+      deck += fmt::format("# mesh {} ('{}') is removed at t <= 0: only the preparation met it\n", m,
+                          deck_comment_text(scene.meshes[m].name));
+      continue;
+    }
+    deck += fmt::format("# mesh {} ('{}'): {} facets of type {}, two-sided, from {}\n", m,
+                        deck_comment_text(scene.meshes[m].name), scene.meshes[m].facets, types.wall_type(w),
+                        mesh_file(m));
+    line(deck, "fix", fmt::format("{} all mesh/surface file {} type {}", mesh_fix_id(m), mesh_file(m), types.wall_type(w)));
+    meshes += " " + mesh_fix_id(m);
+    ++mesh_count;
+  }
+  if (mesh_count > 0) {
+    line(deck, "fix", fmt::format("tr_mesh_walls tr_mobile wall/gran {} mesh n_meshes {} meshes{}{}", model_words(c),
+                                  mesh_count, meshes, model_settings(c)));
+  }
   const cases::Vector3& g = scene.gravity;
   const double g_norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   if (any_mobile && g_norm > 0.0) {
@@ -304,6 +339,20 @@ std::string write_atom_data(const cases::Scene& scene, const AtomTypes& types, c
                                 deck_comment_text(scene.name), scene.particles.size(), types.count());
   out += atom_data_body(scene, types.type_of, lo, hi, "Atoms");
   return out;
+}
+
+std::string mesh_file(std::size_t m) { return fmt::format("mesh_{}.stl", m); }
+
+std::string write_mesh_stl(const cases::Scene& scene, std::size_t m) {
+  std::string stl = fmt::format("solid mesh_{}\n", m);
+  for (const cases::WallSpec& w : scene.walls) {
+    if (w.mesh != m) continue;
+    // The facet normal is LIGGGHTS' to recompute; the corners' order orients the triangle.
+    stl += "  facet normal 0 0 0\n    outer loop\n";
+    for (const cases::Vector3& c : w.corners) stl += fmt::format("      vertex {} {} {}\n", num(c[0]), num(c[1]), num(c[2]));
+    stl += "    endloop\n  endfacet\n";
+  }
+  return stl + fmt::format("endsolid mesh_{}\n", m);
 }
 
 }  // namespace reference::liggghts

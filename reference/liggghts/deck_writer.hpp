@@ -25,6 +25,13 @@ struct DeckSettings {
 std::string write_deck(const cases::Scene& scene, const AtomTypes& types, const ContactSettings& contacts,
                        const TracePlan& plan, const DeckSettings& settings);
 
+/// The file name of mesh `m`'s facets in the run directory ("mesh_0.stl", …).
+std::string mesh_file(std::size_t m);
+
+/// Mesh `m`'s facets as an ASCII STL in the scene's coordinates (scaled and moved as the case
+/// says), corners in the facets' order with 17 digits: what `fix mesh/surface file` reads.
+std::string write_mesh_stl(const cases::Scene& scene, std::size_t m);
+
 /// The data file of a large scene (atoms_in_data_file): the box, `Atoms` (id type diameter
 /// density x y z) and `Velocities` (id vx vy vz ωx ωy ωz; zero for frozen particles).
 std::string write_atom_data(const cases::Scene& scene, const AtomTypes& types, const DeckSettings& settings);

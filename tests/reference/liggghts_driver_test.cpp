@@ -3,6 +3,9 @@
 // particles', the contact model as property tables (values and every refusal), the deck, the
 // thermo table read back, the banner.
 #include <cmath>
+#include <filesystem>
+#include <iterator>
+#include <sstream>
 #include <string>
 
 #include <fmt/format.h>
@@ -21,6 +24,7 @@
 #include "reference/liggghts/liggghts_runner.hpp"
 #include "reference/liggghts/primitive_walls.hpp"
 #include "reference/liggghts/trace_columns.hpp"
+#include "support/text_file.hpp"
 
 namespace liggghts_driver_test {
 
@@ -490,6 +494,55 @@ material = "glass"
   traced.replace(traced.find("trace_walls = [[0, 0]]"), 22, "trace_walls = [[0, 1]]");
   const reference::Support s = reference::LiggghtsEngine{}.supports(scene_of(traced));
   EXPECT_NE(s.explain().find("only a plane wall's overlap and force are traced"), std::string::npos) << s.explain();
+}
+
+TEST(LiggghtsWalls, MeshesAreWrittenAsStlFilesAndHeldByOneWallFix) {
+  // Two meshes: one fix mesh/surface each, one fix wall/gran holding both (LIGGGHTS 3.8 refuses a
+  // second wall/gran of type mesh), the files' corners in the scene's coordinates to 17 digits,
+  // and a box that holds every corner.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "demwb-liggghts-driver-mesh";
+  std::filesystem::create_directories(dir);
+  support::write_file(dir / "tri.stl", "solid t\n facet normal 0 0 0\n  outer loop\n   vertex 0 0 0\n"
+                                       "   vertex 10 0 0\n   vertex 0 10 0\n  endloop\n endfacet\nendsolid t\n");
+  std::string text = case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0));
+  text += "[[walls]]\ntype = \"mesh\"\nname = \"a\"\nfile = \"tri.stl\"\nscale = 1.0e-3\n"
+          "translate = [0.0, 0.0, -0.005]\nmaterial = \"glass\"\n"
+          "[[walls]]\ntype = \"mesh\"\nname = \"b\"\nfile = \"tri.stl\"\nscale = 1.0e-3\n"
+          "translate = [0.0, 0.0, 0.03]\nmaterial = \"steel\"\n";
+  support::write_file(dir / "meshes.toml", text);
+  const cases::Scene scene = cases::load_case(dir / "meshes.toml");
+  ASSERT_EQ(scene.meshes.size(), 2U);
+  const reference::PreparedScene prepared(scene);
+  const DeckParts parts = deck_parts(prepared);
+  ASSERT_TRUE(parts.reasons.empty()) << parts.reasons.front();
+  DeckSettings settings{1e-6, 100};
+  const std::string deck = write_deck(scene, parts.types, *parts.contacts, trace_plan(scene, parts.types), settings);
+  EXPECT_NE(deck.find("tr_mesh_0 all mesh/surface file mesh_0.stl type 3"), std::string::npos) << deck;
+  EXPECT_NE(deck.find("tr_mesh_1 all mesh/surface file mesh_1.stl type 4"), std::string::npos) << deck;
+  EXPECT_NE(deck.find("wall/gran model hertz tangential history mesh n_meshes 2 meshes tr_mesh_0 tr_mesh_1 "
+                      "tangential_damping off"),
+            std::string::npos)
+      << deck;
+  const std::string stl = write_mesh_stl(scene, 1);
+  EXPECT_EQ(stl.rfind("solid mesh_1\n", 0), 0U);
+  EXPECT_NE(stl.find("vertex 0.01 0 0.029999999999999999\n"), std::string::npos) << stl;
+  EXPECT_EQ(mesh_file(1), "mesh_1.stl");
+  // The box reaches the upper mesh at z = 30 mm (the spheres alone would stop far below it).
+  const auto region = deck.find("region");
+  ASSERT_NE(region, std::string::npos);
+  const std::string box = deck.substr(region, deck.find('\n', region) - region);
+  std::istringstream words(box);
+  std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
+  ASSERT_GE(w.size(), 9U) << box;
+  EXPECT_GE(std::stod(w[8]), 0.03) << box;
+  // A moving mesh is not mapped; nor does demwb bench write mesh files.
+  std::string moving = text;
+  moving.insert(moving.rfind("material = \"steel\""), "velocity = [0.0, 0.0, -0.1]\n");
+  support::write_file(dir / "moving.toml", moving);
+  const cases::Scene moved = cases::load_case(dir / "moving.toml");
+  const reference::PreparedScene moved_prepared(moved);
+  EXPECT_NE(reference::LiggghtsEngine{}.supports(moved_prepared).explain().find("mesh 'b' moves"), std::string::npos);
+  EXPECT_NE(timing_deck(prepared, 1e-6, 10, 1e-4).reasons.at(0).find("does not write mesh files"), std::string::npos);
 }
 
 TEST(LiggghtsWalls, APlaneFacingDownMeasuresAndPushesAlongItsOwnNormal) {
