@@ -60,12 +60,15 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
   const std::size_t n = types.count();
   ContactSettings s;
   const bool hertz = model.normal == "hertz";
+  // Hertz with LAMMPS' viscoelastic dashpot η = η₀ √(R* δ) m* is hertz/stiffness, whose k_n, k_t and
+  // γ_n per type pair are the core's 4/3 E*, 8 G* and η₀ (normal_model_hertz_stiffness.h).
+  const bool hertz_stiffness = hertz && model.damping == "lammps_viscoelastic";
   if (model.normal != "hertz" && model.normal != "linear") {
     add_reason(reasons, fmt::format("LIGGGHTS driver: normal = '{}' is not mapped (model hertz and hooke/stiffness "
                                     "express 'hertz' and 'linear')",
                                     model.normal));
   }
-  s.normal = hertz ? "hertz" : "hooke/stiffness";
+  s.normal = hertz_stiffness ? "hertz/stiffness" : hertz ? "hertz" : "hooke/stiffness";
   if (model.cohesion != "none") {
     add_reason(reasons, fmt::format("LIGGGHTS driver: cohesion = '{}' has no LIGGGHTS counterpart here: its sjkr "
                                     "and sjkr2 pull with k·A (k an energy density, A the contact area) and only "
@@ -118,7 +121,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
   for (std::vector<double>* v : {&s.friction, &s.kn, &s.kt, &s.gamman, &s.gammat, &s.rolling_friction}) {
     v->assign(n * n, 0.0);
   }
-  if (hertz) {
+  if (hertz && !hertz_stiffness) {
     for (std::size_t t = 1; t <= n; ++t) {
       const std::size_t material = types.material_of(t);
       const auto yn = elastic_constants(scene, material);
@@ -163,6 +166,10 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
           [&](const auto& normal) {
             using N = std::decay_t<decltype(normal)>;
             if constexpr (std::is_same_v<N, dem::HertzNormal>) {
+              if (hertz_stiffness) {
+                kn = 4.0 / 3.0 * normal.effective_modulus;  // F = kn √(R* δ) δ
+                return;
+              }
               const double ya = s.youngs_modulus[a - 1], yb = s.youngs_modulus[b - 1];
               if (ya > 0.0 && yb > 0.0 &&
                   !close(liggghts_effective_modulus(ya, s.poisson_ratio[a - 1], yb, s.poisson_ratio[b - 1]),
@@ -205,6 +212,12 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
                                     "which is LIGGGHTS' dashpot");
               }
               gn = damping.factor * std::sqrt(m_star * kn);
+            } else if constexpr (std::is_same_v<D, dem::LammpsViscoelasticDamping>) {
+              gn = damping.rate_per_length;  // only reached on Hertz (hertz/stiffness); linear: refused below
+              if (!hertz) {
+                add_reason(reasons, "LIGGGHTS driver: damping = 'lammps_viscoelastic' on a linear spring has no "
+                                    "LIGGGHTS counterpart (hertz/stiffness carries it on Hertz)");
+              }
             } else if constexpr (std::is_same_v<D, dem::LammpsVelocityDamping>) {
               if (hertz) {
                 add_reason(reasons, "LIGGGHTS driver: a constant dashpot (lammps_velocity) on Hertz has no "
@@ -228,6 +241,10 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
             } else if constexpr (std::is_same_v<T, dem::Mindlin8GTangential>) {
               mu = tangential.p.friction;
               ratio = tangential.p.damping_ratio;
+              if (hertz_stiffness) {
+                kt = 8.0 * tangential.p.shear_modulus;  // k_t = kt √(R* δ)
+                return;
+              }
               const double ya = s.youngs_modulus[a - 1], yb = s.youngs_modulus[b - 1];
               if (ya > 0.0 && yb > 0.0 &&
                   !close(liggghts_effective_shear_modulus(ya, s.poisson_ratio[a - 1], yb, s.poisson_ratio[b - 1]),
@@ -241,7 +258,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
           law.tangential);
       // The tangential dashpot: hooke/stiffness takes it per pair (γ_t = ratio γ_n); model hertz derives it from e
       // as γ_t/γ_n = √(8G*/(2E*)), so the case's ratio must be that (or the dashpot off).
-      if (history) {
+      if (history && !hertz_stiffness) {
         if (hertz && e < 1.0) {
           const auto* normal = std::get_if<dem::HertzNormal>(&law.normal);
           const auto* mindlin = std::get_if<dem::Mindlin8GTangential>(&law.tangential);

@@ -172,6 +172,11 @@ void write_box_and_properties(std::string& deck, const cases::Scene& scene, cons
     line(deck, "fix", fmt::format("tr_youngs all property/global youngsModulus peratomtype {}", values(c.youngs_modulus)));
     line(deck, "fix", fmt::format("tr_poisson all property/global poissonsRatio peratomtype {}", values(c.poisson_ratio)));
     table("tr_restitution", "coefficientRestitution", c.restitution);
+  } else if (c.normal == "hertz/stiffness") {  // each scaled by √(R* δ) (and γ by m*) in the law
+    table("tr_kn", "kn", c.kn);
+    table("tr_kt", "kt", c.kt);
+    table("tr_gamman", "gamman", c.gamman);
+    table("tr_gammat", "gammat", c.gammat);
   } else {
     table("tr_kn", "kn", c.kn);
     table("tr_kt", "kt", c.kt);

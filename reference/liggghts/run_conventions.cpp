@@ -28,6 +28,11 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, co
         "'tsuji' dashpot; Y*, G* mixed by LIGGGHTS from per-type E and ν (checked against the core's pair "
         "values to 1e-12); k_t = 8 G* √(R* δ), γ_t from e with 8 G* in place of 2 Y* unless tangential_damping "
         "off";
+  } else if (contacts.normal == "hertz/stiffness") {
+    c["hertz/stiffness"] =
+        "F_n = kn √(R* δ) δ − gamman √(R* δ) m* v_n with kn = 4/3 E* and gamman = η₀ per type pair (the core's Hertz "
+        "spring and 'lammps_viscoelastic' dashpot, from its pair table: [[pairs]] overrides included); "
+        "k_t = kt √(R* δ) with kt = 8 G*; γ_t = gammat √(R* δ) m*, gammat = tangential_damping_ratio · η₀";
   } else {
     c["hooke/stiffness"] =
         "k_n, k_t per type pair; absolute_damping on: γ_n = the core's η per type pair (β(ε) √(m* k_n) for "

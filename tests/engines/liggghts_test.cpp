@@ -453,4 +453,75 @@ trace_particles = [0, 1, 2]
   EXPECT_GT(liggghts.trace.column("p2.x")->back(), 0.0203);
 }
 
+TEST(LiggghtsHertzStiffness, HertzWithTheViscoelasticDashpotIsHertzStiffnessAtRoundOff) {
+  if (!liggghts_installed()) GTEST_SKIP() << "liggghts not installed";
+  // Two materials, the steel pairs with a tangential dashpot: k_n = 4/3 E*, k_t = 8 G*, γ_n = η₀ and
+  // γ_t per type pair, each scaled by √(R* δ) (and m*) in LIGGGHTS' law.
+  const cases::Scene scene = cases::load_case_text(R"([case]
+name = "hs"
+[model]
+normal = "hertz"
+damping = "lammps_viscoelastic"
+tangential = "mindlin_8g"
+[materials.steel]
+density = 7800.0
+youngs_modulus = 2.0e8
+poisson_ratio = 0.29
+viscoelastic_damping = 500.0
+friction = 0.3
+tangential_damping_ratio = 0.4
+[materials.glass]
+density = 2500.0
+youngs_modulus = 6.0e7
+poisson_ratio = 0.23
+viscoelastic_damping = 200.0
+friction = 0.4
+tangential_damping_ratio = 0.0
+[[walls]]
+type = "plane"
+name = "floor"
+point = [0.0, 0.0, -0.01]
+normal = [0.0, 0.0, 1.0]
+material = "glass"
+[[particles]]
+radius = 0.002
+material = "steel"
+position = [0.0, 0.0, 0.0]
+velocity = [0.5, 0.0, -0.3]
+angular_velocity = [0.0, 20.0, 0.0]
+[[particles]]
+radius = 0.003
+material = "glass"
+position = [0.0051, 0.0, -0.001]
+[fields]
+gravity = [0.0, 0.0, -9.81]
+[integration]
+scheme = "velocity_verlet"
+timestep = 1.0e-6
+duration = 0.06
+rotation = true
+[output]
+trace_every = 100
+trace_particles = [0, 1]
+trace_pairs = [[0, 1]]
+trace_walls = [[0, 0]]
+[compare]
+pair = [0, 1]
+)",
+                                                   "hertz_stiffness.toml");
+  ASSERT_TRUE(reference::LiggghtsEngine{}.supports(scene).supported()) << reference::LiggghtsEngine{}.supports(scene).explain();
+  const cases::RunResult liggghts = reference::run_engine(reference::LiggghtsEngine{}, scene, scratch("hs"));
+  ASSERT_EQ(liggghts.status, cases::RunStatus::ok) << liggghts.reason << "\n" << liggghts.log_tail;
+  EXPECT_NE(liggghts.conventions.at("contact model").find("model hertz/stiffness"), std::string::npos);
+  const double d = matched_deviation(scene, "hs-matched");
+  std::cout << fmt::format("  whole-trace deviation {:.3e}\n", d);
+  EXPECT_LE(d, 1e-8);
+  // The spheres met each other and the floor, and the dashpots took energy: the steel sphere's
+  // largest overlaps with both came and went.
+  const std::vector<double>& pair = *liggghts.trace.column(cases::pair_column(0, 1, "overlap"));
+  const std::vector<double>& floor = *liggghts.trace.column(cases::wall_column(0, 0, "overlap"));
+  EXPECT_GT(*std::max_element(pair.begin(), pair.end()), 0.0);
+  EXPECT_GT(*std::max_element(floor.begin(), floor.end()), 0.0);
+}
+
 }  // namespace liggghts_engine_test

@@ -258,6 +258,44 @@ TEST(LiggghtsContactMapping, TheConstantRollingTorqueIsCdtWithItsCoefficientPerT
   EXPECT_EQ(plain_deck.find("rolling"), std::string::npos);
 }
 
+TEST(LiggghtsContactMapping, HertzWithTheViscoelasticDashpotIsHertzStiffnessWithTheCoresPairValues) {
+  const std::string model = "normal = \"hertz\"\ndamping = \"lammps_viscoelastic\"\ntangential = \"mindlin_8g\"";
+  const std::string steel = with_ratio(kSteel, 0.4) + "viscoelastic_damping = 500.0\n";
+  const std::string glass = with_ratio(kGlass, 0.0) + "viscoelastic_damping = 200.0\n";
+  // A [[pairs]] override of E* maps too: the table is the core's pair values, not LIGGGHTS' mixing.
+  const std::string text = case_text(model, steel, glass) +
+                           "[[pairs]]\nmaterials = [\"steel\", \"glass\"]\neffective_modulus = 1.0e7\n";
+  const cases::Scene scene = scene_of(text);
+  const ContactMapping m = mapping_of(scene);
+  ASSERT_TRUE(m.reasons.empty()) << m.reasons.front();
+  EXPECT_EQ(m.settings->normal, "hertz/stiffness");
+  const reference::PreparedScene prepared(scene);
+  const dem::PairLaw& sg = prepared.pair_table().law(0, 1);
+  const auto& hertz = std::get<dem::HertzNormal>(sg.normal);
+  const auto& mindlin = std::get<dem::Mindlin8GTangential>(sg.tangential);
+  EXPECT_EQ(hertz.effective_modulus, 1.0e7);
+  // Types: steel 1, glass 2, the floor (glass) 3; steel–glass is entry 1.
+  EXPECT_EQ(m.settings->kn[1], 4.0 / 3.0 * 1.0e7);
+  EXPECT_EQ(m.settings->kt[1], 8.0 * mindlin.p.shear_modulus);
+  EXPECT_EQ(m.settings->gamman[1], std::get<dem::LammpsViscoelasticDamping>(sg.damping).rate_per_length);
+  EXPECT_EQ(m.settings->gammat[0], 0.4 * 500.0);  // steel–steel: the ratio times η₀
+  const AtomTypes types = classify(scene);
+  const std::string deck = write_deck(scene, types, *m.settings, trace_plan(scene, types), DeckSettings{1e-6, 100});
+  EXPECT_NE(deck.find("gran model hertz/stiffness tangential history"), std::string::npos) << deck;
+  for (const char* property : {"property/global kn ", "property/global kt ", "property/global gamman ",
+                               "property/global gammat "}) {
+    EXPECT_NE(deck.find(property), std::string::npos) << property << "\n" << deck;
+  }
+  EXPECT_EQ(deck.find("youngsModulus"), std::string::npos);
+  EXPECT_EQ(deck.find("absolute_damping"), std::string::npos);
+  // On a linear spring the viscoelastic dashpot has no counterpart.
+  const ContactMapping linear = mapping_of(scene_of(case_text(
+      "normal = \"linear\"\ndamping = \"lammps_viscoelastic\"", "normal_stiffness = 1e4\nviscoelastic_damping = 5.0\n",
+      "normal_stiffness = 1e4\nviscoelastic_damping = 5.0\n")));
+  ASSERT_FALSE(linear.reasons.empty());
+  EXPECT_NE(linear.reasons[0].find("lammps_viscoelastic"), std::string::npos) << linear.reasons[0];
+}
+
 TEST(LiggghtsContactMapping, ARigidWallIsATypeOfEnormousModulus) {
   const cases::Scene scene = scene_of(case_text(kHertzModel, with_ratio(kSteel, 0.0), with_ratio(kGlass, 0.0), false,
                                                 "material = \"glass\"\nrigid = true"));

@@ -22,7 +22,8 @@ struct LammpsViscoelasticDamping {
       "default: always name the damping model explicitly)";
   static constexpr std::string_view kYade = "none: no √δ dashpot in YADE's Hertz–Mindlin";
   static constexpr std::string_view kLiggghts =
-      "not mapped yet: `hertz/stiffness` has γ_n = √(R* δ) m* gamman, the same form";
+      "on Hertz, `model hertz/stiffness`: γ_n = gamman √(R* δ) m* with gamman = η₀ per type pair (k_n = 4/3 E*, "
+      "k_t = 8 G* per type pair)";
 
   double rate_per_length;  ///< η₀ [1/(m·s)]
 
