@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The LIGGGHTS driver's pure parts (no LIGGGHTS needed): atom types with the walls' types after the
-// particles', the contact model as property tables (values and every refusal), the deck, the
-// thermo table read back, the banner.
+// particles', the contact model as property tables (values and every refusal), the deck with its
+// primitive and mesh walls, the thermo table read back, the banner.
 #include <cmath>
 #include <filesystem>
 #include <iterator>
