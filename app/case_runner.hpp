@@ -33,7 +33,8 @@ struct RunContext {
   bool refine_time_step = true;
   /// Ask every reference code that is not among a case's engines whether it can express the
   /// prepared scene (its driver's mappings alone; nothing runs), so that the report says what
-  /// each code makes of every case (suite, gate and compare).
+  /// each code makes of every case (suite, gate and compare). A case whose preparation failed has
+  /// no prepared scene to ask about: its engines are errors and no code is asked.
   bool survey_unlisted = false;
   /// Called after each engine of a case finished (progress lines); may be called from several
   /// threads at once when cases run concurrently.

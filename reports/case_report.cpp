@@ -97,8 +97,8 @@ std::string unlisted_section(const comparison::CaseOutcome& o, int level) {
   std::string md = heading(level, "Reference codes not among the engines");
   md += "Each driver was asked whether its code can express the prepared scene; none of them ran.";
   if (std::any_of(o.unlisted.begin(), o.unlisted.end(), [](const auto& u) { return u.reasons.empty(); })) {
-    md += " A code that can is not run here because the case's `[compare] engines` does not list it (a "
-          "many-body case is compared over seeds in cross-code ensembles instead).";
+    md += " A code that can is not run here because the run's engines (the case's `[compare] engines`, or "
+          "`--engines`) leave it out (a many-body case is compared over seeds in cross-code ensembles instead).";
   }
   md += "\n\n";
   MarkdownTable t({"code", "verdict", "reason"});

@@ -129,12 +129,12 @@ nlohmann::ordered_json scene_json(const cases::Scene& s) {
   if (s.model.coulomb_test != dem::CoulombTest::total) {  // only when set: older scenes keep their fingerprints
     j["model"]["coulomb_test"] = std::string(dem::to_string(s.model.coulomb_test));
   }
-  if (s.model.constant_torque_form != dem::ConstantTorqueForm::tangent) {
-    j["model"]["constant_torque_form"] = std::string(dem::to_string(s.model.constant_torque_form));
-  }
   // Each policy that changes a result, only when it differs from its default (so that scenes
   // without it keep their fingerprints): a cached LAMMPS result of incremental Mindlin must never
   // answer for the total form.
+  if (s.model.constant_torque_form != dem::ConstantTorqueForm::tangent) {
+    j["model"]["constant_torque_form"] = std::string(dem::to_string(s.model.constant_torque_form));
+  }
   if (s.model.mindlin_form != dem::MindlinForm::total) {
     j["model"]["mindlin_form"] = std::string(dem::to_string(s.model.mindlin_form));
   }

@@ -88,7 +88,7 @@ enum class CoulombTest {
 };
 
 /// How the constant directional rolling torque (`rolling = "constant_torque"`) takes its size
-/// and direction (docs/physics-tangential.md, "Rolling resistance").
+/// and direction (docs/physics-tangential.md, "Rolling sub-models").
 enum class ConstantTorqueForm {
   /// μ_r R* F ω̂_t: F the friction-limit basis, ω̂_t the unit vector of the tangent-plane part of
   /// ω_p − ω_q (default; Ai et al., Powder Technol. 206 (2011), model type A).

@@ -213,7 +213,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
               }
               gn = damping.factor * std::sqrt(m_star * kn);
             } else if constexpr (std::is_same_v<D, dem::LammpsViscoelasticDamping>) {
-              gn = damping.rate_per_length;  // only reached on Hertz (hertz/stiffness); linear: refused below
+              gn = damping.rate_per_length;  // η₀ of hertz/stiffness; on a linear spring refused here
               if (!hertz) {
                 add_reason(reasons, "LIGGGHTS driver: damping = 'lammps_viscoelastic' on a linear spring has no "
                                     "LIGGGHTS counterpart (hertz/stiffness carries it on Hertz)");

@@ -16,7 +16,7 @@ namespace reference::liggghts {
 /// What the deck declares for contacts: the model words, their options and one value per atom
 /// type or per atom-type pair (row-major T × T, symmetric) for every global property it reads.
 struct ContactSettings {
-  std::string normal;                   ///< "hertz" or "hooke/stiffness"
+  std::string normal;                   ///< "hertz", "hertz/stiffness" or "hooke/stiffness"
   std::string tangential;               ///< "history" or "no_history"
   std::string rolling;                  ///< "cdt", or empty without rolling resistance
   std::vector<std::string> options;     ///< model settings, e.g. "tangential_damping off"
@@ -26,8 +26,10 @@ struct ContactSettings {
   std::vector<double> poisson_ratio;    ///< per type (hertz)
   std::vector<double> restitution;      ///< per type pair (hertz)
   std::vector<double> friction;         ///< per type pair
-  std::vector<double> kn, kt;           ///< per type pair (hooke/stiffness) [N/m]
-  std::vector<double> gamman, gammat;   ///< per type pair (hooke/stiffness, absolute) [kg/s]
+  /// per type pair: hooke/stiffness k [N/m]; hertz/stiffness 4/3 E* and 8 G* [Pa], scaled by √(R* δ) in the law
+  std::vector<double> kn, kt;
+  /// per type pair: hooke/stiffness γ [kg/s] (absolute); hertz/stiffness η₀ [1/(m·s)], scaled by √(R* δ) m*
+  std::vector<double> gamman, gammat;
   std::vector<double> rolling_friction; ///< μ_r per type pair (rolling_friction cdt)
 };
 

@@ -2,6 +2,7 @@
 #include "reference/liggghts/deck_parts.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -38,6 +39,24 @@ DeckParts deck_parts(const PreparedScene& prepared) {
       reasons.push_back(who + " moves (fix move/mesh is not mapped yet)");
     }
     if (first->removed_at) reasons.push_back(who + " is removed during the run: a LIGGGHTS fix stays");
+    // LIGGGHTS refuses a mesh whose coordinates, all axes together, span less than 1e-4 (a round-off
+    // guard of multi_node_mesh_parallel_I.h 565).
+    double low = std::numeric_limits<double>::infinity();
+    double high = -low;
+    for (const cases::WallSpec& w : scene.walls) {
+      if (w.mesh != m) continue;
+      for (const cases::Vector3& c : w.corners) {
+        for (const double v : c) {
+          low = std::min(low, v);
+          high = std::max(high, v);
+        }
+      }
+    }
+    if (high - low < 1e-4) {
+      reasons.push_back(fmt::format("{}: its coordinates span {:.3g} m, below the 1e-4 LIGGGHTS 3.8 accepts for a "
+                                    "mesh in SI units",
+                                    who, high - low));
+    }
   }
   if (scene.domain.any_periodic()) {
     reasons.emplace_back("LIGGGHTS driver: periodic boundaries are not mapped yet (the trace formulas read "

@@ -68,7 +68,8 @@ std::string model_settings(const ContactSettings& c) {
 
 /// A box holding every trajectory: the bodies' bounding box widened along each axis k by
 /// 2 v_max T + |g_k| T² + 2 r_max, and ended 2 r_max beyond a resting plane wall across that axis
-/// (atoms leaving it stop the run: `thermo_modify lost error`).
+/// (atoms leaving it stop the run: `thermo_modify lost error`); then widened to hold every corner
+/// of every mesh in the run, 2 r_max beyond.
 std::pair<cases::Vector3, cases::Vector3> simulation_box(const cases::Scene& scene, double duration) {
   cases::Vector3 lo{}, hi{};
   double v_max = 0.0, r_max = 0.0;
@@ -91,15 +92,6 @@ std::pair<cases::Vector3, cases::Vector3> simulation_box(const cases::Scene& sce
     lo[k] -= margin;
     hi[k] += margin;
   }
-  for (const cases::WallSpec& wall : scene.walls) {  // a mesh lies inside the box (fix mesh/surface)
-    if (!wall.mesh || !wall_in_run(wall)) continue;
-    for (const cases::Vector3& corner : wall.corners) {
-      for (std::size_t k = 0; k < 3; ++k) {
-        lo[k] = std::min(lo[k], corner[k] - skin);
-        hi[k] = std::max(hi[k], corner[k] + skin);
-      }
-    }
-  }
   for (const cases::WallSpec& wall : scene.walls) {
     const std::optional<WallPlane> plane = wall_plane(wall);
     if (!plane || !wall_in_run(wall)) continue;
@@ -108,6 +100,17 @@ std::pair<cases::Vector3, cases::Vector3> simulation_box(const cases::Scene& sce
       lo[k] = std::max(lo[k], std::min(plane->position, hi[k]) - skin);
     } else {
       hi[k] = std::min(hi[k], std::max(plane->position, lo[k]) + skin);
+    }
+  }
+  // Last, so that no plane's clip cuts a mesh: LIGGGHTS drops the facets whose centres lie outside
+  // the box and stops ("mesh elements have been lost").
+  for (const cases::WallSpec& wall : scene.walls) {
+    if (!wall.mesh || !wall_in_run(wall)) continue;
+    for (const cases::Vector3& corner : wall.corners) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], corner[k] - skin);
+        hi[k] = std::max(hi[k], corner[k] + skin);
+      }
     }
   }
   return {lo, hi};

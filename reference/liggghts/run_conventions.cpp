@@ -68,7 +68,14 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, co
                     [](const cases::WallSpec& w) { return wall_cylinder(w).has_value(); })) {
       c["walls"] += "; a primitive cylinder is unbounded along its axis, the core's ends where its height does, so "
                     "the two agree while no sphere passes an end (one that starts beyond an end touching the "
-                    "extended surface makes the case n/a)";
+                    "extended surface makes the case n/a); a sphere centred on its axis (within 1e-13 m) gets a "
+                    "zero-force contact there, none in the core";
+    }
+    if (!scene.meshes.empty()) {
+      c["walls"] += "; meshes: fix mesh/surface per mesh (its facets written as ASCII STL in the scene's "
+                    "coordinates, one atom type per wall material) and one fix wall/gran … mesh holding them all; a "
+                    "sphere meets a facet's nearest point; a new face contact is dropped while a coplanar neighbour "
+                    "already holds one, and takes over that neighbour's history";
     }
   }
   c["contact onset"] = "pairs touch while |x_p − x_q| < r_p + r_q (strict)";

@@ -119,7 +119,8 @@ TEST(CaseLoaderPhysics, TheCodeReplicationPoliciesAreReadAndBadValuesNameTheKey)
   std::string text(kCase);
   text.replace(text.find(from), from.size(),
                "unloaded_slider = \"zero\"\nadhesive_dashpot = \"pulloff_cap\"\nmindlin_form = \"incremental\"\n"
-               "pair_lever_arm = \"yade_incident\"\ntangential_history = \"yade_rotate\"\ncoulomb_test = \"spring\"");
+               "pair_lever_arm = \"yade_incident\"\ntangential_history = \"yade_rotate\"\ncoulomb_test = \"spring\"\n"
+               "constant_torque_form = \"projected\"");
   text.replace(text.find("wall_lever_arm = \"radius\""), std::string("wall_lever_arm = \"radius\"").size(),
                "wall_lever_arm = \"yade_incident\"");
   const auto s = cases::load_case_text(text, "p.toml");
@@ -130,12 +131,15 @@ TEST(CaseLoaderPhysics, TheCodeReplicationPoliciesAreReadAndBadValuesNameTheKey)
   EXPECT_EQ(s.model.wall_lever_arm, dem::WallLeverArm::yade_incident);
   EXPECT_EQ(s.model.tangential_history, dem::TangentialHistory::yade_rotate);
   EXPECT_EQ(s.model.coulomb_test, dem::CoulombTest::spring);
+  EXPECT_EQ(s.model.constant_torque_form, dem::ConstantTorqueForm::projected);
   EXPECT_EQ(cases::load_case_text(kCase, "p.toml").model.coulomb_test, dem::CoulombTest::total);  // the default
+  EXPECT_EQ(cases::load_case_text(kCase, "p.toml").model.constant_torque_form, dem::ConstantTorqueForm::tangent);
   for (const auto& [key, bad, admissible] :
        {std::tuple<std::string, std::string, std::string>{"unloaded_slider", "drop", "zero"},
         {"adhesive_dashpot", "cap", "pulloff_cap"},
         {"mindlin_form", "force", "incremental"},
-        {"coulomb_test", "elastic", "spring"}}) {
+        {"coulomb_test", "elastic", "spring"},
+        {"constant_torque_form", "unit", "projected"}}) {
     std::string broken(kCase);
     broken.replace(broken.find(from), from.size(), key + " = \"" + bad + "\"");
     try {

@@ -573,6 +573,32 @@ TEST(LiggghtsWalls, MeshesAreWrittenAsStlFilesAndHeldByOneWallFix) {
   std::vector<std::string> w{std::istream_iterator<std::string>(words), {}};
   ASSERT_GE(w.size(), 9U) << box;
   EXPECT_GE(std::stod(w[8]), 0.03) << box;
+  // A mesh behind a plane wall (40 mm below the floor) still lies inside the box: LIGGGHTS would drop
+  // facets outside it and stop.
+  std::string behind = text;
+  behind.replace(behind.find("translate = [0.0, 0.0, -0.005]"), 30, "translate = [0.0, 0.0, -0.05]");
+  support::write_file(dir / "behind.toml", behind);
+  const cases::Scene low = cases::load_case(dir / "behind.toml");
+  const reference::PreparedScene low_prepared(low);
+  const DeckParts low_parts = deck_parts(low_prepared);
+  ASSERT_TRUE(low_parts.reasons.empty()) << low_parts.reasons.front();
+  const std::string low_deck =
+      write_deck(low, low_parts.types, *low_parts.contacts, trace_plan(low, low_parts.types), settings);
+  const auto low_region = low_deck.find("region");
+  std::istringstream low_words(low_deck.substr(low_region, low_deck.find('\n', low_region) - low_region));
+  std::vector<std::string> lw{std::istream_iterator<std::string>(low_words), {}};
+  ASSERT_GE(lw.size(), 9U);
+  EXPECT_LE(std::stod(lw[7]), -0.05) << low_deck.substr(low_region, 200);
+  // A mesh of coordinates spanning less than 1e-4 m is refused, as LIGGGHTS would.
+  std::string tiny = text;
+  tiny.replace(tiny.find("scale = 1.0e-3\ntranslate = [0.0, 0.0, -0.005]"), 45,
+               "scale = 1.0e-6\ntranslate = [0.05, 0.05, 0.05]");
+  support::write_file(dir / "tiny.toml", tiny);
+  const cases::Scene small = cases::load_case(dir / "tiny.toml");
+  const reference::PreparedScene small_prepared(small);
+  EXPECT_NE(reference::LiggghtsEngine{}.supports(small_prepared).explain().find("mesh 'a': its coordinates span"),
+            std::string::npos)
+      << reference::LiggghtsEngine{}.supports(small_prepared).explain();
   // A moving mesh is not mapped; nor does demwb bench write mesh files.
   std::string moving = text;
   moving.insert(moving.rfind("material = \"steel\""), "velocity = [0.0, 0.0, -0.1]\n");

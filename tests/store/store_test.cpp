@@ -146,6 +146,7 @@ TEST(SceneFingerprint, EveryContactPolicyThatChangesAResultChangesIt) {
       [](dem::ModelChoice& m) { m.unloaded_slider = dem::UnloadedSlider::zero; },
       [](dem::ModelChoice& m) { m.adhesive_dashpot = dem::AdhesiveDashpot::pulloff_cap; },
       [](dem::ModelChoice& m) { m.coulomb_test = dem::CoulombTest::spring; },
+      [](dem::ModelChoice& m) { m.constant_torque_form = dem::ConstantTorqueForm::projected; },
       [](dem::ModelChoice& m) { m.contact_at_zero_overlap = true; },
       [](dem::ModelChoice& m) { m.tangential_history = dem::TangentialHistory::increment_project; },
       [](dem::ModelChoice& m) { m.pair_lever_arm = dem::PairLeverArm::radius; },

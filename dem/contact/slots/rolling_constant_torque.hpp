@@ -28,8 +28,8 @@ struct ConstantTorqueRolling {
   static constexpr std::string_view kYade =
       "none in the installed build (CohFrictMat rolling is elastic–plastic, not constant)";
   static constexpr std::string_view kLiggghts =
-      "`rolling_friction cdt`: μ_r R* k_n δ (the elastic force) along ω̂_p − ω̂_q, its tangent part "
-      "(constant_torque_form = 'projected')";
+      "`rolling_friction cdt`: μ_r R* k_n δ (the elastic force) along the unit vector of ω_p − ω_q, its "
+      "tangent part (constant_torque_form = 'projected')";
 
   double rolling_friction;  ///< μ_r [-]
 
@@ -38,7 +38,8 @@ struct ConstantTorqueRolling {
     return {required_property(pair, &PairProperties::rolling_friction, "rolling_friction",
                               "rolling = 'constant_torque'")};
   }
-  /// Torques on p and q; dissipation μ_r R* F |ω_r| · elapsed.
+  /// Torques on p and q; dissipation −τ_p·(ω_p − ω_q) · elapsed (μ_r R* F |ω_r| in the tangent form,
+  /// μ_r R* F_el |ω_r|²/|ω_p − ω_q| in the projected one).
   [[nodiscard]] RollingResponse evaluate(const ContactInput& in, const RollingInput& normal,
                                          ContactHistory&) const noexcept {
     const Vec3 torque =
