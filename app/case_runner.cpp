@@ -201,11 +201,10 @@ std::vector<comparison::UnlistedCode> unlisted_codes(const reference::PreparedSc
     if (std::find(engines.begin(), engines.end(), code) != engines.end()) continue;
     // A driver that cannot answer is reported as such: the case's runs are already made.
     try {
-      const auto engine = reference::make_engine(std::string(code), programs);
-      if (!engine) throw std::logic_error("no driver for reference code '" + std::string(code) + "'");
-      out.push_back({std::string(code), engine->supports(prepared).reasons});
+      const auto engine = reference::make_engine(code, programs);
+      out.push_back({std::string(code), engine ? engine->supports(prepared).explain() : "the code has no driver"});
     } catch (const std::exception& e) {
-      out.push_back({std::string(code), {fmt::format("its driver could not judge the scene: {}", e.what())}});
+      out.push_back({std::string(code), fmt::format("its driver could not judge the scene: {}", e.what())});
     }
   }
   return out;

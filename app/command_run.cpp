@@ -66,10 +66,8 @@ void print_engine_notes(const comparison::CaseOutcome& o) {
     if (!r.log_tail.empty()) std::cout << r.log_tail;
   }
   for (const auto& u : o.unlisted) {
-    std::string reason;
-    for (const auto& r : u.reasons) reason += (reason.empty() ? "" : "; ") + r;
     std::cout << fmt::format("{} (not among the engines): {}{}\n", u.engine, reports::unlisted_verdict(u),
-                             reason.empty() ? " (add it with --engines)" : " — " + reason);
+                             u.reason.empty() ? " (add it with --engines)" : " — " + u.reason);
   }
   for (const auto& r : o.runs) {
     for (const auto& w : r.warnings) std::fprintf(stderr, "warning: %s: %s\n", r.engine.c_str(), w.c_str());

@@ -17,7 +17,7 @@ namespace comparison {
 /// that every case says what every reference code makes of it.
 struct UnlistedCode {
   std::string engine;
-  std::vector<std::string> reasons;  ///< why the code cannot express the case; empty: it can
+  std::string reason;  ///< why the code cannot express the case (its driver's reasons, "; "-joined); empty: it can
 };
 
 /// Everything one comparison of one case produced: the scene, each engine's run, the metrics

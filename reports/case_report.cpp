@@ -96,16 +96,14 @@ std::string unlisted_section(const comparison::CaseOutcome& o, int level) {
   if (o.unlisted.empty()) return {};
   std::string md = heading(level, "Reference codes not among the engines");
   md += "Each driver was asked whether its code can express the prepared scene; none of them ran.";
-  if (std::any_of(o.unlisted.begin(), o.unlisted.end(), [](const auto& u) { return u.reasons.empty(); })) {
+  if (std::any_of(o.unlisted.begin(), o.unlisted.end(), [](const auto& u) { return u.reason.empty(); })) {
     md += " A code that can is not run here because the run's engines (the case's `[compare] engines`, or "
           "`--engines`) leave it out (a many-body case is compared over seeds in cross-code ensembles instead).";
   }
   md += "\n\n";
   MarkdownTable t({"code", "verdict", "reason"});
   for (const auto& u : o.unlisted) {
-    std::string reason;
-    for (const auto& r : u.reasons) reason += (reason.empty() ? "" : "; ") + r;
-    t.add_row({u.engine, unlisted_verdict(u), reason.empty() ? "—" : reason});
+    t.add_row({u.engine, unlisted_verdict(u), u.reason.empty() ? "—" : u.reason});
   }
   return md + t.render() + "\n";
 }
@@ -329,7 +327,7 @@ std::string discrepancy_table(const comparison::CaseOutcome& o) {
 }
 
 std::string unlisted_verdict(const comparison::UnlistedCode& code) {
-  return code.reasons.empty() ? "expresses it" : "n/a";
+  return code.reason.empty() ? "expresses it" : "n/a";
 }
 
 std::string case_section(const comparison::CaseOutcome& o, const std::filesystem::path& plot_dir,

@@ -106,10 +106,8 @@ nlohmann::ordered_json results_json(const comparison::CaseOutcome& outcome, bool
     Json unlisted = Json::object();
     for (const auto& u : outcome.unlisted) {
       Json entry = Json::object();
-      entry["status"] = u.reasons.empty() ? "expressible" : "n/a";
-      std::string reason;
-      for (const auto& r : u.reasons) reason += (reason.empty() ? "" : "; ") + r;
-      if (!reason.empty()) entry["reason"] = reason;
+      entry["status"] = u.reason.empty() ? "expressible" : "n/a";
+      if (!u.reason.empty()) entry["reason"] = u.reason;
       unlisted[u.engine] = entry;
     }
     doc["unlisted_codes"] = unlisted;

@@ -45,6 +45,11 @@ std::optional<std::pair<double, double>> elastic_constants(const cases::Scene& s
 
 }  // namespace
 
+std::string model_words(const ContactSettings& c) {
+  return fmt::format("model {} tangential {}{}", c.normal, c.tangential,
+                     c.rolling.empty() ? "" : " rolling_friction " + c.rolling);
+}
+
 double liggghts_effective_modulus(double ya, double nua, double yb, double nub) noexcept {
   return 1.0 / ((1.0 - nua * nua) / ya + (1.0 - nub * nub) / yb);
 }
@@ -167,7 +172,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
             using N = std::decay_t<decltype(normal)>;
             if constexpr (std::is_same_v<N, dem::HertzNormal>) {
               if (hertz_stiffness) {
-                kn = 4.0 / 3.0 * normal.effective_modulus;  // F = kn √(R* δ) δ
+                kn = dem::laws::hertz_secant_stiffness_at_radius(normal.effective_modulus, 1.0);  // F = kn √(R* δ) δ
                 return;
               }
               const double ya = s.youngs_modulus[a - 1], yb = s.youngs_modulus[b - 1];
@@ -242,7 +247,7 @@ ContactMapping map_contacts(const cases::Scene& scene, const dem::PairTable& tab
               mu = tangential.p.friction;
               ratio = tangential.p.damping_ratio;
               if (hertz_stiffness) {
-                kt = 8.0 * tangential.p.shear_modulus;  // k_t = kt √(R* δ)
+                kt = tangential.stiffness_per_radius();  // k_t = kt √(R* δ)
                 return;
               }
               const double ya = s.youngs_modulus[a - 1], yb = s.youngs_modulus[b - 1];

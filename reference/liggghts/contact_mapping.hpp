@@ -33,6 +33,9 @@ struct ContactSettings {
   std::vector<double> rolling_friction; ///< μ_r per type pair (rolling_friction cdt)
 };
 
+/// The model words of `pair_style gran` and `fix wall/gran`: "model hertz tangential history …".
+std::string model_words(const ContactSettings& c);
+
 /// The settings, or every reason the scene's contact model has no LIGGGHTS counterpart.
 struct ContactMapping {
   std::optional<ContactSettings> settings;  ///< what the deck declares, when every reason is absent

@@ -31,11 +31,10 @@ DeckParts deck_parts(const PreparedScene& prepared) {
     }
   }
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {  // the facets share the mesh's motion and removal
-    const auto first = std::find_if(scene.walls.begin(), scene.walls.end(),
-                                    [&](const cases::WallSpec& w) { return w.mesh == m; });
-    if (first == scene.walls.end() || !wall_in_run(*first)) continue;
+    const cases::WallSpec* first = first_facet(scene, m);
+    if (first == nullptr || !wall_in_run(*first)) continue;
     const std::string who = fmt::format("LIGGGHTS driver: mesh '{}'", scene.meshes[m].name);
-    if (first->velocity[0] != 0.0 || first->velocity[1] != 0.0 || first->velocity[2] != 0.0) {
+    if (wall_moves(*first)) {
       reasons.push_back(who + " moves (fix move/mesh is not mapped yet)");
     }
     if (first->removed_at) reasons.push_back(who + " is removed during the run: a LIGGGHTS fix stays");

@@ -52,11 +52,6 @@ void write_groups(std::string& deck, const AtomTypes& types) {
 /// The fix holding mesh `m`'s facets (one fix wall/gran, tr_mesh_walls, makes them all granular walls).
 std::string mesh_fix_id(std::size_t m) { return fmt::format("tr_mesh_{}", m); }
 
-/// The model words of pair_style gran and fix wall/gran.
-std::string model_words(const ContactSettings& c) {
-  return fmt::format("model {} tangential {}{}", c.normal, c.tangential,
-                     c.rolling.empty() ? "" : " rolling_friction " + c.rolling);
-}
 
 /// The model settings ("limitForce on", …): after the model words on pair_style gran, at the end
 /// of fix wall/gran (before `primitive` they end the model words too early).
@@ -175,16 +170,12 @@ void write_box_and_properties(std::string& deck, const cases::Scene& scene, cons
     line(deck, "fix", fmt::format("tr_youngs all property/global youngsModulus peratomtype {}", values(c.youngs_modulus)));
     line(deck, "fix", fmt::format("tr_poisson all property/global poissonsRatio peratomtype {}", values(c.poisson_ratio)));
     table("tr_restitution", "coefficientRestitution", c.restitution);
-  } else if (c.normal == "hertz/stiffness") {  // each scaled by √(R* δ) (and γ by m*) in the law
+  } else {  // hertz/stiffness scales each by √(R* δ) (and γ by m*); hooke/stiffness takes γ absolute
+    const std::string gamma = c.normal == "hertz/stiffness" ? "" : "_abs";
     table("tr_kn", "kn", c.kn);
     table("tr_kt", "kt", c.kt);
-    table("tr_gamman", "gamman", c.gamman);
-    table("tr_gammat", "gammat", c.gammat);
-  } else {
-    table("tr_kn", "kn", c.kn);
-    table("tr_kt", "kt", c.kt);
-    table("tr_gamman", "gamman_abs", c.gamman);
-    table("tr_gammat", "gammat_abs", c.gammat);
+    table("tr_gamman", "gamman" + gamma, c.gamman);
+    table("tr_gammat", "gammat" + gamma, c.gammat);
   }
   table("tr_friction", "coefficientFriction", c.friction);
   if (!c.rolling.empty()) table("tr_rolling", "coefficientRollingFriction", c.rolling_friction);
@@ -258,10 +249,9 @@ void write_fixes(std::string& deck, const cases::Scene& scene, const AtomTypes& 
   std::string meshes;  // LIGGGHTS 3.8 takes one fix wall/gran of type mesh, holding every mesh
   std::size_t mesh_count = 0;
   for (std::size_t m = 0; m < scene.meshes.size() && any_mobile; ++m) {
-    const auto first = std::find_if(scene.walls.begin(), scene.walls.end(),
-                                    [&](const cases::WallSpec& w) { return w.mesh == m; });
-    if (first == scene.walls.end()) continue;
-    const auto w = static_cast<std::size_t>(first - scene.walls.begin());
+    const cases::WallSpec* first = first_facet(scene, m);
+    if (first == nullptr) continue;
+    const auto w = static_cast<std::size_t>(first - scene.walls.data());
     if (!wall_in_run(*first)) {
       deck += fmt::format("# mesh {} ('{}') is removed at t <= 0: only the preparation met it\n", m,
                           deck_comment_text(scene.meshes[m].name));
@@ -361,6 +351,12 @@ std::string write_mesh_stl(const cases::Scene& scene, std::size_t m) {
     stl += "    endloop\n  endfacet\n";
   }
   return stl + fmt::format("endsolid mesh_{}\n", m);
+}
+
+std::vector<std::pair<std::string, std::string>> mesh_files(const cases::Scene& scene) {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) files.emplace_back(mesh_file(m), write_mesh_stl(scene, m));
+  return files;
 }
 
 }  // namespace reference::liggghts

@@ -32,6 +32,9 @@ std::string mesh_file(std::size_t m);
 /// says), corners in the facets' order with 17 digits: what `fix mesh/surface file` reads.
 std::string write_mesh_stl(const cases::Scene& scene, std::size_t m);
 
+/// Every mesh's file of the run directory, as (mesh_file(m), write_mesh_stl(scene, m)).
+std::vector<std::pair<std::string, std::string>> mesh_files(const cases::Scene& scene);
+
 /// The data file of a large scene (atoms_in_data_file): the box, `Atoms` (id type diameter
 /// density x y z) and `Velocities` (id vx vy vz ωx ωy ωz; zero for frozen particles).
 std::string write_atom_data(const cases::Scene& scene, const AtomTypes& types, const DeckSettings& settings);

@@ -55,9 +55,7 @@ std::string LiggghtsEngine::input_fingerprint(const PreparedScene& prepared) con
     if (liggghts::atoms_in_data_file(scene, parts.types)) {
       input += "\n--- data file ---\n" + liggghts::write_atom_data(scene, parts.types, settings);
     }
-    for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-      input += "\n--- " + liggghts::mesh_file(m) + " ---\n" + liggghts::write_mesh_stl(scene, m);
-    }
+    for (const auto& [name, text] : liggghts::mesh_files(scene)) input += "\n--- " + name + " ---\n" + text;
     return support::sha256_hex(input);
   } catch (const std::exception&) {
     return {};  // the run reports why the deck cannot be written
@@ -93,9 +91,7 @@ cases::RunResult LiggghtsEngine::run(const PreparedScene& prepared, const RunOpt
   if (liggghts::atoms_in_data_file(scene, parts.types)) {
     support::write_file(dir / settings.data_file, liggghts::write_atom_data(scene, parts.types, settings));
   }
-  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    support::write_file(dir / liggghts::mesh_file(m), liggghts::write_mesh_stl(scene, m));
-  }
+  for (const auto& [name, text] : liggghts::mesh_files(scene)) support::write_file(dir / name, text);
   const liggghts::LiggghtsRunOutcome outcome = liggghts::run_liggghts(options_.program, dir, time_left);
   if (!outcome.ok) return error_result(outcome.reason, outcome.log_tail);
 

@@ -75,6 +75,17 @@ std::vector<std::string> cylinder_end_reasons(const cases::Scene& scene, std::si
   return reasons;
 }
 
+const cases::WallSpec* first_facet(const cases::Scene& scene, std::size_t mesh) noexcept {
+  for (const cases::WallSpec& w : scene.walls) {
+    if (w.mesh == mesh) return &w;
+  }
+  return nullptr;
+}
+
+bool wall_moves(const cases::WallSpec& wall) noexcept {
+  return wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0;
+}
+
 bool wall_in_run(const cases::WallSpec& wall) noexcept { return !wall.removed_at || *wall.removed_at > 0.0; }
 
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index) {
@@ -93,7 +104,7 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
   } else if (!wall_plane(wall)) {
     reasons.push_back(who + " is tilted: a primitive plane is xplane, yplane or zplane");
   }
-  if (wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0) {
+  if (wall_moves(wall)) {
     reasons.push_back(who + " moves: a primitive wall only has `shear`, a velocity without motion");
   }
   if (wall.removed_at) reasons.push_back(who + " is removed during the run: a LIGGGHTS fix stays");  // > 0 here

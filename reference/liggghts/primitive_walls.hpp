@@ -47,6 +47,13 @@ std::string primitive_arguments(const cases::WallSpec& wall);
 /// yet within reach of its unbounded surface: LIGGGHTS would push it, the core not.
 std::vector<std::string> cylinder_end_reasons(const cases::Scene& scene, std::size_t index);
 
+/// The first facet wall of mesh `mesh` (the facets share its motion, removal and material), or
+/// null when it has none.
+[[nodiscard]] const cases::WallSpec* first_facet(const cases::Scene& scene, std::size_t mesh) noexcept;
+
+/// True when the wall (or the mesh the facet belongs to) translates.
+[[nodiscard]] bool wall_moves(const cases::WallSpec& wall) noexcept;
+
 /// False for a wall removed at t ≤ 0: it stood only through the preparation, and the deck leaves
 /// it out.
 [[nodiscard]] bool wall_in_run(const cases::WallSpec& wall) noexcept;

@@ -18,8 +18,7 @@ std::map<std::string, std::string> run_conventions(const cases::Scene& scene, co
                         ? "velocity Verlet (fix nve/sphere, I = 0.4 m r²); forces see v(t + Δt/2), ω(t + Δt/2)"
                         : "velocity Verlet (fix nve); ω held (rotation = false)";
   c["time step"] = fmt::format("{:.17g} s, {} steps (the core's)", settings.timestep, settings.steps);
-  std::string words = fmt::format("pair_style gran model {} tangential {}{}", contacts.normal, contacts.tangential,
-                                  contacts.rolling.empty() ? "" : " rolling_friction " + contacts.rolling);
+  std::string words = "pair_style gran " + model_words(contacts);
   for (const std::string& o : contacts.options) words += " " + o;
   c["contact model"] = words + "; the same words on every fix wall/gran";
   if (contacts.normal == "hertz") {

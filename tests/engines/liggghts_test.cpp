@@ -139,15 +139,14 @@ TEST(LiggghtsManyBody, APolydispersePourFromADataFileFollowsTheCoreUntilItsConta
 
 /// Two glass spheres side by side on a floor, spinning about tilted axes (rolling, and twisting
 /// about both contact normals) under Hertz–Mindlin with the constant rolling torque.
-cases::Scene spinning_pair(const std::string& form) {
-  return cases::load_case_text(fmt::format(R"([case]
+cases::Scene spinning_pair() {
+  return cases::load_case_text(R"([case]
 name = "spinning_pair"
 [model]
 normal = "hertz"
 damping = "tsuji"
 tangential = "mindlin_8g"
 rolling = "constant_torque"
-constant_torque_form = "{}"
 [materials.glass]
 density = 2500.0
 youngs_modulus = 6.0e7
@@ -188,13 +187,12 @@ trace_walls = [[0, 0]]
 [compare]
 pair = [0, 1]
 )",
-                                           form),
                                "spinning_pair.toml");
 }
 
 TEST(LiggghtsRolling, CdtOnSpinningSpheresIsTheCoresProjectedConstantTorqueAtRoundOff) {
   if (!liggghts_installed()) GTEST_SKIP() << "liggghts not installed";
-  const cases::Scene scene = spinning_pair("tangent");
+  const cases::Scene scene = spinning_pair();  // the default (tangent) form
   ASSERT_TRUE(reference::LiggghtsEngine{}.supports(scene).supported()) << reference::LiggghtsEngine{}.supports(scene).explain();
   const cases::RunResult liggghts = reference::run_engine(reference::LiggghtsEngine{}, scene, scratch("cdt"));
   ASSERT_EQ(liggghts.status, cases::RunStatus::ok) << liggghts.reason << "\n" << liggghts.log_tail;
