@@ -38,12 +38,19 @@ struct FuzzResult {
   bool roundoff_horizon = false;  ///< compared only up to its round-off horizon (docs/metrics.md)
 };
 
+/// Writes a generated scene's case file and the files it names into `dir`; returns the case's path.
+std::filesystem::path write_scene(const std::filesystem::path& dir, const studies::FuzzScene& generated) {
+  for (const auto& [name, text] : generated.files) support::write_file(dir / name, text);
+  const std::filesystem::path file = dir / (generated.name + ".toml");
+  support::write_file(file, generated.toml);
+  return file;
+}
+
 /// Runs one generated scene and reads its matched row.
 FuzzResult run_scene(const studies::FuzzScene& generated, std::uint64_t seed, const std::string& code,
                      const std::filesystem::path& out, const RunContext& context, const cases::LoadOptions& load) {
   FuzzResult r{generated, seed, "error", std::nullopt, ""};
-  const std::filesystem::path file = out / "cases" / (generated.name + ".toml");
-  support::write_file(file, generated.toml);
+  const std::filesystem::path file = write_scene(out / "cases", generated);
   cases::Scene scene;
   try {
     scene = cases::load_case_text(generated.toml, file.string(), load);
@@ -79,7 +86,8 @@ FuzzResult run_scene(const studies::FuzzScene& generated, std::uint64_t seed, co
 
 nlohmann::json to_json(const FuzzResult& r) {
   nlohmann::json j{{"seed", r.seed},       {"name", r.scene.name},     {"model", r.scene.model},
-                   {"spheres", r.scene.spheres}, {"walls", r.scene.walls}, {"gravity", r.scene.gravity},
+                   {"spheres", r.scene.spheres}, {"walls", r.scene.walls}, {"mesh_facets", r.scene.facets},
+                   {"gravity", r.scene.gravity},
                    {"status", r.status},   {"reason", r.reason}, {"roundoff_horizon", r.roundoff_horizon}};
   j["trace_deviation"] = r.deviation ? nlohmann::json(*r.deviation) : nlohmann::json();
   return j;
@@ -134,6 +142,16 @@ std::string summary(const std::vector<FuzzResult>& results, const std::string& c
   std::string s = fmt::format("# Matched fuzz against {}: {} scenes from seed {}\n\n| status | scenes |\n|---|---|\n", code,
                               results.size(), seed);
   for (const auto& [status, count] : by_status) s += fmt::format("| {} | {} |\n", status, count);
+  std::map<std::string, int> with_mesh;
+  for (const FuzzResult& r : results) {
+    if (r.scene.facets > 0) ++with_mesh[r.status];
+  }
+  if (!with_mesh.empty()) {
+    s += "\nOf them with a mesh wall:";
+    for (const auto& [status, count] : with_mesh) s += fmt::format(" {} {},", status, count);
+    s.back() = '.';
+    s += "\n";
+  }
   if (horizon > 0) {
     s += fmt::format("\n{} of the agreeing scenes are chaotic: they agree up to their round-off horizon, past which "
                      "a one-ulp nudge of the start drifts by more than {:.0e} (docs/metrics.md); listed below.\n",
@@ -147,10 +165,11 @@ std::string summary(const std::vector<FuzzResult>& results, const std::string& c
   for (const FuzzResult& r : results) {
     if ((r.status == "agree" && !r.roundoff_horizon) || r.status == "n/a") continue;
     if (!header) {
-      s += "\n| seed | model (normal/damping/tangential/cohesion/rolling) | spheres | walls | gravity | status | trace deviation | note |\n|---|---|---|---|---|---|---|---|\n";
+      s += "\n| seed | model (normal/damping/tangential/cohesion/rolling) | spheres | walls (mesh facets) | gravity | status | trace deviation | note |\n|---|---|---|---|---|---|---|---|\n";
       header = true;
     }
-    s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r.seed, r.scene.model, r.scene.spheres, r.scene.walls,
+    s += fmt::format("| {} | {} | {} | {}{} | {} | {} | {} | {} |\n", r.seed, r.scene.model, r.scene.spheres, r.scene.walls,
+                     r.scene.facets > 0 ? fmt::format(" ({})", r.scene.facets) : std::string(),
                      r.scene.gravity ? "on" : "off", r.status,
                      r.deviation ? fmt::format("{:.3g}", *r.deviation) : std::string("—"), cell(r.reason));
   }
@@ -191,7 +210,10 @@ int command_fuzz_matched(const std::vector<std::string>& args, const Invocation&
   const std::unique_ptr<reference::Engine> engine = reference::make_engine(code, context.programs);
   const studies::ExpressibleFilter expressible = [&](const studies::FuzzScene& draft) {
     try {
-      return engine->supports(cases::load_case_text(draft.toml, draft.name + ".toml", load)).supported();
+      // A draft's mesh is read from beside its case file: one seed's drafts share a name and a
+      // thread, so they overwrite only their own files.
+      const std::filesystem::path file = write_scene(out / "cases", draft);
+      return engine->supports(cases::load_case_text(draft.toml, file.string(), load)).supported();
     } catch (const std::exception&) {
       return false;
     }
@@ -219,7 +241,7 @@ int command_fuzz_matched(const std::vector<std::string>& args, const Invocation&
     all.push_back(to_json(r));
     if (r.status == "agree" || r.status == "n/a") continue;
     clean = false;
-    support::write_file(out / "failing" / (r.scene.name + ".toml"), r.scene.toml);
+    write_scene(out / "failing", r.scene);
   }
   const std::string report = summary(results, code, seed);
   support::write_file(out / "fuzz.json",

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 
 #include "cases/catalogue.hpp"
 #include "dem/contact/registry.hpp"
+#include "dem/contact/wall.hpp"
 
 namespace studies {
 namespace {
@@ -78,6 +80,84 @@ bool mapped(std::string_view text) {
 
 /// The three numbers of a vector in a case file.
 std::string vec(double x, double y, double z) { return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", x, y, z); }
+
+/// One drawn sphere: radius, centre [m] and material index.
+struct Sphere {
+  double r, x, y, z;
+  int material;
+};
+
+/// Distance from a sphere's centre to the triangle (a, b, c), by the core's own triangle.
+double distance_to_triangle(const Sphere& s, const dem::Vec3& a, const dem::Vec3& b, const dem::Vec3& c) {
+  return dem::wall_frame(dem::triangle_wall(a, b, c), dem::Vec3(s.x, s.y, s.z), 0.0).distance;
+}
+
+/// Distance from a sphere's centre to the segment (a, b).
+double distance_to_segment(const Sphere& s, const dem::Vec3& a, const dem::Vec3& b) {
+  const dem::Vec3 x(s.x, s.y, s.z);
+  const dem::Vec3 e = b - a;
+  const double t = std::clamp((x - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+  return (x - (a + t * e)).norm();
+}
+
+/// For YADE and LIGGGHTS, two scenes in five get a mesh wall under the spheres, drawn from a
+/// stream of its own (so the rest of a seed's scene is the same with or without it): a triangle
+/// 6–12 mm across tilted up to 0.5 rad, the sphere nearest its plane within a few per cent of a
+/// radius of touching, and a second triangle folded up to ±0.6 rad about one of its edges. The
+/// shared edge stays 1 mm clear of every sphere for YADE, which meets each facet on its own
+/// there (docs/engines.md, "Meshes"); LIGGGHTS' spheres may start anywhere near it. A second
+/// facet that would start overlapping a sphere is left out. The mesh takes one of the scene's
+/// `materials`. Appends the wall to the case text and the STL to the scene's files.
+void add_mesh(FuzzScene& scene, std::string& t, std::string_view code, std::uint64_t mixed,
+              const std::vector<Sphere>& spheres, int materials) {
+  if (code != "yade" && code != "liggghts") return;
+  std::mt19937_64 rng(mixed ^ 0xD1B54A32D192ED03ULL);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * unit(rng); };
+  if (unit(rng) >= 0.4) return;
+  const double tilt = uniform(0.0, 0.5), azimuth = uniform(0.0, 2.0 * M_PI);
+  const dem::Vec3 n(std::sin(tilt) * std::cos(azimuth), std::sin(tilt) * std::sin(azimuth), std::cos(tilt));
+  const dem::Vec3 u = n.cross(dem::Vec3::UnitY()).normalized();
+  const dem::Vec3 v = n.cross(u);
+  double height = std::numeric_limits<double>::infinity();
+  double smallest = spheres[0].r;
+  dem::Vec3 centre = dem::Vec3::Zero();
+  for (const Sphere& s : spheres) {
+    height = std::min(height, n.dot(dem::Vec3(s.x, s.y, s.z)) - s.r);
+    smallest = std::min(smallest, s.r);
+    centre += dem::Vec3(s.x, s.y, s.z) / static_cast<double>(spheres.size());
+  }
+  height -= uniform(-0.005, 0.02) * smallest;
+  const dem::Vec3 middle = centre - (n.dot(centre) - height) * n;
+  const double size = uniform(0.006, 0.012), start = uniform(0.0, 2.0 * M_PI);
+  std::array<dem::Vec3, 4> c;
+  for (int k = 0; k < 3; ++k) {
+    const double angle = start + 2.0 * M_PI * k / 3.0 + uniform(-0.3, 0.3);
+    c[static_cast<std::size_t>(k)] = middle + size * (std::cos(angle) * u + std::sin(angle) * v);
+  }
+  const dem::Vec3 edge_middle = 0.5 * (c[0] + c[1]);
+  const double fold = uniform(-0.6, 0.6);
+  c[3] = edge_middle + uniform(0.003, 0.008) * (std::cos(fold) * (edge_middle - middle).normalized() + std::sin(fold) * n);
+  bool second = true;
+  for (const Sphere& s : spheres) {
+    second = second && s.r - distance_to_triangle(s, c[1], c[0], c[3]) < 0.005 * s.r &&
+             (code != "yade" || distance_to_segment(s, c[0], c[1]) > s.r + 1e-3);
+  }
+  std::string stl = "solid fuzz\n";
+  const auto facet = [&](const dem::Vec3& a, const dem::Vec3& b, const dem::Vec3& d) {
+    stl += "  facet normal 0 0 0\n    outer loop\n";
+    for (const dem::Vec3* p : {&a, &b, &d}) stl += fmt::format("      vertex {:.17g} {:.17g} {:.17g}\n", (*p)[0], (*p)[1], (*p)[2]);
+    stl += "    endloop\n  endfacet\n";
+  };
+  facet(c[0], c[1], c[2]);
+  if (second) facet(c[1], c[0], c[3]);
+  stl += "endsolid fuzz\n";
+  scene.facets = second ? 2 : 1;
+  const std::string file = scene.name + ".stl";
+  scene.files.emplace_back(file, std::move(stl));
+  t += fmt::format("[[walls]]\ntype = \"mesh\"\nname = \"mesh\"\nfile = \"{}\"\nmaterial = \"m{}\"\n\n", file,
+                   static_cast<int>(unit(rng) * materials) % materials);
+}
 
 }  // namespace
 
@@ -178,10 +258,6 @@ FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
   // at r_i + r_j + s·min(r_i, r_j) with s in [−0.5 %, 2 %], and kept only if it overlaps no
   // other by more (the loader allows 1 % of the smaller radius).
   const int n = 2 + static_cast<int>(pick(5));
-  struct Sphere {
-    double r, x, y, z;
-    int material;
-  };
   std::vector<Sphere> spheres;
   spheres.push_back({uniform(0.5e-3, 1.5e-3), 0.0, 0.0, 0.0, static_cast<int>(pick(materials))});
   for (int attempt = 0; static_cast<int>(spheres.size()) < n && attempt < 1000; ++attempt) {
@@ -220,6 +296,8 @@ FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
     t += fmt::format("[[walls]]\ntype = \"plane\"\nname = \"side\"\npoint = {}\nnormal = [-1.0, 0.0, 0.0]\nmaterial = \"m{}\"\n\n",
                      vec(rightmost + uniform(-0.005, 0.02) * smallest, 0.0, 0.0), pick(materials));
   }
+
+  add_mesh(scene, t, code, mixed, spheres, materials);
 
   // Random velocities (±0.2 m/s a component) and spins; spheres 0 and 1 (the compared pair:
   // sphere 1 was placed next to sphere 0) also approach each other at 0.6 m/s along their line

@@ -3,8 +3,9 @@
 // Randomised cross-code scenes for the matched engines (docs/engines.md, "Matched numerics on
 // random scenes"): a seed gives one small case file — 2 to 6 spheres of mixed radii and one or
 // two materials, random positions, velocities and spins, gravity on or off, 0 to 2 plane walls,
-// and a contact model drawn from every sub-model of every slot — that runs on a reference code
-// and on the core with that code's numerics. The matched row (trace deviation, at 1e-8) says
+// for YADE and LIGGGHTS sometimes a mesh of one or two tilted triangles under the spheres (an
+// STL written beside the case), and a contact model drawn from every sub-model of every slot —
+// that runs on a reference code and on the core with that code's numerics. The matched row (trace deviation, at 1e-8) says
 // whether the two agree; the code's mapping says n/a, with its reason, where it cannot express
 // the scene.
 
@@ -12,6 +13,8 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace studies {
 
@@ -21,8 +24,11 @@ struct FuzzScene {
   std::string toml;     ///< the case file
   std::string model;    ///< normal/damping/tangential/cohesion/rolling keywords, '/'-joined
   int spheres = 0;
-  int walls = 0;
+  int walls = 0;    ///< plane walls
+  int facets = 0;   ///< facets of the mesh wall, 0 without one (YADE and LIGGGHTS scenes)
   bool gravity = false;
+  /// Files the case names, to be written beside it: (file name, text) — the mesh's STL.
+  std::vector<std::pair<std::string, std::string>> files;
   int draws = 1;  ///< drafts drawn before this one was kept (random_matched_scene with a filter)
 };
 

@@ -105,9 +105,13 @@ struct SphereState {
 /// partner: m* = m, R* = r). The normal and distance are wall_frame's (a plane's own normal);
 /// the lever arm is r − δ/2 (common normal,
 /// and WallLeverArm::yade_incident) or r (WallLeverArm::radius, LAMMPS fix wall/gran); the
-/// contact-point velocity uses the same arm, except under yade_incident (see WallLeverArm).
+/// contact-point velocity uses the same arm, except under yade_incident against any wall but a
+/// mesh facet (see WallLeverArm).
 [[nodiscard]] inline ContactGeometry wall_geometry(const SphereState& p, const Wall& w,
                                                    double t, WallLeverArm arm) noexcept {
+  // YADE's facet functor (Ig2_Facet_Sphere_ScGeom) takes the velocity of the contact point at
+  // r − δ/2 without α, which is the common-normal rule; only its plane wall scales by α.
+  if (arm == WallLeverArm::yade_incident && w.shape == WallShape::triangle) arm = WallLeverArm::contact_point;
   const bool lever_arm_is_radius = arm == WallLeverArm::radius;
   ContactGeometry g;
   const WallFrame frame = wall_frame(w, p.position, t);

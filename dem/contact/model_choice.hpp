@@ -29,6 +29,8 @@ enum class WallLeverArm {
   /// r − δ/2 for the torque; the slip velocity YADE's way (ScGeom::getIncidentVel with
   /// avoidGranularRatcheting): spin with the radius r, the sphere's own velocity scaled by
   /// α = 2r/(2r − δ) in the tangential part (YADE Ig2_Wall_Sphere_ScGeom + CundallStrack).
+  /// Against a mesh facet YADE's Ig2_Facet_Sphere_ScGeom forms the velocity without α at the
+  /// contact point r − δ/2, so there this arm is `contact_point`.
   yade_incident,
 };
 

@@ -86,8 +86,6 @@ std::string unmapped_mesh(const cases::MeshSpec& mesh) {
                      mesh.name, mesh.facets, mesh.file);
 }
 
-bool wall_in_run(const cases::WallSpec& wall) noexcept { return !(wall.removed_at && *wall.removed_at <= 0.0); }
-
 std::optional<std::string> wall_region_arguments(const cases::WallSpec& wall) {
   if (wall.shape != dem::WallShape::frustum) return std::nullopt;
   const int axis = coordinate_axis(wall.normal);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cases/scene.hpp"
+#include "reference/common/wall_in_run.hpp"
 
 namespace reference::lammps {
 
@@ -29,9 +30,6 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
 /// Why this LAMMPS cannot take a mesh wall (unmapped_wall leaves its facets to this one reason).
 [[nodiscard]] std::string unmapped_mesh(const cases::MeshSpec& mesh);
 
-/// False for a wall removed at t ≤ 0: it stood only through the preparation (a shutter), and the
-/// deck leaves it out.
-[[nodiscard]] bool wall_in_run(const cases::WallSpec& wall) noexcept;
 
 /// The `region` arguments of a cylinder or cone wall about a coordinate axis, open at both ends
 /// and two-sided, for fix wall/gran/region, e.g. "cone z 0 0 0.006 0.015 0 0.003 side in open 1

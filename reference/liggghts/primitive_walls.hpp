@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cases/scene.hpp"
+#include "reference/common/wall_in_run.hpp"
 
 namespace reference::liggghts {
 
@@ -54,9 +55,6 @@ std::vector<std::string> cylinder_end_reasons(const cases::Scene& scene, std::si
 /// True when the wall (or the mesh the facet belongs to) translates.
 [[nodiscard]] bool wall_moves(const cases::WallSpec& wall) noexcept;
 
-/// False for a wall removed at t ≤ 0: it stood only through the preparation, and the deck leaves
-/// it out.
-[[nodiscard]] bool wall_in_run(const cases::WallSpec& wall) noexcept;
 
 /// One reason per property of wall `index` the deck cannot express (any shape but an axis-aligned
 /// plane or cylinder, a moving wall, a removal during the run); none for a wall removed at t ≤ 0.

@@ -11,6 +11,7 @@
 
 #include "dem/contact/pair_table.hpp"
 #include "dem/core/model_error.hpp"
+#include "reference/common/wall_in_run.hpp"
 
 namespace reference::yade {
 namespace {
@@ -255,17 +256,24 @@ void check_mindlin_modulus(const cases::Scene& scene, const dem::PairLaw& law, s
   }
 }
 
-/// Walls: YADE's utils.wall is an axis-aligned, immobile plane.
+/// Walls: YADE's utils.wall is an axis-aligned, immobile plane; a mesh's facets are
+/// utils.facet bodies, immobile too.
 void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
   for (const auto& w : scene.walls) {
-    if (w.mesh) {  // one reason for all the facets of a mesh
-      add_reason(reasons, fmt::format("YADE driver: wall '{}' is a triangle mesh; only plane walls (utils.wall) are "
-                                      "mapped",
-                                      scene.meshes.at(*w.mesh).name));
+    if (!wall_in_run(w)) continue;  // gone when the run starts: the script leaves it out
+    if (w.mesh) {  // the reasons name the mesh once for all its facets
+      const std::string& mesh = scene.meshes.at(*w.mesh).name;
+      if (w.removed_at) {
+        add_reason(reasons, fmt::format("YADE driver: mesh '{}' is removed during the run; that is not mapped", mesh));
+      }
+      if (w.velocity[0] != 0.0 || w.velocity[1] != 0.0 || w.velocity[2] != 0.0) {
+        add_reason(reasons, fmt::format("YADE driver: moving mesh '{}' is not mapped", mesh));
+      }
       continue;
     }
     if (w.shape != dem::WallShape::plane) {
-      add_reason(reasons, fmt::format("YADE driver: wall '{}' is a {}; only plane walls (utils.wall) are mapped",
+      add_reason(reasons, fmt::format("YADE driver: wall '{}' is a {}; only plane walls (utils.wall) and meshes "
+                                      "(utils.facet) are mapped",
                                       w.name, cases::wall_shape_name(w)));
       continue;
     }
@@ -278,6 +286,33 @@ void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
     }
     if (w.velocity[0] != 0.0 || w.velocity[1] != 0.0 || w.velocity[2] != 0.0) {
       add_reason(reasons, fmt::format("YADE driver: moving wall '{}' is not mapped", w.name));
+    }
+  }
+}
+
+/// Meshes under the law family and traced walls: FrictViscoPhys' dashpot scales by α = (r₁ + r₂)/(r₁ + r₂ − δ),
+/// which a facet makes 3r/(3r − δ) (Ig2_Facet_Sphere_ScGeom: r₁ = 2r); the core's
+/// `yade_frictvisco` has YADE's plane-wall 2r/(2r − δ). A traced facet contact is not written, nor
+/// a wall the script leaves out.
+void check_meshes(const cases::Scene& scene, YadeLaw law, std::vector<std::string>& reasons) {
+  for (const auto& mesh : scene.meshes) {
+    if (law == YadeLaw::frict_visco) {
+      add_reason(reasons, fmt::format("YADE driver: mesh '{}' under the restitution dashpot (FrictViscoPhys) is "
+                                      "not mapped: against a facet YADE scales the dashpot by α = 3r/(3r − δ) "
+                                      "(the facet's radius is 2r), the core's yade_frictvisco by a plane "
+                                      "wall's 2r/(2r − δ)",
+                                      mesh.name));
+    }
+  }
+  for (const auto& [particle, wall] : scene.output.trace_walls) {
+    if (wall < scene.walls.size() && !wall_in_run(scene.walls[wall])) {
+      add_reason(reasons, fmt::format("YADE driver: output.trace_walls names wall '{}', which is removed before the "
+                                      "run starts (the script leaves it out)",
+                                      scene.walls[wall].name));
+    } else if (wall < scene.walls.size() && scene.walls[wall].mesh) {
+      add_reason(reasons, fmt::format("YADE driver: output.trace_walls names facet '{}' of a mesh; only a plane "
+                                      "wall's overlap and force are traced",
+                                      scene.walls[wall].name));
     }
   }
 }
@@ -297,24 +332,43 @@ bool wall_has_friction(const cases::Scene& scene, const dem::PairTable& table, c
   return false;
 }
 
-/// Hertz–Mindlin walls: one compensated YADE material per wall (compensated_wall_material), the
-/// same for every particle material that meets it, and MatchMaker rows copied from the wall's
-/// scene material. Adds a reason when a wall cannot be expressed.
+/// G* of the pair's Mindlin tangential law, or nothing without one.
+std::optional<double> mindlin_shear_modulus(const dem::PairLaw& law) {
+  const auto* mindlin = std::get_if<dem::Mindlin8GTangential>(&law.tangential);
+  if (mindlin == nullptr) return std::nullopt;
+  return mindlin->p.shear_modulus;
+}
+
+/// Hertz–Mindlin walls: one compensated YADE material per plane wall and one per mesh
+/// (compensated_wall_material), the same for every particle material that meets it, and
+/// MatchMaker rows copied from the wall's scene material. Adds a reason when a wall cannot be
+/// expressed.
 void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, YadeModelMapping& out) {
   std::vector<bool> meets_walls(scene.materials.size(), false);
   for (const auto& p : scene.particles) {
     if (!p.fixed) meets_walls[p.material] = true;
   }
   const std::size_t base_pairs = out.pairs.size();
+  std::map<std::size_t, std::size_t> mesh_material;  // mesh index → its compensated O.materials id
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
     const cases::WallSpec& w = scene.walls[k];
+    if (!wall_in_run(w)) continue;
+    const bool facet = w.mesh.has_value();
+    if (facet) {
+      if (const auto known = mesh_material.find(*w.mesh); known != mesh_material.end()) {
+        out.wall_material_ids[k] = known->second;
+        continue;
+      }
+    }
+    const std::string name = facet ? scene.meshes.at(*w.mesh).name : w.name;
     if (out.surface_energy != 0.0) {
       add_reason(out.reasons, fmt::format("YADE driver: Hertz–Mindlin DMT adhesion against wall '{}' "
                                           "is not mapped (Ip2_FrictMat_FrictMat_MindlinPhys takes "
-                                          "4πRγ with the wall's R = r/2)", w.name));
+                                          "4πRγ with the wall's R = {})", name, facet ? "2r/3" : "r/2"));
       continue;
     }
-    if (wall_has_friction(scene, table, meets_walls, w)) {
+    const bool friction = wall_has_friction(scene, table, meets_walls, w);
+    if (friction && !facet) {
       // Measured on a 30° Hertz–Mindlin impact (stick, then slip): v_t after 1.1 % and ω after
       // 0.4 % away from the core, natively and in matched numerics alike.
       add_reason(out.reasons, fmt::format(
@@ -326,25 +380,31 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
           "(tangential = 'none', or a wall material whose friction mixes to μ = 0)", w.name));
       continue;
     }
+    // Ig2_Wall_Sphere_ScGeom gives Mindlin R = r/2, Ig2_Facet_Sphere_ScGeom R = 2r/3; the case's
+    // is r.
+    const double radius_ratio = facet ? 1.5 : 2.0;
     std::optional<YadeWallMaterial> chosen;
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {
       if (!meets_walls[m]) continue;
-      const auto* hertz = std::get_if<dem::HertzNormal>(&table.law(m, w.material).normal);
+      const dem::PairLaw& law = table.law(m, w.material);
+      const auto* hertz = std::get_if<dem::HertzNormal>(&law.normal);
       if (hertz == nullptr) continue;
-      // Frictionless (friction was refused above): only k_no matters, so ν′ = ν of the sphere.
+      // Frictionless (plane walls with friction were refused above): only k_no matters, so
+      // ν′ = ν of the sphere. A mesh with friction needs k_so too.
       const auto wall = compensated_wall_material(out.material_young[m], out.material_poisson[m],
-                                                  hertz->effective_modulus, std::nullopt);
+                                                  hertz->effective_modulus,
+                                                  friction ? mindlin_shear_modulus(law) : std::nullopt, radius_ratio);
       if (!wall) {
         add_reason(out.reasons, fmt::format("YADE driver: no YADE material gives wall '{}' the "
                                             "Hertz–Mindlin stiffness of R* = r against material '{}'",
-                                            w.name, scene.materials[m].name));
+                                            name, scene.materials[m].name));
         chosen.reset();
         break;
       }
       if (chosen && (chosen->young != wall->young || chosen->poisson != wall->poisson)) {
         add_reason(out.reasons, fmt::format("YADE driver: wall '{}' meets particle materials that need "
                                             "different compensating wall materials (one YADE material "
-                                            "per wall)", w.name));
+                                            "per wall)", name));
         chosen.reset();
         break;
       }
@@ -355,6 +415,7 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
     const std::size_t id = scene.materials.size() + out.wall_materials.size();
     out.wall_materials.push_back(*chosen);
     out.wall_material_ids[k] = id;
+    if (facet) mesh_material[*w.mesh] = id;
     for (std::size_t i = 0; i < base_pairs; ++i) {
       const YadePairParameters p = out.pairs[i];
       if (p.material_a != w.material && p.material_b != w.material) continue;
@@ -364,12 +425,19 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
       out.pairs.push_back(copy);
     }
   }
-  if (!out.wall_materials.empty()) {
+  const bool planes = std::any_of(scene.walls.begin(), scene.walls.end(), [](const auto& w) { return !w.mesh; });
+  if (!out.wall_materials.empty() && planes) {
     out.conventions["wall contact radius"] =
         "Ig2_Wall_Sphere_ScGeom gives the wall the sphere's radius, so Mindlin takes R = r/2; each "
         "wall gets its own YADE material whose young and poisson make YADE's E* and G* √2 times the "
         "case's, so k_no = 4/3 E* √r and k_so = 8 G* √r as for R* = r (exact to round-off; a "
         "rigid wall's young is negative)";
+  }
+  if (mesh_material.size() > 0) {
+    out.conventions["facet contact radius"] =
+        "Ig2_Facet_Sphere_ScGeom gives a facet twice the sphere's radius, so Mindlin takes R = 2r/3; "
+        "each mesh gets its own YADE material whose young and poisson make YADE's E* and G* √(3/2) "
+        "times the case's, so k_no = 4/3 E* √r and k_so = 8 G* √r as for R* = r";
   }
 }
 
@@ -377,13 +445,14 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
 
 std::optional<YadeWallMaterial> compensated_wall_material(double young_s, double poisson_s,
                                                           double effective_modulus,
-                                                          std::optional<double> effective_shear_modulus) {
-  const double root2 = std::sqrt(2.0);
-  const double c = 1.0 / (root2 * effective_modulus) - (1.0 - poisson_s * poisson_s) / young_s;
+                                                          std::optional<double> effective_shear_modulus,
+                                                          double radius_ratio) {
+  const double scale = std::sqrt(radius_ratio);
+  const double c = 1.0 / (scale * effective_modulus) - (1.0 - poisson_s * poisson_s) / young_s;
   YadeWallMaterial w;
   if (effective_shear_modulus) {
     const double shear_s = young_s / (2.0 * (1.0 + poisson_s));
-    const double d = 1.0 / (root2 * *effective_shear_modulus) - (2.0 - poisson_s) / shear_s;
+    const double d = 1.0 / (scale * *effective_shear_modulus) - (2.0 - poisson_s) / shear_s;
     const double rho = d / c;
     w.poisson = (rho - 4.0) / (rho - 2.0);
   } else {
@@ -475,6 +544,17 @@ YadeModelMapping map_contact_model(const PreparedScene& prepared) {
   out.law = family.value_or(YadeLaw::frict);
   out.viscous = out.law == YadeLaw::frict_visco;
   check_walls(scene, out.reasons);
+  check_meshes(scene, out.law, out.reasons);
+  if (!scene.meshes.empty()) {
+    out.conventions["mesh facets"] =
+        "each facet is a utils.facet of its own (Ig2_Facet_Sphere_ScGeom: the nearest point of the "
+        "triangle — face, edge or corner — and the contact point x − (r − δ/2) n, its velocity without "
+        "α, as the core's contact_point arm). YADE meets every facet within reach: a sphere on an "
+        "edge or corner two facets share, or within √(2rδ) of a flat seam, is pushed by each of "
+        "them, and a contact that passes to the next facet starts a new shear history; the core "
+        "counts one contact per surface point and hands the history over (docs/walls.md). The runs "
+        "agree while no sphere touches an edge or corner that two facets share";
+  }
   for (const auto& p : out.pairs) out.python_cohesion = out.python_cohesion || p.cohesive_stiffness != 0.0;
   if (out.python_cohesion) {
     // The per-step Python force acts between spheres only: a wall may take part only when its

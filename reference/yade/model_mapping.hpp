@@ -41,16 +41,18 @@ struct YadeWallMaterial {
 };
 
 /// young and poisson of a wall's YADE material for which Ip2_FrictMat_FrictMat_MindlinPhys,
-/// against a sphere of (young_s, poisson_s) at the wall's R = r/2 (Ig2_Wall_Sphere_ScGeom gives
-/// the wall the sphere's radius), yields k_no = 4/3 E* √r and k_so = 8 G* √r, the sphere–plane
-/// contact with R* = r: YADE's E* and G* must be √2 times the case's. With c = (1 − ν²)/E and
-/// d = (2 − ν)/G per material (YADE's mixing is 1/E* = c_s + c_w, 1/G* = d_s + d_w), the wall
-/// needs c′ = 1/(√2 E*) − c_s and d′ = 1/(√2 G*) − d_s, solved by ν′ = (ρ − 4)/(ρ − 2),
-/// ρ = d′/c′, and E′ = (1 − ν′²)/c′. E′ < 0 when the wall is stiffer than that (a rigid wall:
-/// E′ = −(2 + √2) E_s, ν′ = ν_s); YADE takes it as given. Empty `shear_modulus`: no tangential
-/// law, ν′ = ν_s. Returns nothing when no finite solution exists.
+/// against a sphere of (young_s, poisson_s) at YADE's R = r/k (k = `radius_ratio`: 2 for a plane,
+/// as Ig2_Wall_Sphere_ScGeom gives the wall the sphere's radius; 3/2 for a facet, to which
+/// Ig2_Facet_Sphere_ScGeom gives twice it), yields k_no = 4/3 E* √r and k_so = 8 G* √r, the
+/// sphere–plane contact with R* = r: YADE's E* and G* must be √k times the case's. With
+/// c = (1 − ν²)/E and d = (2 − ν)/G per material (YADE's mixing is 1/E* = c_s + c_w,
+/// 1/G* = d_s + d_w), the wall needs c′ = 1/(√k E*) − c_s and d′ = 1/(√k G*) − d_s, solved by
+/// ν′ = (ρ − 4)/(ρ − 2), ρ = d′/c′, and E′ = (1 − ν′²)/c′. E′ < 0 when the wall is stiffer than
+/// that (a rigid plane: E′ = −(2 + √2) E_s, ν′ = ν_s); YADE takes it as given. Empty
+/// `shear_modulus`: no tangential law, ν′ = ν_s. Returns nothing when no finite solution exists.
 [[nodiscard]] std::optional<YadeWallMaterial> compensated_wall_material(
-    double young_s, double poisson_s, double effective_modulus, std::optional<double> effective_shear_modulus);
+    double young_s, double poisson_s, double effective_modulus, std::optional<double> effective_shear_modulus,
+    double radius_ratio = 2.0);
 
 /// How the scene's contact model and walls are expressed in YADE 2023.02a.
 struct YadeModelMapping {
@@ -64,8 +66,9 @@ struct YadeModelMapping {
   double aabb_enlarge = 1.0;                   ///< largest r̂/r: the collider's box enlargement for it
   std::vector<YadePairParameters> pairs;       ///< every material pair a ≤ b (and each wall material's copies)
   /// O.materials added after the scene's (ids scene.materials.size() + k), one per plane wall
-  /// under Hertz–Mindlin: the wall's material with young and poisson chosen so that YADE's
-  /// k_no and k_so at R = r/2 equal the case's at R* = r (see compensated_wall_material).
+  /// and one per mesh under Hertz–Mindlin: the wall's material with young and poisson chosen so
+  /// that YADE's k_no and k_so at its R (r/2, or 2r/3 for a facet) equal the case's at R* = r
+  /// (see compensated_wall_material).
   std::vector<YadeWallMaterial> wall_materials;
   std::vector<std::size_t> wall_material_ids;  ///< O.materials id per scene wall (the scene's material unless compensated)
   std::vector<std::string> reasons;            ///< why the model cannot be expressed (empty: it can)
@@ -73,7 +76,8 @@ struct YadeModelMapping {
   std::map<std::string, std::string> conventions;  ///< "contact <slot>" → registry mapping text
 };
 
-/// Maps the scene's contact model (one small function per slot) and its plane walls. Never
+/// Maps the scene's contact model (one small function per slot), its plane walls and its
+/// meshes. Never
 /// throws: a model the core cannot build gives a reason.
 YadeModelMapping map_contact_model(const PreparedScene& prepared);
 

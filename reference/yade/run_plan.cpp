@@ -6,8 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "cases/core_wall.hpp"
 #include "cases/trace.hpp"
+#include "dem/contact/wall.hpp"
 #include "reference/common/core_setup.hpp"
+#include "reference/common/wall_in_run.hpp"
 #include "cases/time_step.hpp"
 
 namespace reference::yade {
@@ -25,10 +28,9 @@ bool starts_in_contact(const cases::Scene& scene, std::size_t i) {
     const double dz = p.position[2] - q.position[2];
     if (p.radius + q.radius - std::sqrt(dx * dx + dy * dy + dz * dz) > 0.0) return true;
   }
+  const dem::Vec3 x(p.position[0], p.position[1], p.position[2]);
   for (const auto& w : scene.walls) {
-    double distance = 0.0;
-    for (std::size_t k = 0; k < 3; ++k) distance += (p.position[k] - w.point[k]) * w.normal[k];
-    if (p.radius - distance > 0.0) return true;
+    if (wall_in_run(w) && p.radius - dem::wall_frame(cases::core_wall(w), x, 0.0).distance > 0.0) return true;
   }
   return false;
 }

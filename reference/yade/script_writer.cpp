@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "dem/particles/particles.hpp"
+#include "reference/common/wall_in_run.hpp"
 #include "reference/yade/python_literals.hpp"
 #include "reference/yade/restitution_calibration.hpp"
 
@@ -172,14 +173,25 @@ void write_python_cohesion(std::string& s, const cases::Scene& scene, const Yade
        "        COHESIVE_FN[(i, j)] = fn\n\n";
 }
 
-/// Plane walls as utils.wall bodies after the particles (body id = particle count + wall index).
-void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
+/// YADE body id of wall `k`: after the particles, counting only the walls in the run (a wall
+/// removed at t ≤ 0 is left out; supports() refuses tracing one).
+std::size_t wall_body(const cases::Scene& scene, std::size_t k) {
+  std::size_t body = scene.particles.size();
+  for (std::size_t j = 0; j < k && j < scene.walls.size(); ++j) body += wall_in_run(scene.walls[j]) ? 1 : 0;
+  return body;
+}
+
+/// Plane walls as utils.wall bodies after the particles (body id = particle count + the wall's
+/// place among the walls in the run: wall_body), in the layout of a scene without meshes (its
+/// input fingerprint unchanged since meshes came).
+void write_plane_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   auto out = std::back_inserter(s);
   s += "# Plane walls, body id = len(PARTICLES) + wall index: (position along the axis, axis, sense,\n"
        "# material). sense = +1/-1: only the side the case's normal points to interacts.\n"
        "WALLS = [\n";
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
     const auto& w = scene.walls[k];
+    if (!wall_in_run(w)) continue;  // removed at t ≤ 0: not in the run
     const WallAxis a = wall_axis(w.normal);
     if (a.axis < 0) {  // utils.wall is axis-aligned; supports() refuses such a scene first
       throw std::invalid_argument(fmt::format("walls[{}]: the YADE driver writes axis-aligned plane walls only", k));
@@ -191,6 +203,49 @@ void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& p
        "def _append_walls():\n"
        "    for k, (position, axis, sense, material) in enumerate(WALLS):\n"
        "        wall = utils.wall(position, axis=axis, sense=sense, material=material)\n"
+       "        assert O.bodies.append(wall) == len(PARTICLES) + k\n"
+       "_append_walls()\n\n";
+}
+
+/// Walls of a scene with meshes after the particles (body id: wall_body): a
+/// plane as a utils.wall, a mesh facet as a utils.facet with the scene's corners (digits that
+/// round-trip). Each entry names its kind; a traced wall is always a plane (supports()).
+void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
+  if (scene.meshes.empty()) {
+    write_plane_walls(s, scene, plan);
+    return;
+  }
+  auto out = std::back_inserter(s);
+  s += "# Walls, body id = len(PARTICLES) + wall index: ('plane', (position along the axis, axis,\n"
+       "# sense), material) with sense = +1/-1: only the side the case's normal points to interacts;\n"
+       "# ('facet', (corner, corner, corner), material): one triangle of a mesh, two-sided.\n"
+       "WALLS = [\n";
+  for (std::size_t k = 0; k < scene.walls.size(); ++k) {
+    const auto& w = scene.walls[k];
+    if (!wall_in_run(w)) continue;  // removed at t ≤ 0: not in the run
+    const std::size_t material = k < plan.model.wall_material_ids.size() ? plan.model.wall_material_ids[k] : w.material;
+    if (w.mesh) {
+      fmt::format_to(out, "    ('facet', ({}, {}, {}), {}),\n", py_vector3(w.corners[0]), py_vector3(w.corners[1]),
+                     py_vector3(w.corners[2]), material);
+      continue;
+    }
+    const WallAxis a = wall_axis(w.normal);
+    if (a.axis < 0 || w.shape != dem::WallShape::plane) {  // supports() refuses such a scene first
+      throw std::invalid_argument(
+          fmt::format("walls[{}]: the YADE driver writes axis-aligned plane walls and mesh facets only", k));
+    }
+    fmt::format_to(out, "    ('plane', ({}, {}, {}), {}),\n", py_float(w.point[static_cast<std::size_t>(a.axis)]),
+                   a.axis, a.sense, material);
+  }
+  s += "]\n"
+       "PLANES = {k: shape for k, (kind, shape, _) in enumerate(WALLS) if kind == 'plane'}\n"
+       "def _append_walls():\n"
+       "    for k, (kind, shape, material) in enumerate(WALLS):\n"
+       "        if kind == 'plane':\n"
+       "            position, axis, sense = shape\n"
+       "            wall = utils.wall(position, axis=axis, sense=sense, material=material)\n"
+       "        else:\n"
+       "            wall = utils.facet(list(shape), material=material, fixed=True)\n"
        "        assert O.bodies.append(wall) == len(PARTICLES) + k\n"
        "_append_walls()\n\n";
 }
@@ -233,7 +288,7 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
                  }));
   fmt::format_to(out, "TRACED_WALLS = [{}]  # (particle, wall body id)\n",
                  joined(scene.output.trace_walls, [&](const auto& pw) {
-                   return fmt::format("({}, {})", pw.first, scene.particles.size() + pw.second);
+                   return fmt::format("({}, {})", pw.first, wall_body(scene, pw.second));
                  }));
   std::string header;
   for (const auto& c : plan.trace_columns) header += (header.empty() ? "" : ",") + c;
@@ -262,7 +317,11 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "    if I is not None and I.isReal:\n"
        "        overlap = I.geom.penetrationDepth\n"
        "        return [overlap, I.phys.normalForce.dot(I.geom.normal) if overlap >= 0 else 0.0]\n"
-       "    position, axis, sense, _ = WALLS[w - len(PARTICLES)]\n"
+       ;
+  // A scene with meshes lists every wall with its kind; PLANES maps a plane's wall index to its shape.
+  s += scene.meshes.empty() ? "    position, axis, sense, _ = WALLS[w - len(PARTICLES)]\n"
+                            : "    position, axis, sense = PLANES[w - len(PARTICLES)]\n";
+  s +=
        "    return [O.bodies[p].shape.radius - sense * (O.bodies[p].state.pos[axis] - position), 0.0]\n\n"
        "def record_trace():\n"
        "    \"\"\"One trace row: x(n), v(n-1/2), F(x(n)) of iteration n (runs before NewtonIntegrator).\"\"\"\n"
@@ -287,15 +346,22 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "        _snapshots.write(','.join('%.17g' % v for v in values) + '\\n')\n\n";
 }
 
-void write_engines_and_run(std::string& s, const YadeRunPlan& plan) {
+void write_engines_and_run(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
+  const bool facets = !scene.meshes.empty();
   s += "O.engines = [\n"
        "    ForceResetter(),\n";
-  s += plan.model.python_cohesion
-           ? "    InsertionSortCollider([Bo1_Sphere_Aabb(aabbEnlargeFactor=AABB_ENLARGE), Bo1_Wall_Aabb()]),\n"
-           : "    InsertionSortCollider([Bo1_Sphere_Aabb(), Bo1_Wall_Aabb()]),\n";
+  fmt::format_to(std::back_inserter(s), "    InsertionSortCollider([Bo1_Sphere_Aabb({}), Bo1_Wall_Aabb(){}]),\n",
+                 plan.model.python_cohesion ? "aabbEnlargeFactor=AABB_ENLARGE" : "",
+                 facets ? ", Bo1_Facet_Aabb()" : "");
+  s += "    # Ig2 defaults: avoidGranularRatcheting / noRatch = True (alpha-scaled incident velocity)\n";
+  if (facets) {
+    s += "    # except Ig2_Facet_Sphere_ScGeom: the contact point's velocity, no alpha\n"
+         "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom(), Ig2_Facet_Sphere_ScGeom()],\n"
+         "                    [IP2], [LAW2]),\n";
+  } else {
+    s += "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [IP2], [LAW2]),\n";
+  }
   s +=
-       "    # Ig2 defaults: avoidGranularRatcheting / noRatch = True (alpha-scaled incident velocity)\n"
-       "    InteractionLoop([Ig2_Sphere_Sphere_ScGeom(), Ig2_Wall_Sphere_ScGeom()], [IP2], [LAW2]),\n"
        "    # between the contact laws and the integrator: sees x(n), v(n-1/2) and F(x(n)) of\n"
        "    # iteration n = the in-house trace row at t = n*DT; initRun: also at iteration 0\n";
   if (plan.model.python_cohesion) {
@@ -329,7 +395,7 @@ std::string write_yade_script(const cases::Scene& scene, const YadeRunPlan& plan
   if (plan.model.python_cohesion) write_python_cohesion(s, scene, plan);
   if (plan.calibration) s += write_calibration_block(*plan.calibration);
   write_recorders(s, scene, plan);
-  write_engines_and_run(s, plan);
+  write_engines_and_run(s, scene, plan);
   return s;
 }
 

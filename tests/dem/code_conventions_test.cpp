@@ -58,6 +58,25 @@ TEST(YadeIncident, AgainstAWallScalesBy2rOver2rMinusDelta) {
   EXPECT_DOUBLE_EQ(g.branch_p.z(), -(r - 0.5 * delta));
 }
 
+TEST(YadeIncident, AgainstAMeshFacetIsTheContactPointVelocityWithoutAlpha) {
+  // YADE's Ig2_Facet_Sphere_ScGeom forms the slip from the velocity of the contact point
+  // x − (r − δ/2) n, without α: the common-normal rule, unlike its plane wall.
+  const double r = 1e-3, delta = 3e-6;
+  const dem::SphereState p{Vec3(0.002, 0.001, r - delta), Vec3(0.3, -0.1, -0.2), Vec3(40.0, 20.0, -10.0), r, r, 1e5};
+  const dem::Wall facet = dem::triangle_wall(Vec3::Zero(), Vec3(0.01, 0.0, 0.0), Vec3(0.0, 0.01, 0.0));
+  const dem::ContactGeometry g = dem::wall_geometry(p, facet, 0.0, dem::WallLeverArm::yade_incident);
+  const Vec3 n = Vec3::UnitZ();
+  ASSERT_NEAR(g.overlap, delta, 1e-18);
+  const Vec3 at_point = p.velocity + p.angular_velocity.cross(-(r - 0.5 * delta) * n);
+  const Vec3 expected = at_point - at_point.dot(n) * n;
+  EXPECT_LT((g.tangential_velocity - expected).norm(), 1e-15 * expected.norm());
+  EXPECT_DOUBLE_EQ(g.branch_p.z(), -(r - 0.5 * delta));
+  // The same sphere on a plane wall takes YADE's α-scaled rule, which differs.
+  const dem::ContactGeometry plane = dem::wall_geometry(p, dem::Wall{Vec3::Zero(), Vec3::UnitZ()}, 0.0,
+                                                        dem::WallLeverArm::yade_incident);
+  EXPECT_GT((plane.tangential_velocity - g.tangential_velocity).norm(), 1e-5 * expected.norm());
+}
+
 TEST(YadeRotate, TurnsTheSlipToFirstOrderWithoutReprojectingAndTwistsAboutTheOldNormal) {
   const Vec3 slip(2e-6, -1e-6, 0.0);
   const Vec3 n_old = Vec3::UnitZ();

@@ -638,7 +638,7 @@ TEST(LiggghtsWalls, APlaneFacingDownMeasuresAndPushesAlongItsOwnNormal) {
   EXPECT_FALSE(unmapped_wall(ceiling, 0).empty());
   ceiling.normal = {0.0, 0.0, -1.0};
   ceiling.removed_at = 0.0;  // stood through the preparation only: left out, not refused
-  EXPECT_FALSE(wall_in_run(ceiling));
+  EXPECT_FALSE(reference::wall_in_run(ceiling));
   EXPECT_TRUE(unmapped_wall(ceiling, 0).empty());
   ceiling.removed_at = 1e-3;
   EXPECT_FALSE(unmapped_wall(ceiling, 0).empty());

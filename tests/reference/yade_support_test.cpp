@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: MIT
 // What the YADE driver can express (phase 1), and why not, without running YADE.
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "cases/case_loader.hpp"
 #include "reference/yade/model_mapping.hpp"
 #include "reference/yade/run_plan.hpp"
+#include "reference/yade/script_writer.hpp"
 #include "reference/yade/yade_engine.hpp"
 #include "reference/yade/yade_installation.hpp"
 #include "reference/registry.hpp"
@@ -136,6 +139,119 @@ TEST(YadeSupport, HertzAgainstAWallIsMappedWithoutFrictionAndRefusedWithIt) {
   smooth_wall.materials.push_back(smooth);
   smooth_wall.walls.back().material = smooth_wall.materials.size() - 1;
   EXPECT_TRUE(offline_engine().supports(smooth_wall).supported()) << offline_engine().supports(smooth_wall).explain();
+}
+
+/// The Hertz collision's spheres with Mindlin friction in YADE's form over a mesh `m` of two
+/// facets (the square z = −1 cm cut along a diagonal), of the spheres' own material.
+cases::Scene scene_over_a_mesh() {
+  cases::Scene scene = cases::load_case(kCanonical / "hertz_collision.toml");
+  scene.model.tangential = "mindlin_8g";
+  scene.model.mindlin_form = dem::MindlinForm::incremental;
+  scene.model.clamp_tensile = true;
+  scene.materials[0].friction = 0.3;
+  scene.materials[0].tangential_damping_ratio = 0.0;
+  scene.meshes.push_back({"m", "m.stl", "", 2});
+  const cases::Vector3 a{-0.1, -0.1, -0.01}, b{0.1, -0.1, -0.01}, c{0.1, 0.1, -0.01}, d{-0.1, 0.1, -0.01};
+  for (const auto& corners : {std::array<cases::Vector3, 3>{a, b, c}, std::array<cases::Vector3, 3>{a, c, d}}) {
+    cases::WallSpec facet;
+    facet.name = "m." + std::to_string(scene.walls.size());
+    facet.shape = dem::WallShape::triangle;
+    facet.corners = corners;
+    facet.point = corners[0];
+    facet.normal = {0.0, 0.0, 1.0};
+    facet.mesh = 0;
+    scene.walls.push_back(facet);
+  }
+  return scene;
+}
+
+TEST(YadeSupport, AMeshIsFacetsOfOneCompensatedMaterialWithFriction) {
+  const cases::Scene scene = scene_over_a_mesh();
+  ASSERT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
+  const auto mapping = reference::yade::map_contact_model(reference::PreparedScene(scene));
+  // One YADE material for the whole mesh, both facets on it.
+  ASSERT_EQ(mapping.wall_materials.size(), 1U);
+  ASSERT_EQ(mapping.wall_material_ids.size(), 2U);
+  EXPECT_EQ(mapping.wall_material_ids[0], scene.materials.size());
+  EXPECT_EQ(mapping.wall_material_ids[1], scene.materials.size());
+  // At YADE's facet radius R = 2r/3 the material gives k_no = 4/3 E* √r and k_so = 8 G* √r with
+  // the case's sphere–wall E* = E/(2(1 − ν²)) and G* = G/(2(2 − ν)).
+  const double e_s = 8.4e7, nu_s = 0.3, g_s = e_s / (2.0 * (1.0 + nu_s));
+  const double e_star = e_s / (2.0 * (1.0 - nu_s * nu_s)), g_star = g_s / (2.0 * (2.0 - nu_s));
+  const YadeMix mix = yade_mix(e_s, nu_s, mapping.wall_materials[0].young, mapping.wall_materials[0].poisson);
+  EXPECT_NEAR(mix.e_star * std::sqrt(2.0 / 3.0), e_star, 1e-13 * e_star);
+  EXPECT_NEAR(mix.g_star * std::sqrt(2.0 / 3.0), g_star, 1e-13 * g_star);
+  EXPECT_TRUE(mapping.conventions.contains("facet contact radius"));
+  EXPECT_TRUE(mapping.conventions.contains("mesh facets"));
+  EXPECT_FALSE(mapping.conventions.contains("wall contact radius"));  // no plane wall
+  // The script: both facets with their corners, their bounds and their functor.
+  const std::string script =
+      reference::yade::write_yade_script(scene, reference::yade::make_run_plan(reference::PreparedScene(scene)));
+  EXPECT_NE(script.find("('facet', (Vector3(-0.1, -0.1, -0.01), Vector3(0.1, -0.1, -0.01), Vector3(0.1, 0.1, -0.01)), 1)"),
+            std::string::npos);
+  EXPECT_NE(script.find("('facet', (Vector3(-0.1, -0.1, -0.01), Vector3(0.1, 0.1, -0.01), Vector3(-0.1, 0.1, -0.01)), 1)"),
+            std::string::npos);
+  EXPECT_NE(script.find("utils.facet(list(shape), material=material, fixed=True)"), std::string::npos);
+  EXPECT_NE(script.find("Bo1_Facet_Aabb()"), std::string::npos);
+  EXPECT_NE(script.find("Ig2_Facet_Sphere_ScGeom()"), std::string::npos);
+}
+
+TEST(YadeSupport, AWallRemovedBeforeTheRunIsLeftOutAndTheBodyIdsCloseUp) {
+  // A shutter disc removed at t = 0 before the mesh, a traced floor after it: the disc stood
+  // through the preparation only, so the script leaves it out (a disc would be n/a) and the floor
+  // is body n + 2 (the two facets come first).
+  cases::Scene scene = scene_over_a_mesh();
+  cases::WallSpec shutter;
+  shutter.name = "shutter";
+  shutter.shape = dem::WallShape::annulus;
+  shutter.point = {0.0, 0.0, -0.02};
+  shutter.normal = {0.0, 0.0, 1.0};
+  shutter.size_v = 0.01;
+  shutter.removed_at = 0.0;
+  scene.walls.insert(scene.walls.begin(), shutter);
+  cases::WallSpec floor;
+  floor.name = "floor";
+  floor.normal = {0.0, 0.0, 1.0};
+  floor.point = {0.0, 0.0, -0.03};
+  scene.walls.push_back(floor);
+  scene.model.tangential = "none";  // friction against a plane wall is n/a under Hertz–Mindlin
+  scene.output.trace_walls = {{0, 3}};
+  ASSERT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
+  const std::string script =
+      reference::yade::write_yade_script(scene, reference::yade::make_run_plan(reference::PreparedScene(scene)));
+  EXPECT_EQ(script.find("shutter"), std::string::npos);
+  EXPECT_NE(script.find(fmt::format("TRACED_WALLS = [(0, {})]", scene.particles.size() + 2)), std::string::npos);
+  EXPECT_NE(script.find("('plane', (-0.03, 2, 1), "), std::string::npos);
+  // Removed later, the disc is in the run and not mapped; tracing the one removed at 0 is refused.
+  scene.walls[0].removed_at = 0.01;
+  EXPECT_TRUE(mentions(offline_engine().supports(scene), "'shutter' is a disc"));
+  scene.walls[0].removed_at = 0.0;
+  scene.output.trace_walls = {{0, 0}};
+  EXPECT_TRUE(mentions(offline_engine().supports(scene), "names wall 'shutter', which is removed before the run"));
+}
+
+TEST(YadeSupport, AMovingOrRemovedMeshATracedFacetAndTheRestitutionDashpotAreRefused) {
+  cases::Scene moving = scene_over_a_mesh();
+  for (auto& w : moving.walls) w.velocity = {0.0, 0.0, 0.1};
+  EXPECT_TRUE(mentions(offline_engine().supports(moving), "moving mesh 'm' is not mapped"));
+  cases::Scene removed = scene_over_a_mesh();
+  for (auto& w : removed.walls) w.removed_at = 0.001;
+  EXPECT_TRUE(mentions(offline_engine().supports(removed), "mesh 'm' is removed during the run"));
+  cases::Scene traced = scene_over_a_mesh();
+  traced.output.trace_walls.push_back({0, 1});
+  EXPECT_TRUE(mentions(offline_engine().supports(traced), "trace_walls names facet 'm.1'"));
+  // The linear law with the restitution dashpot: FrictViscoPhys' α is 3r/(3r − δ) at a facet.
+  cases::Scene linear = cases::load_case(kCanonical / "single_collision.toml");
+  linear.model.damping = "restitution";
+  linear.materials[0].restitution = 0.8;
+  const cases::Scene mesh = scene_over_a_mesh();
+  linear.meshes = mesh.meshes;
+  linear.walls = mesh.walls;
+  const auto refused = offline_engine().supports(linear);
+  EXPECT_TRUE(mentions(refused, "α = 3r/(3r − δ)")) << refused.explain();
+  // Without the dashpot the linear law maps a mesh as it is: the pair's kn and ks.
+  linear.model.damping = "none";
+  EXPECT_TRUE(offline_engine().supports(linear).supported()) << offline_engine().supports(linear).explain();
 }
 
 TEST(YadeSupport, TsujiMapsOnlyWhenTheNormalForceIsClipped) {
