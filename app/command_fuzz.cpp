@@ -84,6 +84,7 @@ FuzzResult run_scene(const studies::FuzzScene& generated, std::uint64_t seed, co
   return r;
 }
 
+/// One scene's entry of fuzz.json.
 nlohmann::json to_json(const FuzzResult& r) {
   nlohmann::json j{{"seed", r.seed},       {"name", r.scene.name},     {"model", r.scene.model},
                    {"spheres", r.scene.spheres}, {"walls", r.scene.walls}, {"mesh_facets", r.scene.facets},
@@ -210,9 +211,10 @@ int command_fuzz_matched(const std::vector<std::string>& args, const Invocation&
   const std::unique_ptr<reference::Engine> engine = reference::make_engine(code, context.programs);
   const studies::ExpressibleFilter expressible = [&](const studies::FuzzScene& draft) {
     try {
-      // A draft's mesh is read from beside its case file: one seed's drafts share a name and a
-      // thread, so they overwrite only their own files.
-      const std::filesystem::path file = write_scene(out / "cases", draft);
+      // A draft's mesh is read from beside its case file, in a scratch folder (a rejected draft's
+      // STL must not lie beside the kept case): one seed's drafts share a name and a thread, so
+      // they overwrite only their own files.
+      const std::filesystem::path file = write_scene(out / "drafts", draft);
       return engine->supports(cases::load_case_text(draft.toml, file.string(), load)).supported();
     } catch (const std::exception&) {
       return false;
@@ -235,6 +237,7 @@ int command_fuzz_matched(const std::vector<std::string>& args, const Invocation&
     for (unsigned t = 0; t < jobs; ++t) pool.emplace_back(worker);
   }
 
+  std::filesystem::remove_all(out / "drafts");
   nlohmann::json all = nlohmann::json::array();
   bool clean = true;
   for (const FuzzResult& r : results) {

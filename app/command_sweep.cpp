@@ -24,6 +24,7 @@
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
 #include "sweeps/case_override.hpp"
+#include "sweeps/stored_ensembles.hpp"
 #include "sweeps/sweep_report.hpp"
 #include "sweeps/sweep_rows.hpp"
 #include "sweeps/sweep_spec.hpp"
@@ -191,6 +192,7 @@ std::string sweep_fingerprint(const SweepPlan& plan, const std::vector<sweeps::S
       {"sweep_sha256", support::sha256_hex(plan.spec.source_text)},
       {"case_file", plan.spec.case_file.string()},
       {"case_sha256", support::sha256_hex(plan.case_text)},
+      {"mesh_sha256", sweeps::mesh_sha256(cases::load_case_text(plan.case_text, plan.spec.case_file.string()))},
       {"core_revision", kCoreRevision},
       {"engines", versions},
       {"points", plan.points.size()},

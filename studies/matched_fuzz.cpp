@@ -101,11 +101,13 @@ double distance_to_segment(const Sphere& s, const dem::Vec3& a, const dem::Vec3&
 }
 
 /// For YADE and LIGGGHTS, two scenes in five get a mesh wall under the spheres, drawn from a
-/// stream of its own (so the rest of a seed's scene is the same with or without it): a triangle
-/// 6–12 mm across tilted up to 0.5 rad, the sphere nearest its plane within a few per cent of a
-/// radius of touching, and a second triangle folded up to ±0.6 rad about one of its edges. The
-/// shared edge stays 1 mm clear of every sphere for YADE, which meets each facet on its own
-/// there (docs/engines.md, "Meshes"); LIGGGHTS' spheres may start anywhere near it. A second
+/// stream of its own (the draft's other draws are the same with or without it; a draft the mesh
+/// makes inexpressible is redrawn, so a seed's accepted scene may differ from what it was before
+/// meshes came): a triangle 6–12 mm across tilted up to 0.5 rad, the sphere nearest its plane
+/// within a few per cent of a radius of touching, and a second triangle folded up to ±0.6 rad
+/// about one of its edges. The shared edge stays kYadeMeshEdgeClearance clear of every sphere for
+/// YADE, which meets each facet on its own there (docs/engines.md, "Meshes"); LIGGGHTS' spheres
+/// may start anywhere near it. A second
 /// facet that would start overlapping a sphere is left out. The mesh takes one of the scene's
 /// `materials`. Appends the wall to the case text and the STL to the scene's files.
 void add_mesh(FuzzScene& scene, std::string& t, std::string_view code, std::uint64_t mixed,
@@ -141,7 +143,7 @@ void add_mesh(FuzzScene& scene, std::string& t, std::string_view code, std::uint
   bool second = true;
   for (const Sphere& s : spheres) {
     second = second && s.r - distance_to_triangle(s, c[1], c[0], c[3]) < 0.005 * s.r &&
-             (code != "yade" || distance_to_segment(s, c[0], c[1]) > s.r + 1e-3);
+             (code != "yade" || distance_to_segment(s, c[0], c[1]) > s.r + kYadeMeshEdgeClearance);
   }
   std::string stl = "solid fuzz\n";
   const auto facet = [&](const dem::Vec3& a, const dem::Vec3& b, const dem::Vec3& d) {

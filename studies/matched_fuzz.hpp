@@ -46,6 +46,10 @@ using ExpressibleFilter = std::function<bool(const FuzzScene&)>;
 [[nodiscard]] FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed,
                                              const ExpressibleFilter& expressible);
 
+/// How far a YADE scene's spheres start from its mesh's shared edge beyond their radius [m]:
+/// twice the fastest start (|v| ≤ √3·0.2 + 0.3 m/s) over the 2 ms run, so that none reaches it.
+inline constexpr double kYadeMeshEdgeClearance = 2.0 * 0.65 * 2.0e-3;
+
 /// Share of seeds whose scene must be expressible by the code.
 inline constexpr double kExpressibleShare = 0.8;
 /// Most drafts one seed draws.

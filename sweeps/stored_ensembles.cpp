@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "reports/markdown.hpp"
+#include "cases/case_loader.hpp"
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
 #include "sweeps/sweep_spec.hpp"
@@ -41,6 +42,16 @@ std::size_t bold_cells(const std::string& table) {
   return n;
 }
 
+}  // namespace
+
+std::map<std::string, std::string> mesh_sha256(const cases::Scene& scene) {
+  std::map<std::string, std::string> out;
+  for (const cases::MeshSpec& m : scene.meshes) out[m.file] = m.sha256;
+  return out;
+}
+
+namespace {
+
 /// Checks the stored results of one sweep against its files; fills `e` or its problem.
 void read_store(StoredEnsemble& e, const SweepSpec& spec) {
   const fs::path json_file = e.stored_dir / "sweep.json";
@@ -59,11 +70,24 @@ void read_store(StoredEnsemble& e, const SweepSpec& spec) {
   const bool bed_same = !j.contains("bed_csv_sha256") ||
                         (fs::exists(e.stored_dir / "bed.csv") &&
                          j.at("bed_csv_sha256") == support::sha256_hex(support::read_file(e.stored_dir / "bed.csv")));
-  if (!sweep_same || !case_same || !csv_same || !bed_same) {
+  // The meshes the case reads: their files' SHA-256 as stored (none stored: the case read none).
+  std::string mesh_changed;
+  if (case_same) {
+    const auto stored = j.contains("mesh_sha256") ? j.at("mesh_sha256").get<std::map<std::string, std::string>>()
+                                                  : std::map<std::string, std::string>{};
+    const auto now = mesh_sha256(cases::load_case(spec.case_file));
+    for (const auto& [file, sha] : now) {
+      const auto it = stored.find(file);
+      if (it == stored.end() || it->second != sha) mesh_changed = file;
+    }
+    if (mesh_changed.empty() && stored.size() != now.size()) mesh_changed = "a mesh file";
+  }
+  if (!sweep_same || !case_same || !csv_same || !bed_same || !mesh_changed.empty()) {
     e.problem = fmt::format("stale: {} changed since the results were stored; run `demwb refresh --sweep {}`",
-                            !sweep_same ? e.sweep_file.string()
-                                        : (!case_same ? spec.case_file.string()
-                                                      : std::string(!csv_same ? "sweep.csv" : "bed.csv")),
+                            !sweep_same         ? e.sweep_file.string()
+                            : !case_same        ? spec.case_file.string()
+                            : !mesh_changed.empty() ? mesh_changed
+                                                : std::string(!csv_same ? "sweep.csv" : "bed.csv"),
                             e.sweep_file.string());
   }
   e.comparison_table = engines_compared_table(support::read_file(report_file));

@@ -2,8 +2,11 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
+
+#include "cases/scene.hpp"
 
 namespace sweeps {
 
@@ -20,6 +23,10 @@ struct StoredEnsemble {
   std::string comparison_table;      ///< the stored report's engines-compared table (markdown)
   std::size_t beyond_two = 0;        ///< cells of that table above 2 combined standard errors
 };
+
+/// The SHA-256 of every mesh file a case reads, by the file as the case names it: stored with a
+/// sweep's results (sweep.json `mesh_sha256`) so that an edited STL makes them stale.
+[[nodiscard]] std::map<std::string, std::string> mesh_sha256(const cases::Scene& scene);
 
 /// The stored cross-code ensembles of a suite: every sweep file in `sweeps_dir` naming two or
 /// more engines, with its results in `stored_root`/<name>/. A sweep file that does not load, or

@@ -30,7 +30,6 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
 /// Why this LAMMPS cannot take a mesh wall (unmapped_wall leaves its facets to this one reason).
 [[nodiscard]] std::string unmapped_mesh(const cases::MeshSpec& mesh);
 
-
 /// The `region` arguments of a cylinder or cone wall about a coordinate axis, open at both ends
 /// and two-sided, for fix wall/gran/region, e.g. "cone z 0 0 0.006 0.015 0 0.003 side in open 1
 /// open 2 units box"; empty for any other wall.

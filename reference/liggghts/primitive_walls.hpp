@@ -55,7 +55,6 @@ std::vector<std::string> cylinder_end_reasons(const cases::Scene& scene, std::si
 /// True when the wall (or the mesh the facet belongs to) translates.
 [[nodiscard]] bool wall_moves(const cases::WallSpec& wall) noexcept;
 
-
 /// One reason per property of wall `index` the deck cannot express (any shape but an axis-aligned
 /// plane or cylinder, a moving wall, a removal during the run); none for a wall removed at t ≤ 0.
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index);

@@ -290,13 +290,20 @@ void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
   }
 }
 
+/// True when mesh `m` stands when the run starts (its facets share their removal time).
+bool mesh_in_run(const cases::Scene& scene, std::size_t m) {
+  return std::any_of(scene.walls.begin(), scene.walls.end(),
+                     [m](const cases::WallSpec& w) { return w.mesh == m && wall_in_run(w); });
+}
+
 /// Meshes under the law family and traced walls: FrictViscoPhys' dashpot scales by α = (r₁ + r₂)/(r₁ + r₂ − δ),
 /// which a facet makes 3r/(3r − δ) (Ig2_Facet_Sphere_ScGeom: r₁ = 2r); the core's
 /// `yade_frictvisco` has YADE's plane-wall 2r/(2r − δ). A traced facet contact is not written, nor
 /// a wall the script leaves out.
 void check_meshes(const cases::Scene& scene, YadeLaw law, std::vector<std::string>& reasons) {
-  for (const auto& mesh : scene.meshes) {
-    if (law == YadeLaw::frict_visco) {
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const cases::MeshSpec& mesh = scene.meshes[m];
+    if (law == YadeLaw::frict_visco && mesh_in_run(scene, m)) {
       add_reason(reasons, fmt::format("YADE driver: mesh '{}' under the restitution dashpot (FrictViscoPhys) is "
                                       "not mapped: against a facet YADE scales the dashpot by α = 3r/(3r − δ) "
                                       "(the facet's radius is 2r), the core's yade_frictvisco by a plane "
@@ -425,8 +432,7 @@ void map_mindlin_walls(const cases::Scene& scene, const dem::PairTable& table, Y
       out.pairs.push_back(copy);
     }
   }
-  const bool planes = std::any_of(scene.walls.begin(), scene.walls.end(), [](const auto& w) { return !w.mesh; });
-  if (!out.wall_materials.empty() && planes) {
+  if (out.wall_materials.size() > mesh_material.size()) {  // a plane wall's material among them
     out.conventions["wall contact radius"] =
         "Ig2_Wall_Sphere_ScGeom gives the wall the sphere's radius, so Mindlin takes R = r/2; each "
         "wall gets its own YADE material whose young and poisson make YADE's E* and G* √2 times the "
@@ -545,7 +551,7 @@ YadeModelMapping map_contact_model(const PreparedScene& prepared) {
   out.viscous = out.law == YadeLaw::frict_visco;
   check_walls(scene, out.reasons);
   check_meshes(scene, out.law, out.reasons);
-  if (!scene.meshes.empty()) {
+  if (std::any_of(scene.walls.begin(), scene.walls.end(), [](const auto& w) { return w.mesh && wall_in_run(w); })) {
     out.conventions["mesh facets"] =
         "each facet is a utils.facet of its own (Ig2_Facet_Sphere_ScGeom: the nearest point of the "
         "triangle — face, edge or corner — and the contact point x − (r − δ/2) n, its velocity without "
@@ -560,13 +566,14 @@ YadeModelMapping map_contact_model(const PreparedScene& prepared) {
     // The per-step Python force acts between spheres only: a wall may take part only when its
     // material pairs with every particle material without cohesion (k_c = 0).
     for (const auto& w : scene.walls) {
+      if (!wall_in_run(w)) continue;
       bool cohesive_wall = false;
       for (std::size_t m = 0; m < n; ++m) {
         const auto* linear = std::get_if<dem::LinearCohesion>(&table->law(m, w.material).cohesion);
         cohesive_wall = cohesive_wall || (particle_material[m] && linear != nullptr && linear->stiffness != 0.0);
       }
       if (cohesive_wall) {
-        add_reason(out.reasons, "YADE driver: linear cohesion against plane walls is not mapped (the "
+        add_reason(out.reasons, "YADE driver: linear cohesion against walls is not mapped (the "
                                 "per-step Python force handles sphere pairs only; give the wall a "
                                 "material with cohesive_stiffness = 0)");
       }

@@ -77,8 +77,7 @@ struct YadeModelMapping {
 };
 
 /// Maps the scene's contact model (one small function per slot), its plane walls and its
-/// meshes. Never
-/// throws: a model the core cannot build gives a reason.
+/// meshes. Never throws: a model the core cannot build gives a reason.
 YadeModelMapping map_contact_model(const PreparedScene& prepared);
 
 /// Pair damping ratio YADE forms from two FrictViscoMat.betan values (Ip2_FrictViscoMat_…:

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "dem/contact/laws/linear_dashpot.hpp"
+#include "reference/common/wall_in_run.hpp"
 #include "reference/yade/output_parser.hpp"
 #include "reference/yade/python_literals.hpp"
 
@@ -39,8 +40,10 @@ std::optional<YadeCalibrationPlan> plan_calibration(const cases::Scene& scene,
   cases::Vector3 partner_velocity{};  // a wall is immobile
   if (const auto& wc = scene.compare.wall_contact) {
     if (wc->first >= ps.size() || wc->second >= scene.walls.size()) return std::nullopt;
+    if (!wall_in_run(scene.walls[wc->second])) return std::nullopt;  // never met in the run
     plan.particle = wc->first;
     plan.partner_wall = wc->second;
+    for (std::size_t k = 0; k < wc->second; ++k) plan.partner_wall_entry += wall_in_run(scene.walls[k]) ? 1 : 0;
     partner_material = scene.walls[wc->second].material;
     n = scene.walls[wc->second].normal;
   } else if (const auto& pair = scene.compare.pair) {
@@ -93,7 +96,7 @@ std::string write_calibration_block(const YadeCalibrationPlan& plan) {
                  "partner_wall={}, normal={}, max_steps={})\n",
                  plan.material, py_float(plan.target), py_float(plan.start), plan.particle,
                  plan.partner_particle ? std::to_string(*plan.partner_particle) : "None",
-                 plan.partner_wall ? std::to_string(*plan.partner_wall) : "None",
+                 plan.partner_wall ? std::to_string(plan.partner_wall_entry) : "None",
                  py_vector3(plan.normal), plan.max_steps);
   s += "CAL_PAIRS = (";
   for (const auto& [a, b] : plan.pairs) fmt::format_to(out, "({}, {}), ", a, b);

@@ -26,7 +26,8 @@ struct YadeCalibrationPlan {
   double start = 0.0;             ///< β(ε)/2, the textbook value and first secant point
   std::size_t particle = 0;       ///< the case's compared particle (body id in the trial)
   std::optional<std::size_t> partner_particle;  ///< the sphere partner, or
-  std::optional<std::size_t> partner_wall;      ///< the wall partner
+  std::optional<std::size_t> partner_wall;      ///< the wall partner (scene wall index)
+  std::size_t partner_wall_entry = 0;  ///< its place in the script's WALLS (walls gone before the run are left out)
   std::array<double, 3> normal{};  ///< contact normal (from partner to particle) at the start
   std::uint64_t max_steps = 0;     ///< steps of one trial at most (the case's)
   std::vector<std::pair<std::size_t, std::size_t>> pairs;  ///< material pairs of the KN MatchMaker

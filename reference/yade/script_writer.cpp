@@ -181,6 +181,17 @@ std::size_t wall_body(const cases::Scene& scene, std::size_t k) {
   return body;
 }
 
+/// "position, axis, sense" of plane wall k for utils.wall (its position along its axis). Throws
+/// for any other wall: supports() refuses a scene with one first.
+std::string plane_arguments(const cases::WallSpec& w, std::size_t k) {
+  const WallAxis a = wall_axis(w.normal);
+  if (a.axis < 0 || w.shape != dem::WallShape::plane) {
+    throw std::invalid_argument(
+        fmt::format("walls[{}]: the YADE driver writes axis-aligned plane walls and mesh facets only", k));
+  }
+  return fmt::format("{}, {}, {}", py_float(w.point[static_cast<std::size_t>(a.axis)]), a.axis, a.sense);
+}
+
 /// Plane walls as utils.wall bodies after the particles (body id = particle count + the wall's
 /// place among the walls in the run: wall_body), in the layout of a scene without meshes (its
 /// input fingerprint unchanged since meshes came).
@@ -192,12 +203,8 @@ void write_plane_walls(std::string& s, const cases::Scene& scene, const YadeRunP
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
     const auto& w = scene.walls[k];
     if (!wall_in_run(w)) continue;  // removed at t ≤ 0: not in the run
-    const WallAxis a = wall_axis(w.normal);
-    if (a.axis < 0) {  // utils.wall is axis-aligned; supports() refuses such a scene first
-      throw std::invalid_argument(fmt::format("walls[{}]: the YADE driver writes axis-aligned plane walls only", k));
-    }
-    fmt::format_to(out, "    ({}, {}, {}, {}),\n", py_float(w.point[static_cast<std::size_t>(a.axis)]),
-                   a.axis, a.sense, k < plan.model.wall_material_ids.size() ? plan.model.wall_material_ids[k] : w.material);
+    fmt::format_to(out, "    ({}, {}),\n", plane_arguments(w, k),
+                   k < plan.model.wall_material_ids.size() ? plan.model.wall_material_ids[k] : w.material);
   }
   s += "]\n"
        "def _append_walls():\n"
@@ -216,9 +223,9 @@ void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& p
     return;
   }
   auto out = std::back_inserter(s);
-  s += "# Walls, body id = len(PARTICLES) + wall index: ('plane', (position along the axis, axis,\n"
-       "# sense), material) with sense = +1/-1: only the side the case's normal points to interacts;\n"
-       "# ('facet', (corner, corner, corner), material): one triangle of a mesh, two-sided.\n"
+  s += "# Walls in the run, body id = len(PARTICLES) + place in this list: ('plane', (position along\n"
+       "# the axis, axis, sense), material) with sense = +1/-1: only the side the case's normal points\n"
+       "# to interacts; ('facet', (corner, corner, corner), material): one triangle of a mesh, two-sided.\n"
        "WALLS = [\n";
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
     const auto& w = scene.walls[k];
@@ -229,13 +236,7 @@ void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& p
                      py_vector3(w.corners[2]), material);
       continue;
     }
-    const WallAxis a = wall_axis(w.normal);
-    if (a.axis < 0 || w.shape != dem::WallShape::plane) {  // supports() refuses such a scene first
-      throw std::invalid_argument(
-          fmt::format("walls[{}]: the YADE driver writes axis-aligned plane walls and mesh facets only", k));
-    }
-    fmt::format_to(out, "    ('plane', ({}, {}, {}), {}),\n", py_float(w.point[static_cast<std::size_t>(a.axis)]),
-                   a.axis, a.sense, material);
+    fmt::format_to(out, "    ('plane', ({}), {}),\n", plane_arguments(w, k), material);
   }
   s += "]\n"
        "PLANES = {k: shape for k, (kind, shape, _) in enumerate(WALLS) if kind == 'plane'}\n"
@@ -250,6 +251,7 @@ void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& p
        "_append_walls()\n\n";
 }
 
+/// The particles as utils.sphere bodies (body id = scene index) with the workbench's mass and inertia.
 void write_particles(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   auto out = std::back_inserter(s);
   s += "# Particles, body id = scene index: (radius, material, position, velocity taken as v(-DT/2),\n"
@@ -279,6 +281,7 @@ void write_particles(std::string& s, const cases::Scene& scene, const YadeRunPla
        "_append_particles()\n\n";
 }
 
+/// The trace and snapshot recorders (what a trace row reads of YADE, and when).
 void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   auto out = std::back_inserter(s);
   fmt::format_to(out, "TRACED_PARTICLES = [{}]\n",
@@ -318,7 +321,8 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "        overlap = I.geom.penetrationDepth\n"
        "        return [overlap, I.phys.normalForce.dot(I.geom.normal) if overlap >= 0 else 0.0]\n"
        ;
-  // A scene with meshes lists every wall with its kind; PLANES maps a plane's wall index to its shape.
+  // A scene with meshes lists every wall in the run with its kind; PLANES maps a plane's place in
+  // WALLS to its shape.
   s += scene.meshes.empty() ? "    position, axis, sense, _ = WALLS[w - len(PARTICLES)]\n"
                             : "    position, axis, sense = PLANES[w - len(PARTICLES)]\n";
   s +=
@@ -346,6 +350,7 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "        _snapshots.write(','.join('%.17g' % v for v in values) + '\\n')\n\n";
 }
 
+/// O.engines in YADE's loop order, and the run with its snapshots.
 void write_engines_and_run(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   const bool facets = !scene.meshes.empty();
   s += "O.engines = [\n"

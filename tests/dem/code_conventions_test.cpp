@@ -71,6 +71,16 @@ TEST(YadeIncident, AgainstAMeshFacetIsTheContactPointVelocityWithoutAlpha) {
   const Vec3 expected = at_point - at_point.dot(n) * n;
   EXPECT_LT((g.tangential_velocity - expected).norm(), 1e-15 * expected.norm());
   EXPECT_DOUBLE_EQ(g.branch_p.z(), -(r - 0.5 * delta));
+  // Off the facet's edge y = 0 (the centre 0.3r beyond it): the edge contact takes the same rule,
+  // along its own normal from the nearest point of the edge.
+  dem::SphereState q = p;
+  q.position = Vec3(0.004, -0.3 * r, 0.95 * r - delta);
+  const dem::ContactGeometry edge = dem::wall_geometry(q, facet, 0.0, dem::WallLeverArm::yade_incident);
+  ASSERT_GT(edge.overlap, 0.0);
+  ASSERT_GT(std::abs(edge.normal.y()), 0.1);  // not the face's normal
+  const Vec3 at_edge = q.velocity + q.angular_velocity.cross(-(r - 0.5 * edge.overlap) * edge.normal);
+  const Vec3 expected_edge = at_edge - at_edge.dot(edge.normal) * edge.normal;
+  EXPECT_LT((edge.tangential_velocity - expected_edge).norm(), 1e-15 * expected_edge.norm());
   // The same sphere on a plane wall takes YADE's α-scaled rule, which differs.
   const dem::ContactGeometry plane = dem::wall_geometry(p, dem::Wall{Vec3::Zero(), Vec3::UnitZ()}, 0.0,
                                                         dem::WallLeverArm::yade_incident);

@@ -16,6 +16,7 @@
 
 #include "compare/metrics.hpp"
 #include "lammps_test_support.hpp"
+#include "mesh_test_support.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 #include "reference/liggghts/atom_types.hpp"
 #include "reference/liggghts/liggghts_engine.hpp"
@@ -25,6 +26,7 @@
 namespace liggghts_engine_test {
 
 using demwb_lammps_test::canonical;
+using demwb_mesh_test::column_gap;
 
 bool liggghts_installed() { return support::find_program("liggghts").has_value(); }
 
@@ -236,21 +238,6 @@ friction = 0.3
 tangential_damping_ratio = 0.0
 )";
 
-/// The largest difference between two runs' values of trace column `name`, and the largest
-/// magnitude of the second run's.
-std::pair<double, double> column_gap(const cases::RunResult& a, const cases::RunResult& b, const std::string& name) {
-  const std::vector<double>& x = *a.trace.column(name);
-  const std::vector<double>& y = *b.trace.column(name);
-  EXPECT_EQ(x.size(), y.size()) << name;
-  double worst = 0.0;
-  double scale = 0.0;
-  for (std::size_t r = 0; r < std::min(x.size(), y.size()); ++r) {
-    worst = std::max(worst, std::abs(x[r] - y[r]));
-    scale = std::max(scale, std::abs(y[r]));
-  }
-  return {worst, scale};
-}
-
 /// Three glass spheres in a drum (a z cylinder on a floor) under a horizontal rod (an x cylinder):
 /// two slide and spin into the drum's wall from inside, one falls onto the rod from outside.
 cases::Scene drum_and_rod() {
@@ -337,32 +324,6 @@ TEST(LiggghtsWalls, PrimitiveCylindersInsideAndOutsideAreTheCoresCylindersAtRoun
   EXPECT_GT(*std::min_element(z2.begin(), z2.end()), 0.006 + 0.0005 + 0.0008 - 1e-4);
 }
 
-/// A flat floor over [−10, 10] mm² at z = 0 as an ASCII STL of 32 triangles: a 4 × 4 grid of
-/// squares, each cut along alternating diagonals (seams in three directions).
-std::string floor_stl() {
-  std::string stl = "solid floor\n";
-  const auto vertex = [&](double x, double y) { stl += fmt::format("      vertex {:.17g} {:.17g} 0\n", x, y); };
-  const auto facet = [&](std::array<std::array<double, 2>, 3> c) {
-    stl += "  facet normal 0 0 1\n    outer loop\n";
-    for (const auto& p : c) vertex(p[0], p[1]);
-    stl += "    endloop\n  endfacet\n";
-  };
-  const double h = 0.005;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) {
-      const double x0 = -0.01 + h * i, y0 = -0.01 + h * j, x1 = x0 + h, y1 = y0 + h;
-      if ((i + j) % 2 == 0) {
-        facet({{{x0, y0}, {x1, y0}, {x1, y1}}});
-        facet({{{x0, y0}, {x1, y1}, {x0, y1}}});
-      } else {
-        facet({{{x0, y0}, {x1, y0}, {x0, y1}}});
-        facet({{{x1, y0}, {x1, y1}, {x0, y1}}});
-      }
-    }
-  }
-  return stl + "endsolid floor\n";
-}
-
 /// A roof beside the floor: two slopes of two triangles each meeting at a ridge along y at
 /// x = 20 mm, z = 3 mm, over x in [15, 25] mm and y in [−5, 5] mm.
 std::string roof_stl() {
@@ -383,7 +344,7 @@ TEST(LiggghtsWalls, SpheresOverAMeshFloorsSeamsAndOntoARidgeAreTheCoresAtRoundOf
   if (!liggghts_installed()) GTEST_SKIP() << "liggghts not installed";
   const std::filesystem::path dir = scratch("mesh-floor").work_dir;
   std::filesystem::create_directories(dir);
-  support::write_file(dir / "floor.stl", floor_stl());
+  support::write_file(dir / "floor.stl", demwb_mesh_test::flat_floor_stl());
   support::write_file(dir / "roof.stl", roof_stl());
   const std::string text = R"([case]
 name = "mesh_floor"

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "mesh_test_support.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 #include "reference/matching.hpp"
 #include "support/text_file.hpp"
@@ -19,6 +20,7 @@
 namespace yade_mesh_test {
 
 using namespace demwb_yade_test;
+using demwb_mesh_test::column_gap;
 
 /// Hertz–Mindlin glass with friction in YADE's form (clipped normal force, incremental shear).
 constexpr std::string_view kGlass = R"([model]
@@ -47,31 +49,6 @@ constexpr std::string_view kPlateStl = R"(solid plate
   endfacet
 endsolid plate
 )";
-
-/// A flat floor over [−10, 10] mm² at z = 0: a 4 × 4 grid of squares, each cut along alternating
-/// diagonals.
-std::string floor_stl() {
-  std::string stl = "solid floor\n";
-  const auto facet = [&](std::array<std::array<double, 2>, 3> c) {
-    stl += "  facet normal 0 0 1\n    outer loop\n";
-    for (const auto& p : c) stl += fmt::format("      vertex {:.17g} {:.17g} 0\n", p[0], p[1]);
-    stl += "    endloop\n  endfacet\n";
-  };
-  const double h = 0.005;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) {
-      const double x0 = -0.01 + h * i, y0 = -0.01 + h * j, x1 = x0 + h, y1 = y0 + h;
-      if ((i + j) % 2 == 0) {
-        facet({{{x0, y0}, {x1, y0}, {x1, y1}}});
-        facet({{{x0, y0}, {x1, y1}, {x0, y1}}});
-      } else {
-        facet({{{x0, y0}, {x1, y0}, {x0, y1}}});
-        facet({{{x1, y0}, {x1, y1}, {x0, y1}}});
-      }
-    }
-  }
-  return stl + "endsolid floor\n";
-}
 
 /// A case of `particles` over the mesh in `stl`, written with the STL into a scratch folder.
 cases::Scene mesh_case(const std::string& name, std::string_view stl, const std::string& particles, double duration) {
@@ -112,17 +89,6 @@ angular_velocity = [{}, {}, {}]
                      r, x[0], x[1], x[2], v[0], v[1], v[2], w[0], w[1], w[2]);
 }
 
-/// The largest difference between two runs' values of trace column `name`, and the largest
-/// magnitude of the second run's.
-std::pair<double, double> column_gap(const cases::RunResult& a, const cases::RunResult& b, const std::string& name) {
-  const std::vector<double>& x = *a.trace.column(name);
-  const std::vector<double>& y = *b.trace.column(name);
-  EXPECT_EQ(x.size(), y.size()) << name;
-  double worst = 0.0;
-  for (std::size_t k = 0; k < std::min(x.size(), y.size()); ++k) worst = std::max(worst, std::abs(x[k] - y[k]));
-  return {worst, max_abs(y)};
-}
-
 /// YADE and the core in YADE's numerics on `scene`.
 std::pair<cases::RunResult, cases::RunResult> run_both(const cases::Scene& scene, const std::string& name) {
   EXPECT_TRUE(reference::YadeEngine{}.supports(scene).supported()) << reference::YadeEngine{}.supports(scene).explain();
@@ -147,12 +113,13 @@ TEST(YadeMeshes, SpheresOnAFacetsFaceOverItsEdgeAndOntoItsCornerAreTheMatchedCor
   ASSERT_EQ(yade.status, cases::RunStatus::ok);
   // Measured: positions 6e-17 m, velocities 2e-14 m/s, spins 1e-11 rad/s of 225. The Mindlin
   // stiffness against a facet comes from the compensated material (YADE's R = 2r/3).
+  // Forces: 2e-18 N of 2e-2 (the contact forces with gravity, F(x(n)) of each row).
   for (int p = 0; p < 4; ++p) {
-    for (const char* q : {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz"}) {
+    for (const char* q : {"x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz", "fx", "fy", "fz"}) {
       const std::string column = fmt::format("p{}.{}", p, q);
       const auto [worst, scale] = column_gap(core, yade, column);
-      const double tolerance = q[0] == 'w' ? 1e-12 * scale : (q[0] == 'v' ? 1e-12 * scale : 1e-15);
-      EXPECT_LE(worst, tolerance) << column;
+      const bool position = q[1] == '\0';
+      EXPECT_LE(worst, position ? 1e-15 : 1e-12 * scale) << column;
     }
   }
   // The contacts happened: friction spun the first sphere up about x and y, the third rose off
@@ -178,7 +145,7 @@ TEST(YadeMeshes, OverAFloorsSeamsYadePushesWithEveryFacetInReachAsItsConventions
                                 sphere(0.0008, {0.004, 0.003, 0.0009}, {-0.2, 0.45, -0.05}, {60.0, 0.0, 0.0}) +
                                 sphere(0.0008, {-0.0085, 0.006, 0.003}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}) +
                                 sphere(0.0008, {0.0075, -0.0075, 0.003}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0});
-  const cases::Scene scene = mesh_case("floor", floor_stl(), particles, 0.01);
+  const cases::Scene scene = mesh_case("floor", demwb_mesh_test::flat_floor_stl(), particles, 0.01);
   const auto [core, yade] = run_both(scene, "floor");
   ASSERT_EQ(yade.status, cases::RunStatus::ok);
   EXPECT_GT(column_gap(core, yade, "p0.z").first, 1e-5);  // measured 1.7e-4 m

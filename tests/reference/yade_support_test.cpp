@@ -219,15 +219,51 @@ TEST(YadeSupport, AWallRemovedBeforeTheRunIsLeftOutAndTheBodyIdsCloseUp) {
   ASSERT_TRUE(offline_engine().supports(scene).supported()) << offline_engine().supports(scene).explain();
   const std::string script =
       reference::yade::write_yade_script(scene, reference::yade::make_run_plan(reference::PreparedScene(scene)));
-  EXPECT_EQ(script.find("shutter"), std::string::npos);
+  // Three walls in WALLS: the two facets and the floor; the disc is not among them.
+  std::size_t entries = 0;
+  for (const char* kind : {"    ('facet', ", "    ('plane', "}) {
+    for (auto at = script.find(kind); at != std::string::npos; at = script.find(kind, at + 1)) ++entries;
+  }
+  EXPECT_EQ(entries, 3U);
   EXPECT_NE(script.find(fmt::format("TRACED_WALLS = [(0, {})]", scene.particles.size() + 2)), std::string::npos);
   EXPECT_NE(script.find("('plane', (-0.03, 2, 1), "), std::string::npos);
+  // Without the mesh the plane-only layout: the floor is body n + 0 and the first WALLS entry.
+  cases::Scene planes = scene;
+  planes.meshes.clear();
+  planes.walls = {scene.walls.front(), scene.walls.back()};
+  planes.output.trace_walls = {{0, 1}};
+  ASSERT_TRUE(offline_engine().supports(planes).supported()) << offline_engine().supports(planes).explain();
+  const std::string plane_script =
+      reference::yade::write_yade_script(planes, reference::yade::make_run_plan(reference::PreparedScene(planes)));
+  EXPECT_NE(plane_script.find(fmt::format("TRACED_WALLS = [(0, {})]", planes.particles.size())), std::string::npos);
+  EXPECT_NE(plane_script.find("WALLS = [\n    (-0.03, 2, 1, "), std::string::npos);
+  EXPECT_NE(plane_script.find("    position, axis, sense, _ = WALLS[w - len(PARTICLES)]"), std::string::npos);
   // Removed later, the disc is in the run and not mapped; tracing the one removed at 0 is refused.
   scene.walls[0].removed_at = 0.01;
   EXPECT_TRUE(mentions(offline_engine().supports(scene), "'shutter' is a disc"));
   scene.walls[0].removed_at = 0.0;
   scene.output.trace_walls = {{0, 0}};
   EXPECT_TRUE(mentions(offline_engine().supports(scene), "names wall 'shutter', which is removed before the run"));
+}
+
+TEST(YadeSupport, TheRestitutionCalibrationFindsItsWallAmongTheWallsInTheRun) {
+  // The oblique wall impact (restitution dashpot, compare.wall_contact = [0, 0]) with a shutter
+  // removed at t = 0 put before its floor: the calibration's two-body run takes WALLS[0], the
+  // floor, not the scene index 1.
+  cases::Scene scene = cases::load_case(kCanonical / "oblique_wall_impact.toml");
+  cases::WallSpec shutter = scene.walls[0];
+  shutter.name = "shutter";
+  shutter.removed_at = 0.0;
+  scene.walls.insert(scene.walls.begin(), shutter);
+  scene.compare.wall_contact = cases::ParticlePair{0, 1};
+  scene.output.trace_walls = {{0, 1}};
+  const auto plan = reference::yade::make_run_plan(reference::PreparedScene(scene));
+  ASSERT_TRUE(plan.calibration.has_value());
+  EXPECT_EQ(plan.calibration->partner_wall, 1U);
+  EXPECT_EQ(plan.calibration->partner_wall_entry, 0U);
+  const std::string script = reference::yade::write_yade_script(scene, plan);
+  EXPECT_NE(script.find("partner_wall=0,"), std::string::npos);
+  EXPECT_NE(script.find(fmt::format("TRACED_WALLS = [(0, {})]", scene.particles.size())), std::string::npos);
 }
 
 TEST(YadeSupport, AMovingOrRemovedMeshATracedFacetAndTheRestitutionDashpotAreRefused) {
@@ -374,7 +410,7 @@ TEST(YadeSupport, LinearAgglomerateWithANonCohesiveWallIsMappedWithYadesFriction
 
 TEST(YadeSupport, LinearCohesionAgainstACohesiveWallIsRefused) {
   const auto s = offline_engine().supports(cases::load_case(kCanonical / "agglomerate_linear.toml"));
-  EXPECT_TRUE(mentions(s, "linear cohesion against plane walls is not mapped")) << s.explain();
+  EXPECT_TRUE(mentions(s, "linear cohesion against walls is not mapped")) << s.explain();
 }
 
 TEST(YadeSupport, TotalFrictionBasisWithPythonCohesionIsFlagged) {

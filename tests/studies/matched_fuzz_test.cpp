@@ -93,11 +93,14 @@ TEST(MatchedFuzz, EveryGeneratedCaseLoadsAndEveryRowIsDrawn) {
         ++meshes[code];
         EXPECT_EQ(scene.meshes[0].facets, static_cast<std::size_t>(s.facets));
       }
-      // YADE's folded meshes keep their shared edge 1 mm clear of every sphere at the start.
+      // The STL is the file the case names, and only a scene with a mesh has one.
+      EXPECT_EQ(s.files.size(), s.facets > 0 ? 1U : 0U);
+      if (s.facets > 0) EXPECT_EQ(scene.meshes[0].file, s.files[0].first);
+      // YADE's folded meshes keep their shared edge clear of every sphere at the start.
       if (std::string(code) == "yade" && s.facets == 2) {
         const auto& corners = scene.walls.back().corners;  // the second facet: (c1, c0, c3)
         for (const auto& p : scene.particles) {
-          EXPECT_GT(segment_distance(p.position, corners[0], corners[1]), p.radius + 1e-3);
+          EXPECT_GT(segment_distance(p.position, corners[0], corners[1]), p.radius + studies::kYadeMeshEdgeClearance);
         }
       }
       EXPECT_EQ(scene.compare.matched, std::vector<std::string>{code});

@@ -4,13 +4,16 @@
 // results were stored, when the stored sweep.csv is not the one fingerprinted, or when a
 // committed sweep has no stored results: run `demwb refresh --sweep FILE` (scripts/refresh-sweeps.sh runs them all).
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cases/case_loader.hpp"
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
+#include "sweeps/stored_ensembles.hpp"
 #include "sweeps/sweep_spec.hpp"
 
 namespace committed_sweeps_test {
@@ -37,6 +40,12 @@ TEST(CommittedSweeps, EverySweepHasResultsFingerprintedByItsCurrentFiles) {
         << "the sweep file changed since its results were stored: demwb refresh --sweep " << sweep_file;
     EXPECT_EQ(j.at("case_sha256"), support::sha256_hex(support::read_file(spec.case_file)))
         << spec.case_file << " changed since the sweep's results were stored: demwb refresh --sweep " << sweep_file;
+    // The meshes the case reads, by their files' bytes (a sweep stored before meshes has none).
+    const auto meshes = sweeps::mesh_sha256(cases::load_case(spec.case_file));
+    const auto stored_meshes = j.contains("mesh_sha256") ? j.at("mesh_sha256").get<std::map<std::string, std::string>>()
+                                                         : std::map<std::string, std::string>{};
+    EXPECT_EQ(stored_meshes, meshes) << "a mesh file of " << spec.case_file
+                                     << " changed since the sweep's results were stored: demwb refresh --sweep " << sweep_file;
     const std::string csv = support::read_file(stored / "sweep.csv");
     EXPECT_EQ(j.at("sweep_csv_sha256"), support::sha256_hex(csv)) << "sweep.csv is not the fingerprinted one";
     EXPECT_EQ(j.at("rows_not_ok"), 0) << "stored results with failed runs";
