@@ -64,7 +64,7 @@ std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t 
     case dem::WallShape::triangle:
       return reasons;  // a mesh's facets: one reason for the whole mesh (unmapped_mesh)
   }
-  if (wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0) {
+  if (wall_moves(wall)) {
     reasons.push_back(fmt::format(
         "LAMMPS driver: wall {} ('{}') moves; fix wall/gran moves walls only by `wiggle` or "
         "`shear`, not at a constant normal velocity",

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cases/scene.hpp"
-#include "reference/common/wall_in_run.hpp"
+#include "reference/common/wall_state.hpp"
 
 namespace reference::lammps {
 

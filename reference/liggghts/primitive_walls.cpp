@@ -82,10 +82,6 @@ const cases::WallSpec* first_facet(const cases::Scene& scene, std::size_t mesh) 
   return nullptr;
 }
 
-bool wall_moves(const cases::WallSpec& wall) noexcept {
-  return wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0;
-}
-
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index) {
   std::vector<std::string> reasons;
   if (!wall_in_run(wall)) return reasons;

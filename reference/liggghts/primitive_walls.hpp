@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cases/scene.hpp"
-#include "reference/common/wall_in_run.hpp"
+#include "reference/common/wall_state.hpp"
 
 namespace reference::liggghts {
 
@@ -51,9 +51,6 @@ std::vector<std::string> cylinder_end_reasons(const cases::Scene& scene, std::si
 /// The first facet wall of mesh `mesh` (the facets share its motion, removal and material), or
 /// null when it has none.
 [[nodiscard]] const cases::WallSpec* first_facet(const cases::Scene& scene, std::size_t mesh) noexcept;
-
-/// True when the wall (or the mesh the facet belongs to) translates.
-[[nodiscard]] bool wall_moves(const cases::WallSpec& wall) noexcept;
 
 /// One reason per property of wall `index` the deck cannot express (any shape but an axis-aligned
 /// plane or cylinder, a moving wall, a removal during the run); none for a wall removed at t ≤ 0.

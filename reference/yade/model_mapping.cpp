@@ -11,7 +11,7 @@
 
 #include "dem/contact/pair_table.hpp"
 #include "dem/core/model_error.hpp"
-#include "reference/common/wall_in_run.hpp"
+#include "reference/common/wall_state.hpp"
 
 namespace reference::yade {
 namespace {
@@ -266,7 +266,7 @@ void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
       if (w.removed_at) {
         add_reason(reasons, fmt::format("YADE driver: mesh '{}' is removed during the run; that is not mapped", mesh));
       }
-      if (w.velocity[0] != 0.0 || w.velocity[1] != 0.0 || w.velocity[2] != 0.0) {
+      if (wall_moves(w)) {
         add_reason(reasons, fmt::format("YADE driver: moving mesh '{}' is not mapped", mesh));
       }
       continue;
@@ -284,7 +284,7 @@ void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
       add_reason(reasons, fmt::format("YADE driver: wall '{}' is not normal to a coordinate axis "
                                       "(utils.wall is axis-aligned)", w.name));
     }
-    if (w.velocity[0] != 0.0 || w.velocity[1] != 0.0 || w.velocity[2] != 0.0) {
+    if (wall_moves(w)) {
       add_reason(reasons, fmt::format("YADE driver: moving wall '{}' is not mapped", w.name));
     }
   }

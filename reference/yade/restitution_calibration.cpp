@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "dem/contact/laws/linear_dashpot.hpp"
-#include "reference/common/wall_in_run.hpp"
+#include "reference/common/wall_state.hpp"
 #include "reference/yade/output_parser.hpp"
 #include "reference/yade/python_literals.hpp"
 

@@ -10,7 +10,7 @@
 #include "cases/trace.hpp"
 #include "dem/contact/wall.hpp"
 #include "reference/common/core_setup.hpp"
-#include "reference/common/wall_in_run.hpp"
+#include "reference/common/wall_state.hpp"
 #include "cases/time_step.hpp"
 
 namespace reference::yade {

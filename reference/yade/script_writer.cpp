@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "dem/particles/particles.hpp"
-#include "reference/common/wall_in_run.hpp"
+#include "reference/common/wall_state.hpp"
 #include "reference/yade/python_literals.hpp"
 #include "reference/yade/restitution_calibration.hpp"
 

@@ -11,4 +11,9 @@ namespace reference {
   return !wall.removed_at || *wall.removed_at > 0.0;
 }
 
+/// True when the wall (or the mesh a facet belongs to) translates.
+[[nodiscard]] inline bool wall_moves(const cases::WallSpec& wall) noexcept {
+  return wall.velocity[0] != 0.0 || wall.velocity[1] != 0.0 || wall.velocity[2] != 0.0;
+}
+
 }  // namespace reference
