@@ -95,7 +95,9 @@ TEST(MatchedFuzz, EveryGeneratedCaseLoadsAndEveryRowIsDrawn) {
       }
       // The STL is the file the case names, and only a scene with a mesh has one.
       EXPECT_EQ(s.files.size(), s.facets > 0 ? 1U : 0U);
-      if (s.facets > 0) EXPECT_EQ(scene.meshes[0].file, s.files[0].first);
+      if (s.facets > 0) {
+        EXPECT_EQ(scene.meshes[0].file, s.files[0].first);
+      }
       // YADE's folded meshes keep their shared edge clear of every sphere at the start.
       if (std::string(code) == "yade" && s.facets == 2) {
         const auto& corners = scene.walls.back().corners;  // the second facet: (c1, c0, c3)
