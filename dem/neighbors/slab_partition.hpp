@@ -21,8 +21,8 @@ namespace dem {
 class SlabPartition {
  public:
   /// Slabs of width ≥ `min_width` along the longest axis of the spheres' extent (the box length
-  /// along a periodic axis). Fewer than two slabs (four along a periodic axis, an even number
-  /// there) make one slab.
+  /// along a periodic axis), at most one per sphere. Fewer than two slabs (four along a periodic
+  /// axis, an even number there) make one slab.
   void assign(std::span<const PackedSphere> spheres, const Vec3& lo, const Vec3& hi,
               const PeriodicBox& box, double min_width);
 
