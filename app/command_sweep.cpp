@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <future>
+#include <map>
 #include <optional>
 
 #include <fmt/format.h>
@@ -81,6 +82,7 @@ sweeps::SweepRun run_job(const sweeps::SweepSpec& spec, const sweeps::SweepPoint
 struct SweepPlan {
   sweeps::SweepSpec spec;
   std::string case_text;
+  std::map<std::string, std::string> mesh_sha256;  ///< the STL files the base case reads (sweeps::mesh_sha256)
   std::vector<std::string> engines;
   std::vector<std::string> metrics;
   std::vector<sweeps::SweepPoint> points;
@@ -192,7 +194,7 @@ std::string sweep_fingerprint(const SweepPlan& plan, const std::vector<sweeps::S
       {"sweep_sha256", support::sha256_hex(plan.spec.source_text)},
       {"case_file", plan.spec.case_file.string()},
       {"case_sha256", support::sha256_hex(plan.case_text)},
-      {"mesh_sha256", sweeps::mesh_sha256(cases::load_case_text(plan.case_text, plan.spec.case_file.string()))},
+      {"mesh_sha256", plan.mesh_sha256},
       {"core_revision", kCoreRevision},
       {"engines", versions},
       {"points", plan.points.size()},
@@ -233,6 +235,7 @@ int sweep(const std::vector<std::string>& args, const Invocation& inv, const ran
         sweeps::override_case(plan.case_text, plan.spec.case_file.string(), {}, std::nullopt, plan.spec.fixed),
         plan.spec.case_file.string(), load_options(*vm));
   }
+  plan.mesh_sha256 = sweeps::mesh_sha256(base);
   plan.engines = plan.spec.engines.empty() ? base.compare.engines : plan.spec.engines;
   if (vm->count("engines") != 0) plan.engines = split_names({(*vm)["engines"].as<std::string>()});
   for (const auto& e : plan.engines) {

@@ -310,17 +310,18 @@ FuzzScene draft(std::string_view code, std::uint64_t seed, int k) {
   const double l = std::sqrt(lx * lx + ly * ly + lz * lz);
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const Sphere& s = spheres[i];
-    const double approach = i == 0 ? 0.3 / l : (i == 1 ? -0.3 / l : 0.0);
+    const double approach = i == 0 ? kFuzzApproach / l : (i == 1 ? -kFuzzApproach / l : 0.0);
     t += fmt::format("[[particles]]\nradius = {:.17g}\nmaterial = \"m{}\"\nposition = {}\nvelocity = {}\nangular_velocity = {}\n\n",
                      s.r, s.material, vec(s.x, s.y, s.z),
-                     vec(uniform(-0.2, 0.2) + approach * lx, uniform(-0.2, 0.2) + approach * ly,
-                         uniform(-0.2, 0.2) + approach * lz),
+                     vec(uniform(-kFuzzSpeed, kFuzzSpeed) + approach * lx, uniform(-kFuzzSpeed, kFuzzSpeed) + approach * ly,
+                         uniform(-kFuzzSpeed, kFuzzSpeed) + approach * lz),
                      vec(uniform(-200.0, 200.0), uniform(-200.0, 200.0), uniform(-200.0, 200.0)));
   }
 
   scene.gravity = unit(rng) < 0.5;
   if (scene.gravity) t += "[fields]\ngravity = [0.0, 0.0, -9.81]\n\n";
-  t += "[integration]\nscheme = \"velocity_verlet\"\ntimestep = \"auto\"\nduration = 2.0e-3\nrotation = true\n\n";
+  t += fmt::format("[integration]\nscheme = \"velocity_verlet\"\ntimestep = \"auto\"\nduration = {}\nrotation = true\n\n",
+                   kFuzzDuration);
   t += "[output]\ntrace_every = 5\n\n";
   t += fmt::format("[compare]\nengines = [\"{0}\"]\nmatched = [\"{0}\"]\nmetrics = []\npair = [0, 1]\n", code);
   scene.toml = std::move(t);

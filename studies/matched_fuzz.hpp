@@ -46,9 +46,19 @@ using ExpressibleFilter = std::function<bool(const FuzzScene&)>;
 [[nodiscard]] FuzzScene random_matched_scene(std::string_view code, std::uint64_t seed,
                                              const ExpressibleFilter& expressible);
 
+/// A scene's start velocities: each component uniform in ±kFuzzSpeed [m/s], and the compared
+/// pair approaching along its line of centres at kFuzzApproach each [m/s].
+inline constexpr double kFuzzSpeed = 0.2;
+inline constexpr double kFuzzApproach = 0.3;
+/// How long a scene runs [s].
+inline constexpr double kFuzzDuration = 2.0e-3;
+/// The fastest start, √3·kFuzzSpeed + kFuzzApproach = 0.646 m/s rounded up [m/s].
+inline constexpr double kFuzzFastestStart = 0.65;
+static_assert(kFuzzFastestStart >= 1.7320508075688772 * kFuzzSpeed + kFuzzApproach);
+
 /// How far a YADE scene's spheres start from its mesh's shared edge beyond their radius [m]:
-/// twice the fastest start (|v| ≤ √3·0.2 + 0.3 m/s) over the 2 ms run, so that none reaches it.
-inline constexpr double kYadeMeshEdgeClearance = 2.0 * 0.65 * 2.0e-3;
+/// twice the fastest start over the run, so that none reaches it.
+inline constexpr double kYadeMeshEdgeClearance = 2.0 * kFuzzFastestStart * kFuzzDuration;
 
 /// Share of seeds whose scene must be expressible by the code.
 inline constexpr double kExpressibleShare = 0.8;

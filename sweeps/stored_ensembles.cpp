@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "reports/markdown.hpp"
 #include "cases/case_loader.hpp"
+#include "reports/markdown.hpp"
 #include "support/sha256.hpp"
 #include "support/text_file.hpp"
 #include "sweeps/sweep_spec.hpp"
@@ -70,17 +70,16 @@ void read_store(StoredEnsemble& e, const SweepSpec& spec) {
   const bool bed_same = !j.contains("bed_csv_sha256") ||
                         (fs::exists(e.stored_dir / "bed.csv") &&
                          j.at("bed_csv_sha256") == support::sha256_hex(support::read_file(e.stored_dir / "bed.csv")));
-  // The meshes the case reads: their files' SHA-256 as stored (none stored: the case read none).
+  // The meshes the case reads, by their files' SHA-256 (none stored: the case read none).
   std::string mesh_changed;
   if (case_same) {
     const auto stored = j.contains("mesh_sha256") ? j.at("mesh_sha256").get<std::map<std::string, std::string>>()
                                                   : std::map<std::string, std::string>{};
     const auto now = mesh_sha256(cases::load_case(spec.case_file));
     for (const auto& [file, sha] : now) {
-      const auto it = stored.find(file);
-      if (it == stored.end() || it->second != sha) mesh_changed = file;
+      if (!stored.contains(file) || stored.at(file) != sha) mesh_changed = file;
     }
-    if (mesh_changed.empty() && stored.size() != now.size()) mesh_changed = "a mesh file";
+    if (mesh_changed.empty() && stored != now) mesh_changed = "the set of mesh files";
   }
   if (!sweep_same || !case_same || !csv_same || !bed_same || !mesh_changed.empty()) {
     e.problem = fmt::format("stale: {} changed since the results were stored; run `demwb refresh --sweep {}`",

@@ -52,7 +52,6 @@ void write_groups(std::string& deck, const AtomTypes& types) {
 /// The fix holding mesh `m`'s facets (one fix wall/gran, tr_mesh_walls, makes them all granular walls).
 std::string mesh_fix_id(std::size_t m) { return fmt::format("tr_mesh_{}", m); }
 
-
 /// The model settings ("limitForce on", …): after the model words on pair_style gran, at the end
 /// of fix wall/gran (before `primitive` they end the model words too early).
 std::string model_settings(const ContactSettings& c) {

@@ -75,13 +75,6 @@ std::vector<std::string> cylinder_end_reasons(const cases::Scene& scene, std::si
   return reasons;
 }
 
-const cases::WallSpec* first_facet(const cases::Scene& scene, std::size_t mesh) noexcept {
-  for (const cases::WallSpec& w : scene.walls) {
-    if (w.mesh == mesh) return &w;
-  }
-  return nullptr;
-}
-
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index) {
   std::vector<std::string> reasons;
   if (!wall_in_run(wall)) return reasons;

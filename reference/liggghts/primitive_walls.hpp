@@ -48,10 +48,6 @@ std::string primitive_arguments(const cases::WallSpec& wall);
 /// yet within reach of its unbounded surface: LIGGGHTS would push it, the core not.
 std::vector<std::string> cylinder_end_reasons(const cases::Scene& scene, std::size_t index);
 
-/// The first facet wall of mesh `mesh` (the facets share its motion, removal and material), or
-/// null when it has none.
-[[nodiscard]] const cases::WallSpec* first_facet(const cases::Scene& scene, std::size_t mesh) noexcept;
-
 /// One reason per property of wall `index` the deck cannot express (any shape but an axis-aligned
 /// plane or cylinder, a moving wall, a removal during the run); none for a wall removed at t ≤ 0.
 std::vector<std::string> unmapped_wall(const cases::WallSpec& wall, std::size_t index);

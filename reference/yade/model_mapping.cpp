@@ -256,21 +256,11 @@ void check_mindlin_modulus(const cases::Scene& scene, const dem::PairLaw& law, s
   }
 }
 
-/// Walls: YADE's utils.wall is an axis-aligned, immobile plane; a mesh's facets are
-/// utils.facet bodies, immobile too.
+/// Walls other than mesh facets: YADE's utils.wall is an axis-aligned, immobile plane.
 void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
   for (const auto& w : scene.walls) {
-    if (!wall_in_run(w)) continue;  // gone when the run starts: the script leaves it out
-    if (w.mesh) {  // the reasons name the mesh once for all its facets
-      const std::string& mesh = scene.meshes.at(*w.mesh).name;
-      if (w.removed_at) {
-        add_reason(reasons, fmt::format("YADE driver: mesh '{}' is removed during the run; that is not mapped", mesh));
-      }
-      if (wall_moves(w)) {
-        add_reason(reasons, fmt::format("YADE driver: moving mesh '{}' is not mapped", mesh));
-      }
-      continue;
-    }
+    // Gone when the run starts, the script leaves it out; a mesh's facets are check_meshes' part.
+    if (!wall_in_run(w) || w.mesh) continue;
     if (w.shape != dem::WallShape::plane) {
       add_reason(reasons, fmt::format("YADE driver: wall '{}' is a {}; only plane walls (utils.wall) and meshes "
                                       "(utils.facet) are mapped",
@@ -290,25 +280,26 @@ void check_walls(const cases::Scene& scene, std::vector<std::string>& reasons) {
   }
 }
 
-/// True when mesh `m` stands when the run starts (its facets share their removal time).
-bool mesh_in_run(const cases::Scene& scene, std::size_t m) {
-  return std::any_of(scene.walls.begin(), scene.walls.end(),
-                     [m](const cases::WallSpec& w) { return w.mesh == m && wall_in_run(w); });
-}
-
-/// Meshes under the law family and traced walls: FrictViscoPhys' dashpot scales by α = (r₁ + r₂)/(r₁ + r₂ − δ),
-/// which a facet makes 3r/(3r − δ) (Ig2_Facet_Sphere_ScGeom: r₁ = 2r); the core's
-/// `yade_frictvisco` has YADE's plane-wall 2r/(2r − δ). A traced facet contact is not written, nor
-/// a wall the script leaves out.
+/// Meshes, each judged by its first facet (the facets share motion and removal): immobile and
+/// standing through the run for utils.facet, and not under FrictViscoPhys, whose dashpot scales by
+/// α = (r₁ + r₂)/(r₁ + r₂ − δ), which a facet makes 3r/(3r − δ) (Ig2_Facet_Sphere_ScGeom: r₁ = 2r)
+/// where the core's `yade_frictvisco` has YADE's plane-wall 2r/(2r − δ). Traced walls: not a
+/// facet, nor a wall the script leaves out.
 void check_meshes(const cases::Scene& scene, YadeLaw law, std::vector<std::string>& reasons) {
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
-    const cases::MeshSpec& mesh = scene.meshes[m];
-    if (law == YadeLaw::frict_visco && mesh_in_run(scene, m)) {
+    const cases::WallSpec* first = first_facet(scene, m);
+    if (first == nullptr || !wall_in_run(*first)) continue;  // gone when the run starts: left out
+    const std::string& mesh = scene.meshes[m].name;
+    if (first->removed_at) {
+      add_reason(reasons, fmt::format("YADE driver: mesh '{}' is removed during the run; that is not mapped", mesh));
+    }
+    if (wall_moves(*first)) add_reason(reasons, fmt::format("YADE driver: moving mesh '{}' is not mapped", mesh));
+    if (law == YadeLaw::frict_visco) {
       add_reason(reasons, fmt::format("YADE driver: mesh '{}' under the restitution dashpot (FrictViscoPhys) is "
                                       "not mapped: against a facet YADE scales the dashpot by α = 3r/(3r − δ) "
                                       "(the facet's radius is 2r), the core's yade_frictvisco by a plane "
                                       "wall's 2r/(2r − δ)",
-                                      mesh.name));
+                                      mesh));
     }
   }
   for (const auto& [particle, wall] : scene.output.trace_walls) {

@@ -43,7 +43,7 @@ std::optional<YadeCalibrationPlan> plan_calibration(const cases::Scene& scene,
     if (!wall_in_run(scene.walls[wc->second])) return std::nullopt;  // never met in the run
     plan.particle = wc->first;
     plan.partner_wall = wc->second;
-    for (std::size_t k = 0; k < wc->second; ++k) plan.partner_wall_entry += wall_in_run(scene.walls[k]) ? 1 : 0;
+    plan.partner_wall_entry = run_wall_index(scene, wc->second);
     partner_material = scene.walls[wc->second].material;
     n = scene.walls[wc->second].normal;
   } else if (const auto& pair = scene.compare.pair) {

@@ -176,9 +176,12 @@ void write_python_cohesion(std::string& s, const cases::Scene& scene, const Yade
 /// YADE body id of wall `k`: after the particles, counting only the walls in the run (a wall
 /// removed at t ≤ 0 is left out; supports() refuses tracing one).
 std::size_t wall_body(const cases::Scene& scene, std::size_t k) {
-  std::size_t body = scene.particles.size();
-  for (std::size_t j = 0; j < k && j < scene.walls.size(); ++j) body += wall_in_run(scene.walls[j]) ? 1 : 0;
-  return body;
+  return scene.particles.size() + run_wall_index(scene, k);
+}
+
+/// O.materials id of wall `k`: its compensated material under Hertz–Mindlin, else its own.
+std::size_t wall_material(const cases::Scene& scene, const YadeRunPlan& plan, std::size_t k) {
+  return k < plan.model.wall_material_ids.size() ? plan.model.wall_material_ids[k] : scene.walls[k].material;
 }
 
 /// "position, axis, sense" of plane wall k for utils.wall (its position along its axis). Throws
@@ -203,8 +206,7 @@ void write_plane_walls(std::string& s, const cases::Scene& scene, const YadeRunP
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
     const auto& w = scene.walls[k];
     if (!wall_in_run(w)) continue;  // removed at t ≤ 0: not in the run
-    fmt::format_to(out, "    ({}, {}),\n", plane_arguments(w, k),
-                   k < plan.model.wall_material_ids.size() ? plan.model.wall_material_ids[k] : w.material);
+    fmt::format_to(out, "    ({}, {}),\n", plane_arguments(w, k), wall_material(scene, plan, k));
   }
   s += "]\n"
        "def _append_walls():\n"
@@ -230,7 +232,7 @@ void write_walls(std::string& s, const cases::Scene& scene, const YadeRunPlan& p
   for (std::size_t k = 0; k < scene.walls.size(); ++k) {
     const auto& w = scene.walls[k];
     if (!wall_in_run(w)) continue;  // removed at t ≤ 0: not in the run
-    const std::size_t material = k < plan.model.wall_material_ids.size() ? plan.model.wall_material_ids[k] : w.material;
+    const std::size_t material = wall_material(scene, plan, k);
     if (w.mesh) {
       fmt::format_to(out, "    ('facet', ({}, {}, {}), {}),\n", py_vector3(w.corners[0]), py_vector3(w.corners[1]),
                      py_vector3(w.corners[2]), material);

@@ -223,27 +223,12 @@ TEST(LiggghtsRolling, CdtOnSpinningSpheresIsTheCoresProjectedConstantTorqueAtRou
   EXPECT_LT(std::abs(wx.back()), 0.9 * 20.0);
 }
 
-/// The [model] and [materials.glass] tables of the wall scenes: Hertz, Tsuji's dashpot (ε 0.7) and
-/// Mindlin friction (μ 0.3) without a tangential dashpot.
-constexpr std::string_view kGlassHertzMindlin = R"([model]
-normal = "hertz"
-damping = "tsuji"
-tangential = "mindlin_8g"
-[materials.glass]
-density = 2500.0
-youngs_modulus = 6.0e7
-poisson_ratio = 0.23
-restitution = 0.7
-friction = 0.3
-tangential_damping_ratio = 0.0
-)";
-
 /// Three glass spheres in a drum (a z cylinder on a floor) under a horizontal rod (an x cylinder):
 /// two slide and spin into the drum's wall from inside, one falls onto the rod from outside.
 cases::Scene drum_and_rod() {
   return cases::load_case_text(R"([case]
 name = "drum_and_rod"
-)" + std::string(kGlassHertzMindlin) + R"([[walls]]
+)" + demwb_mesh_test::glass_hertz_mindlin() + R"([[walls]]
 type = "plane"
 name = "floor"
 point = [0.0, 0.0, 0.0]
@@ -348,7 +333,7 @@ TEST(LiggghtsWalls, SpheresOverAMeshFloorsSeamsAndOntoARidgeAreTheCoresAtRoundOf
   support::write_file(dir / "roof.stl", roof_stl());
   const std::string text = R"([case]
 name = "mesh_floor"
-)" + std::string(kGlassHertzMindlin) + R"([[walls]]
+)" + demwb_mesh_test::glass_hertz_mindlin() + R"([[walls]]
 type = "mesh"
 name = "floor"
 file = "floor.stl"

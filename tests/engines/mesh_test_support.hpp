@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -13,8 +14,26 @@
 
 #include "cases/run_result.hpp"
 
-// Meshes and trace comparisons shared by the tests that run the real reference codes on walls.
+// The glass, meshes and trace comparisons shared by the tests that run the real reference codes on walls.
 namespace demwb_mesh_test {
+
+/// The [model] and [materials.glass] tables of the wall scenes: Hertz, Tsuji's dashpot (ε 0.7) and
+/// Mindlin friction (μ 0.3) without a tangential dashpot; `model_lines` adds lines to [model].
+inline std::string glass_hertz_mindlin(std::string_view model_lines = {}) {
+  return std::string(R"([model]
+normal = "hertz"
+damping = "tsuji"
+tangential = "mindlin_8g"
+)") + std::string(model_lines) +
+         R"([materials.glass]
+density = 2500.0
+youngs_modulus = 6.0e7
+poisson_ratio = 0.23
+restitution = 0.7
+friction = 0.3
+tangential_damping_ratio = 0.0
+)";
+}
 
 /// A flat floor over [−10, 10] mm² at z = 0 as an ASCII STL of 32 triangles: a 4 × 4 grid of
 /// squares, each cut along alternating diagonals (seams in three directions).

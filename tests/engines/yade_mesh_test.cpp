@@ -23,20 +23,7 @@ using namespace demwb_yade_test;
 using demwb_mesh_test::column_gap;
 
 /// Hertz–Mindlin glass with friction in YADE's form (clipped normal force, incremental shear).
-constexpr std::string_view kGlass = R"([model]
-normal = "hertz"
-damping = "tsuji"
-tangential = "mindlin_8g"
-clamp_tensile = true
-mindlin_form = "incremental"
-[materials.glass]
-density = 2500.0
-youngs_modulus = 6.0e7
-poisson_ratio = 0.23
-restitution = 0.7
-friction = 0.3
-tangential_damping_ratio = 0.0
-)";
+std::string glass() { return demwb_mesh_test::glass_hertz_mindlin("clamp_tensile = true\nmindlin_form = \"incremental\"\n"); }
 
 /// One triangle at z = 0 with corners (−20, −20), (30, −20), (−20, 30) mm.
 constexpr std::string_view kPlateStl = R"(solid plate
@@ -72,7 +59,7 @@ rotation = true
 trace_every = 250
 trace_particles = [0, 1, 2, 3]
 )",
-                                       name, kGlass, particles, duration);
+                                       name, glass(), particles, duration);
   support::write_file(dir / "case.toml", text);
   return cases::load_case(dir / "case.toml");
 }
