@@ -26,7 +26,7 @@
 namespace cases::loader {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNever = std::numeric_limits<double>::infinity();
 static_assert(kMaxSteps == 1.0e9, "the messages below say 1e9");
 
 /// A density no real material is far from [kg/m³]: used to tell whether a sphere's mass is out
@@ -97,7 +97,7 @@ void check_pair(const Table& root, const Scene& scene, const dem::PairTable& tab
   const dem::CollisionScale& s = pair.scale;
   const double k = dem::collision_stiffness(law, s);
   const double eta = dem::damping_coefficient(law, s.reduced_mass, k);
-  const double t_c = k > 0.0 ? dem::laws::linear_contact_duration(k, s.reduced_mass, eta) : kInf;
+  const double t_c = k > 0.0 ? dem::laws::linear_contact_duration(k, s.reduced_mass, eta) : kNever;
   const bool stiffness_ok = k == 0.0 ? s.impact_speed == 0.0 : in_window(k);
   const bool time_ok = std::isnan(t_c) || std::isinf(t_c) || in_window(t_c);
   if (stiffness_ok && time_ok) return;
@@ -157,7 +157,7 @@ void check_run_timestep(const Table& root, const Scene& scene, const dem::PairTa
 template <class Timestep>
 void check_stage_steps(const Table& stage, const Scene& scene, std::string_view what, std::string_view dt_key,
                        double max_duration, Timestep timestep) {
-  double dt = kInf;
+  double dt = kNever;
   try {
     dt = timestep();
   } catch (const dem::ModelError& e) {

@@ -6,14 +6,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "cases/core_vector.hpp"
 #include "dem/contact/mesh_topology.hpp"
 
 namespace cases {
-namespace {
-
-dem::Vec3 to_vec(const Vector3& v) noexcept { return {v[0], v[1], v[2]}; }
-
-}  // namespace
 
 std::vector<dem::MeshTopology> core_meshes(const Scene& scene, std::vector<dem::Wall>& walls) {
   std::vector<dem::MeshTopology> out;
@@ -28,7 +24,7 @@ std::vector<dem::MeshTopology> core_meshes(const Scene& scene, std::vector<dem::
       if (w != first + facets.size()) {
         throw std::invalid_argument("the facets of mesh " + scene.meshes[m].name + " are not consecutive walls");
       }
-      facets.push_back({to_vec(spec.corners[0]), to_vec(spec.corners[1]), to_vec(spec.corners[2])});
+      facets.push_back({core_vec(spec.corners[0]), core_vec(spec.corners[1]), core_vec(spec.corners[2])});
     }
     if (facets.empty()) continue;  // none of its facets is in this scene
     renumber[m] = static_cast<std::uint32_t>(out.size());
@@ -44,16 +40,16 @@ dem::Wall core_wall(const WallSpec& w) {
   // A facet's frame comes from its corners (the one formula, dem::triangle_wall); every other
   // shape's from its keys.
   dem::Wall out = w.shape == dem::WallShape::triangle
-                      ? dem::triangle_wall(to_vec(w.corners[0]), to_vec(w.corners[1]), to_vec(w.corners[2]))
-                      : dem::Wall{to_vec(w.point), to_vec(w.normal)};
+                      ? dem::triangle_wall(core_vec(w.corners[0]), core_vec(w.corners[1]), core_vec(w.corners[2]))
+                      : dem::Wall{core_vec(w.point), core_vec(w.normal)};
   if (w.shape != dem::WallShape::triangle) {
     out.shape = w.shape;
-    out.axis_u = to_vec(w.axis_u);
+    out.axis_u = core_vec(w.axis_u);
     out.size_u = w.size_u;
     out.size_v = w.size_v;
     out.length = w.length;
   }
-  out.velocity = to_vec(w.velocity);
+  out.velocity = core_vec(w.velocity);
   out.material = static_cast<std::uint32_t>(w.material);
   out.mesh = w.mesh ? static_cast<std::uint32_t>(*w.mesh) : dem::kNoMesh;
   out.removed_at = w.removed_at.value_or(std::numeric_limits<double>::infinity());
@@ -65,7 +61,7 @@ std::optional<WallOverlap> first_wall_overlap(const Scene& scene, const std::fun
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const ParticleSpec& p = scene.particles[i];
     if (p.fixed) continue;
-    const dem::Vec3 x = to_vec(p.position);
+    const dem::Vec3 x = core_vec(p.position);
     for (std::size_t w = 0; w < scene.walls.size(); ++w) {
       if (!counts(scene.walls[w])) continue;
       const double overlap = p.radius - dem::wall_frame(core_wall(scene.walls[w]), x, 0.0).distance;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <variant>
 
+#include "cases/core_vector.hpp"
 #include "cases/formation_model.hpp"
 #include "cases/launch_extent.hpp"
 #include "dem/core/vector.hpp"
@@ -12,8 +13,6 @@
 
 namespace cases {
 namespace {
-
-dem::Vec3 to_vec(const Vector3& v) { return {v[0], v[1], v[2]}; }
 
 /// dem::timestep_limits of spheres `particles` of `materials` under `gravity`, walls of
 /// `walls`, with the pair laws `table`.
@@ -36,10 +35,10 @@ SphereCensus sphere_census(const std::vector<ParticleSpec>& particles,
   for (const ParticleSpec& p : particles) {
     dem::add_to_census(out.materials[p.material], dem::sphere_mass(materials[p.material].density, p.radius), p.radius,
                        p.fixed);
-    fastest = std::max(fastest, to_vec(p.velocity).norm());
+    fastest = std::max(fastest, core_vec(p.velocity).norm());
     largest = std::max(largest, 2.0 * p.radius);
   }
-  out.impact_speed = dem::expected_impact_speed(fastest, largest, to_vec(gravity).norm());
+  out.impact_speed = dem::expected_impact_speed(fastest, largest, core_vec(gravity).norm());
   return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "cases/core_vector.hpp"
 #include "dem/contact/pair_table.hpp"
 #include "dem/conversion/appendix_e.hpp"
 
@@ -17,8 +18,6 @@ namespace {
 
 constexpr std::array<std::string_view, 5> kBreakupMetrics{"kappa_vol", "kappa_damage", "fragments",
                                                           "coordination_before", "coordination_after"};
-
-dem::Vec3 to_vec(const cases::Vector3& v) { return {v[0], v[1], v[2]}; }
 
 /// A material property the cohesive work needs; throws naming it when the material lacks it.
 double property(const std::optional<double>& value, const dem::MaterialProperties& m, const char* key) {
@@ -121,8 +120,8 @@ std::optional<CohesionMetric> breakup_metric(const std::string& name, const case
   std::vector<breakup::SnapshotSphere> before;
   std::vector<breakup::SnapshotSphere> after;
   for (const std::size_t i : mobile) {
-    before.push_back({to_vec(scene.particles[i].position), scene.particles[i].radius});
-    after.push_back({to_vec(last.position[i]), scene.particles[i].radius});
+    before.push_back({cases::core_vec(scene.particles[i].position), scene.particles[i].radius});
+    after.push_back({cases::core_vec(last.position[i]), scene.particles[i].radius});
   }
   try {
     const breakup::BreakupMetrics m = breakup::breakup_metrics(before, after, scene_bond_rule(scene, mobile));

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "cases/core_vector.hpp"
 #include "cases/launch_extent.hpp"
 #include "dem/core/vector.hpp"
 
 namespace prepare {
 namespace {
 
-dem::Vec3 to_vec(const cases::Vector3& v) { return {v[0], v[1], v[2]}; }
 cases::Vector3 to_array(const dem::Vec3& v) { return {v[0], v[1], v[2]}; }
 
 }  // namespace
@@ -21,15 +21,15 @@ LaunchFigures launch(std::vector<cases::ParticleSpec>& particles, const std::vec
   if (!extent) throw std::invalid_argument("a launch needs at least one mobile sphere");
   LaunchFigures out;
   out.enclosing_diameter = extent->enclosing_diameter;
-  const dem::Vec3 n = to_vec(wall.normal);
-  const dem::Vec3 t = to_vec(spec.direction);
-  const dem::Vec3 target = to_vec(wall.point) + spec.height * out.enclosing_diameter * n;
+  const dem::Vec3 n = cases::core_vec(wall.normal);
+  const dem::Vec3 t = cases::core_vec(spec.direction);
+  const dem::Vec3 target = cases::core_vec(wall.point) + spec.height * out.enclosing_diameter * n;
   const dem::Vec3 shift = target - extent->centre;
   const double theta = cases::launch_angle(spec);
   const dem::Vec3 u = spec.speed * (std::cos(theta) * t - std::sin(theta) * n);
   for (cases::ParticleSpec& p : particles) {
     if (p.fixed) continue;
-    p.position = to_array(to_vec(p.position) + shift);
+    p.position = to_array(cases::core_vec(p.position) + shift);
     p.velocity = to_array(u);
     p.angular_velocity = {0.0, 0.0, 0.0};
   }

@@ -15,7 +15,7 @@ namespace {
 
 /// Owners per build chunk: chunks, not threads, split the work, so the list is the same for
 /// any thread count.
-constexpr std::uint32_t kChunk = 512;
+constexpr std::uint32_t kOwnersPerChunk = 512;
 
 /// Candidates a gather copies at a time (CellGrid pads its members by as many).
 constexpr std::uint32_t kGatherBlock = 8;
@@ -162,7 +162,7 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   const std::uint32_t old_n = sphere_count();
   remember_interacting(std::max(in.threads, 1));
 
-  // Units: runs of cells of each class's own grid holding about kChunk owners each. The owners
+  // Units: runs of cells of each class's own grid holding about kOwnersPerChunk owners each. The owners
   // of a cell are searched one after another, so the candidates around the cell are gathered
   // once for all of them.
   const std::size_t last_units = units_.size();  // the last build's, kept in hand for this one's
@@ -175,7 +175,7 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
     std::uint32_t from = 0;
     while (from < cells) {
       std::uint32_t to = from + 1;
-      const std::uint32_t target = own.first(from) + kChunk;
+      const std::uint32_t target = own.first(from) + kOwnersPerChunk;
       while (to < cells && own.first(to) < target) ++to;
       units_.push_back({static_cast<std::uint32_t>(c), from, to});
       from = to;
@@ -542,11 +542,11 @@ void NeighborList::remember_interacting(int threads) {
   const std::span<const ExtendedHistory> ext = extended();
   // In blocks of owners, in parallel: count the interacting pairs, then write them in owner
   // order (the order does not depend on the thread count).
-  const std::uint32_t blocks = (n + kChunk - 1) / kChunk;
+  const std::uint32_t blocks = (n + kOwnersPerChunk - 1) / kOwnersPerChunk;
   block_start_.assign(blocks + 1, 0);
   const auto each_active = [&](std::uint32_t block, auto&& take) {
-    const std::uint32_t end = std::min(n, (block + 1) * kChunk);
-    for (std::uint32_t a = block * kChunk; a < end; ++a) {
+    const std::uint32_t end = std::min(n, (block + 1) * kOwnersPerChunk);
+    for (std::uint32_t a = block * kOwnersPerChunk; a < end; ++a) {
       for (std::uint32_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
         if (contact_[k] != kNoContact) take(a, k);
       }

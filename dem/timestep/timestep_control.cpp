@@ -13,7 +13,7 @@
 namespace dem {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 /// Contact duration of a law for a collision of the given scale, with the law's damping.
 double collision_duration(const PairLaw& law, const CollisionScale& scale) {
@@ -67,8 +67,8 @@ void for_each_weighed_collision(const std::vector<MaterialCensus>& census, doubl
 TimestepLimits timestep_limits(const std::vector<MaterialCensus>& census, double speed, const PairTable& table,
                                bool rotation, double steps_per_collision,
                                const std::vector<std::uint32_t>& wall_materials) {
-  double sqrt_m_over_k = kInf;
-  double t_c = kInf;
+  double sqrt_m_over_k = kNoLimit;
+  double t_c = kNoLimit;
   for_each_weighed_collision(census, speed, wall_materials, [&](const WeighedCollision& c) {
     const PairLaw& law = table.law(c.a, c.b);
     sqrt_m_over_k = std::min(sqrt_m_over_k, std::sqrt(c.scale.reduced_mass / collision_stiffness(law, c.scale)));

@@ -5,13 +5,13 @@
 #include <cmath>
 
 #include "dem/contact/pair_table.hpp"
+#include "cases/core_vector.hpp"
 #include "cases/core_wall.hpp"
 #include "cases/time_step.hpp"
 
 namespace reference {
 namespace {
 
-dem::Vec3 to_vec(const cases::Vector3& v) { return {v[0], v[1], v[2]}; }
 
 /// The core's fluid from the case's.
 dem::Fluid to_fluid(const cases::FluidSpec& f) {
@@ -21,9 +21,9 @@ dem::Fluid to_fluid(const cases::FluidSpec& f) {
   out.drag = f.drag;
   out.buoyancy = f.buoyancy;
   out.virtual_mass = f.virtual_mass;
-  out.pressure_gradient = to_vec(f.pressure_gradient);
-  out.velocity.uniform = to_vec(f.velocity);
-  for (const auto& z : f.zones) out.velocity.zones.push_back({to_vec(z.min), to_vec(z.max), to_vec(z.direction)});
+  out.pressure_gradient = cases::core_vec(f.pressure_gradient);
+  out.velocity.uniform = cases::core_vec(f.velocity);
+  for (const auto& z : f.zones) out.velocity.zones.push_back({cases::core_vec(z.min), cases::core_vec(z.max), cases::core_vec(z.direction)});
   out.velocity.speed = f.plug_speed;
   out.velocity.ramp_time = f.ramp_time;
   return out;
@@ -45,21 +45,21 @@ CoreSetup core_setup(const PreparedScene& prepared, int threads) {
   for (const auto& p : scene.particles) {
     s.particles.push_back(dem::ParticleInit{
         p.radius, p.effect_radius, scene.materials.at(p.material).density,
-        static_cast<std::uint32_t>(p.material), to_vec(p.position), to_vec(p.velocity),
-        to_vec(p.angular_velocity), p.fixed, p.charge});
+        static_cast<std::uint32_t>(p.material), cases::core_vec(p.position), cases::core_vec(p.velocity),
+        cases::core_vec(p.angular_velocity), p.fixed, p.charge});
   }
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     const auto& p = scene.particles[i];
     if (p.motion.empty()) continue;
-    dem::PrescribedMotion m{static_cast<std::uint32_t>(i), to_vec(p.position), {}};
-    for (const auto& seg : p.motion) m.segments.push_back({seg.duration, to_vec(seg.velocity)});
+    dem::PrescribedMotion m{static_cast<std::uint32_t>(i), cases::core_vec(p.position), {}};
+    for (const auto& seg : p.motion) m.segments.push_back({seg.duration, cases::core_vec(seg.velocity)});
     s.motions.push_back(std::move(m));
   }
   for (const auto& w : scene.walls) {
     s.walls.push_back(cases::core_wall(w));
   }
   s.meshes = cases::core_meshes(scene, s.walls);
-  s.fields.gravity = to_vec(scene.gravity);
+  s.fields.gravity = cases::core_vec(scene.gravity);
   for (std::size_t k = 0; k < 3; ++k) {
     const auto a = static_cast<Eigen::Index>(k);
     s.box.lo[a] = scene.domain.min[k];
@@ -130,9 +130,9 @@ dem::KinematicState to_state(const cases::Snapshot& snapshot) {
   s.orientation.assign(snapshot.position.size(), dem::Quat::Identity());
   for (Eigen::Index i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    s.position.col(i) = to_vec(snapshot.position[k]);
-    s.velocity.col(i) = to_vec(snapshot.velocity[k]);
-    s.angular_velocity.col(i) = to_vec(snapshot.angular_velocity[k]);
+    s.position.col(i) = cases::core_vec(snapshot.position[k]);
+    s.velocity.col(i) = cases::core_vec(snapshot.velocity[k]);
+    s.angular_velocity.col(i) = cases::core_vec(snapshot.angular_velocity[k]);
   }
   return s;
 }

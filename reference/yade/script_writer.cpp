@@ -352,6 +352,30 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
        "        _snapshots.write(','.join('%.17g' % v for v in values) + '\\n')\n\n";
 }
 
+/// The iterations with their snapshots. With a PyRunner in every iteration (the linear cohesion)
+/// the script steps YADE from its own thread: O.run's worker thread makes a fresh Python thread
+/// state for every PyRunner call, and Python 3.11 maps and unmaps a 16 KiB frame stack for each,
+/// which is half the run's time. Both loops run the same engines in the same order, so the
+/// trajectory is the same bit for bit (tests/engines/yade_canonical_test.cpp).
+void write_run(std::string& s, bool python_every_iteration) {
+  const char* advance = python_every_iteration ? "steps(" : "O.run(";
+  const char* wait = python_every_iteration ? "" : ", True";
+  if (python_every_iteration) {
+    s += "def steps(count):\n"
+         "    \"\"\"Runs count iterations in this thread (O.step), not O.run's worker thread.\"\"\"\n"
+         "    for _ in range(count):\n"
+         "        O.step()\n\n";
+  }
+  s += "# A snapshot at iteration n is the state before iteration n runs: x(n), v(n-1/2).\n"
+       "for n in SNAPSHOT_ITERATIONS:\n"
+       "    if n > O.iter:\n";
+  fmt::format_to(std::back_inserter(s), "        {}n - O.iter{}){}\n", advance, wait,
+                 python_every_iteration ? "" : "  # wait=True: without it the script ends having run nothing");
+  s += "    record_snapshot()\n"
+       "# Iteration STEPS computes F(x(STEPS)) for the last trace row, hence STEPS + 1 iterations.\n";
+  fmt::format_to(std::back_inserter(s), "{}STEPS + 1 - O.iter{})\n", advance, wait);
+}
+
 /// O.engines in YADE's loop order, and the run with its snapshots.
 void write_engines_and_run(std::string& s, const cases::Scene& scene, const YadeRunPlan& plan) {
   const bool facets = !scene.meshes.empty();
@@ -378,15 +402,9 @@ void write_engines_and_run(std::string& s, const cases::Scene& scene, const Yade
   s += "    PyRunner(command='record_trace()', iterPeriod=TRACE_EVERY, initRun=True),\n"
        "    NewtonIntegrator(damping=0.0, gravity=GRAVITY),  # YADE's default damping is 0.2\n"
        "]\n"
-       "O.dt = DT\n\n"
-       "# A snapshot at iteration n is the state before iteration n runs: x(n), v(n-1/2).\n"
-       "for n in SNAPSHOT_ITERATIONS:\n"
-       "    if n > O.iter:\n"
-       "        O.run(n - O.iter, True)  # wait=True: without it the script ends having run nothing\n"
-       "    record_snapshot()\n"
-       "# Iteration STEPS computes F(x(STEPS)) for the last trace row, hence STEPS + 1 iterations.\n"
-       "O.run(STEPS + 1 - O.iter, True)\n"
-       "_trace.close()\n"
+       "O.dt = DT\n\n";
+  write_run(s, plan.model.python_cohesion);
+  s += "_trace.close()\n"
        "_snapshots.close()\n"
        "print('dem-workbench: YADE %s ran %d iterations' % (yade.config.version, O.iter))\n";
 }

@@ -11,7 +11,7 @@
 #include "dem/simulation/simulation.hpp"
 #include "many_body_fixture.hpp"
 
-namespace {
+namespace deferred_kick_test {
 
 using dem::Vec3;
 
@@ -247,4 +247,4 @@ TEST(DeferredClosingKick, OtherSchemesAdvanceAsTheyStep) {
   EXPECT_EQ(expect_advance_matches_steps(s, steps(150), "leapfrog").deferred, 0U);
 }
 
-}  // namespace
+}  // namespace deferred_kick_test

@@ -3,9 +3,11 @@
 // sphere–wall impact with Coulomb friction (oblique_wall_impact), the α-scaled restitution
 // dashpot (single_collision with ε = 0.5) and JKR (n/a). Native runs against the analytic engine
 // within the case tolerances; matched runs against the core (inhouse@yade) within 1e-8.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +16,10 @@
 #include "reference/analytic/analytic_engine.hpp"
 #include "reference/inhouse/inhouse_engine.hpp"
 #include "reference/matching.hpp"
+#include "reference/yade/run_plan.hpp"
+#include "reference/yade/script_writer.hpp"
+#include "reference/yade/yade_process.hpp"
+#include "support/text_file.hpp"
 #include "yade_test_support.hpp"
 
 namespace yade_canonical_test {
@@ -142,6 +148,34 @@ TEST(YadeLinearCohesion, MatchedPythonCohesionForceAgreesWithin1em8) {
   scene.integration.duration = 0.01;
   scene.compare.metrics = {"contact_duration", "max_overlap", "restitution"};
   expect_matched_within_1e8(scene, "cohesion-matched");
+}
+
+TEST(YadeLinearCohesion, SteppingInTheScriptsThreadGivesTheTrajectoryOfORunBitForBit) {
+  // A script with a Python force in every iteration steps YADE with O.step() in its own thread
+  // (twice as fast as O.run: no Python thread state per PyRunner call). The same script run by
+  // O.run writes the same trace, byte for byte, over an approach, a contact and a rebound.
+  DEMWB_REQUIRE_YADE();
+  cases::Scene scene = canonical("linear_cohesion_pair.toml");
+  scene.integration.duration = 0.03;  // contact at ~9 ms, lasting ~0.7 ms
+  const std::string stepped = reference::yade::write_yade_script(
+      scene, reference::yade::make_run_plan(reference::PreparedScene(scene)));
+  ASSERT_NE(stepped.find("O.step()"), std::string::npos);
+  std::string threaded = stepped;
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"steps(n - O.iter)", "O.run(n - O.iter, True)"},
+                                 {"\nsteps(STEPS + 1 - O.iter)", "\nO.run(STEPS + 1 - O.iter, True)"}}) {
+    const auto at = threaded.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    threaded.replace(at, from.size(), to);
+  }
+  const auto install = reference::yade::default_yade_installation();
+  const auto a = reference::yade::run_yade_script(install, stepped, scratch("stepped"), 120.0);
+  const auto b = reference::yade::run_yade_script(install, threaded, scratch("threaded"), 120.0);
+  ASSERT_TRUE(a.failure.empty()) << a.failure << "\n" << a.log_tail;
+  ASSERT_TRUE(b.failure.empty()) << b.failure << "\n" << b.log_tail;
+  const std::string trace = support::read_file(a.directory / "trace.csv");
+  EXPECT_GT(std::count(trace.begin(), trace.end(), '\n'), 1000);
+  EXPECT_EQ(trace, support::read_file(b.directory / "trace.csv"));
+  EXPECT_EQ(support::read_file(a.directory / "snapshots.csv"), support::read_file(b.directory / "snapshots.csv"));
 }
 
 TEST(YadeJkr, PullOffIsNotApplicableWithTheReason) {

@@ -82,6 +82,26 @@ TEST(YadeScriptWriter, SetsGlobalDampingToZeroAndRecordsBeforeTheIntegrator) {
                           "c0-2.overlap,c0-2.fn'"));
 }
 
+TEST(YadeScriptWriter, StepsInItsOwnThreadOnlyWhenAPythonForceRunsEveryIteration) {
+  // The linear cohesion is a PyRunner in every iteration: the script steps with O.step() in a
+  // loop of its own rather than O.run's worker thread (script_writer.cpp, write_run).
+  const cases::Scene cohesive =
+      cases::load_case(std::filesystem::path(DEMWB_SOURCE_DIR) / "cases/canonical/linear_cohesion_pair.toml");
+  const std::string c = write_yade_script(cohesive, make_run_plan(reference::PreparedScene(cohesive)));
+  EXPECT_TRUE(contains(c, "PyRunner(command='apply_cohesion()', iterPeriod=1, initRun=True)"));
+  EXPECT_TRUE(contains(c, "def steps(count):\n"));
+  EXPECT_TRUE(contains(c, "        O.step()\n"));
+  EXPECT_TRUE(contains(c, "        steps(n - O.iter)\n"));
+  EXPECT_TRUE(contains(c, "\nsteps(STEPS + 1 - O.iter)\n"));
+  EXPECT_FALSE(contains(c, "O.run("));
+  // Without a per-iteration Python force the run stays in YADE's own loop.
+  const cases::Scene plain = two_material_scene();
+  const std::string s = write_yade_script(plain, make_run_plan(reference::PreparedScene(plain)));
+  EXPECT_TRUE(contains(s, "        O.run(n - O.iter, True)  # wait=True"));
+  EXPECT_TRUE(contains(s, "\nO.run(STEPS + 1 - O.iter, True)\n"));
+  EXPECT_FALSE(contains(s, "O.step()"));
+}
+
 TEST(YadeScriptWriter, WritesEveryMaterialPairStiffnessFromThePairTable) {
   const cases::Scene scene = two_material_scene();
   const std::string s = write_yade_script(scene, make_run_plan(reference::PreparedScene(scene)));
