@@ -27,7 +27,9 @@ std::filesystem::path make_run_directory(const std::filesystem::path& parent, st
 }
 
 std::map<std::string, std::string> mpi_singleton_environment(const std::filesystem::path& dir) {
-  return {{"OMP_NUM_THREADS", "1"}, {"OMPI_MCA_orte_tmpdir_base", dir.string()}};
+  return {{"OMP_NUM_THREADS", "1"},
+          {"OMPI_MCA_orte_tmpdir_base", dir.string()},
+          {"OMPI_MCA_ess_singleton_isolated", "1"}};
 }
 
 }  // namespace reference
