@@ -9,11 +9,6 @@
 #include "dem/core/vector.hpp"
 
 namespace prepare {
-namespace {
-
-cases::Vector3 to_array(const dem::Vec3& v) { return {v[0], v[1], v[2]}; }
-
-}  // namespace
 
 LaunchFigures launch(std::vector<cases::ParticleSpec>& particles, const std::vector<double>& density,
                      const cases::WallSpec& wall, const cases::LaunchStageSpec& spec) {
@@ -29,12 +24,12 @@ LaunchFigures launch(std::vector<cases::ParticleSpec>& particles, const std::vec
   const dem::Vec3 u = spec.speed * (std::cos(theta) * t - std::sin(theta) * n);
   for (cases::ParticleSpec& p : particles) {
     if (p.fixed) continue;
-    p.position = to_array(cases::core_vec(p.position) + shift);
-    p.velocity = to_array(u);
+    p.position = cases::case_vec(cases::core_vec(p.position) + shift);
+    p.velocity = cases::case_vec(u);
     p.angular_velocity = {0.0, 0.0, 0.0};
   }
   out.duration = cases::launch_duration(out.enclosing_diameter, spec);
-  out.centre_of_mass = to_array(target);
+  out.centre_of_mass = cases::case_vec(target);
   return out;
 }
 

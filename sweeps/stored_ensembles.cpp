@@ -76,10 +76,12 @@ void read_store(StoredEnsemble& e, const SweepSpec& spec) {
     const auto stored = j.contains("mesh_sha256") ? j.at("mesh_sha256").get<std::map<std::string, std::string>>()
                                                   : std::map<std::string, std::string>{};
     const auto now = mesh_sha256(cases::load_case(spec.case_file));
-    for (const auto& [file, sha] : now) {
-      if (!stored.contains(file) || stored.at(file) != sha) mesh_changed = file;
+    if (stored != now) {
+      mesh_changed = "the set of mesh files";  // unless a file the case reads now names the change
+      for (const auto& [file, sha] : now) {
+        if (!stored.contains(file) || stored.at(file) != sha) mesh_changed = file;
+      }
     }
-    if (mesh_changed.empty() && stored != now) mesh_changed = "the set of mesh files";
   }
   if (!sweep_same || !case_same || !csv_same || !bed_same || !mesh_changed.empty()) {
     e.problem = fmt::format("stale: {} changed since the results were stored; run `demwb refresh --sweep {}`",

@@ -52,13 +52,13 @@ class GrossSlidingImpact {
  public:
   explicit GrossSlidingImpact(const SphereWallScene& s)
       : s_(s),
-        n_(vec(s.normal)),
-        x0_(vec(s.position)),
-        v0_(vec(s.velocity)),
-        w0_(vec(s.spin)),
+        n_(core_vec(s.normal)),
+        x0_(core_vec(s.position)),
+        v0_(core_vec(s.velocity)),
+        w0_(core_vec(s.spin)),
         approach_(-v0_.dot(n_)),
         normal_(s.mass, s.damping, s.stiffness, 0.0, approach_) {
-    const double distance = (x0_ - vec(s.wall_point)).dot(n_);
+    const double distance = (x0_ - core_vec(s.wall_point)).dot(n_);
     distance0_ = distance;
     start_ = (distance - s.radius) / approach_;
     duration_ = dem::laws::linear_contact_duration(s.stiffness, s.mass, s.damping);
@@ -302,7 +302,7 @@ void add_exact_metrics(const GrossSlidingImpact& impact, const SphereWallScene& 
   result.exact_metrics["rebound_angle"] =
       std::atan2(v_t.norm(), end.velocity.dot(n)) * 180.0 / std::numbers::pi;
   if (impact.initial_slip() > 0.0) {
-    const Vec3 x0 = vec(s.velocity) - vec(s.velocity).dot(n) * n - s.radius * vec(s.spin).cross(n);
+    const Vec3 x0 = core_vec(s.velocity) - core_vec(s.velocity).dot(n) * n - s.radius * core_vec(s.spin).cross(n);
     const Vec3 t_hat = x0 / x0.norm();
     const Vec3 u_after = v_t - s.radius * end.spin.cross(n);
     result.exact_metrics["tangential_restitution"] = -u_after.dot(t_hat) / x0.norm();
@@ -398,14 +398,14 @@ std::vector<std::string> ObliqueImpactSolver::unsupported_reasons(const Prepared
   if (g[0] != 0.0 || g[1] != 0.0 || g[2] != 0.0) reason("gravity must be zero (a free impact)");
   if (!reasons.empty()) return reasons;
   const SphereWallScene s = sphere_wall_scene(prepared);
-  const Vec3 n = vec(s.normal);
-  const double distance = (vec(s.position) - vec(s.wall_point)).dot(n);
+  const Vec3 n = core_vec(s.normal);
+  const double distance = (core_vec(s.position) - core_vec(s.wall_point)).dot(n);
   if (!(distance >= s.radius)) reason("the sphere must start clear of the wall (δ ≤ 0)");
-  if (!(-vec(s.velocity).dot(n) > 0.0)) reason("the sphere does not approach the wall");
+  if (!(-core_vec(s.velocity).dot(n) > 0.0)) reason("the sphere does not approach the wall");
   if (!reasons.empty()) return reasons;
   const GrossSlidingImpact impact(s);
   if (impact.friction() > 0.0 && !s.lever_is_radius) {
-    const Vec3 w_n = vec(s.spin).cross(n);
+    const Vec3 w_n = core_vec(s.spin).cross(n);
     const Vec3 off = w_n - w_n.dot(impact.slip_direction()) * impact.slip_direction();
     if (off.norm() > 1e-12 * (w_n.norm() + 1e-300)) {
       reason("the initial spin turns the slip direction while the lever r − δ/2 changes; only "
@@ -440,7 +440,7 @@ cases::RunResult ObliqueImpactSolver::run(const PreparedScene& prepared) const {
   for (const std::uint64_t k : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     const double t = static_cast<double>(k) * dt;
     const SphereState st = impact.at(t);
-    result.snapshots.push_back({t, {arr(st.position)}, {arr(st.velocity)}, {arr(st.spin)}});
+    result.snapshots.push_back({t, {case_vec(st.position)}, {case_vec(st.velocity)}, {case_vec(st.spin)}});
   }
   if (impact.start() + impact.duration() < t_end) {
     add_exact_metrics(impact, s, result);

@@ -27,9 +27,9 @@ constexpr double kRestTolerance = 1e-9;
 class SlidingMotion {
  public:
   SlidingMotion(const SphereWallScene& s, const Vec3& gravity)
-      : s_(s), n_(vec(s.normal)), x0_(vec(s.position)), v0_(vec(s.velocity)), w0_(vec(s.spin)) {
+      : s_(s), n_(core_vec(s.normal)), x0_(core_vec(s.position)), v0_(core_vec(s.velocity)), w0_(core_vec(s.spin)) {
     g_ = -gravity.dot(n_);
-    overlap_ = s.radius - (x0_ - vec(s.wall_point)).dot(n_);
+    overlap_ = s.radius - (x0_ - core_vec(s.wall_point)).dot(n_);
     lever_ = s.lever_is_radius ? s.radius : s.radius - 0.5 * overlap_;
     const Vec3 u0 = v0_ - lever_ * w0_.cross(n_);
     slip0_ = u0.norm();
@@ -80,21 +80,21 @@ std::vector<std::string> SlidingSolver::unsupported_reasons(const PreparedScene&
     reasons.push_back(fmt::format("analytic ({}): {}", who, why));
   };
   const SphereWallScene s = sphere_wall_scene(prepared);
-  const Vec3 n = vec(s.normal);
-  const Vec3 g = vec(scene.gravity);
+  const Vec3 n = core_vec(s.normal);
+  const Vec3 g = core_vec(scene.gravity);
   const double g_n = -g.dot(n);
   if (!(g_n > 0.0) || (g + g_n * n).norm() > 1e-12 * g.norm()) {
     reason("gravity must point into the wall along its normal (a horizontal plane)");
     return reasons;
   }
-  const double overlap = s.radius - (vec(s.position) - vec(s.wall_point)).dot(n);
+  const double overlap = s.radius - (core_vec(s.position) - core_vec(s.wall_point)).dot(n);
   const double resting = s.mass * g_n / s.stiffness;
   if (std::abs(overlap - resting) > kRestTolerance * resting) {
     reason(fmt::format("the sphere must start at its static overlap m g / k_e = {:.17g} m (got "
                        "{:.17g} m), or the normal spring–dashpot oscillates",
                        resting, overlap));
   }
-  const Vec3 v = vec(s.velocity);
+  const Vec3 v = core_vec(s.velocity);
   if (std::abs(v.dot(n)) > kRestTolerance * v.norm()) {
     reason("the initial velocity must lie in the plane of the wall");
   }
@@ -104,9 +104,9 @@ std::vector<std::string> SlidingSolver::unsupported_reasons(const PreparedScene&
 cases::RunResult SlidingSolver::run(const PreparedScene& prepared) const {
   const cases::Scene& scene = prepared.scene();
   const SphereWallScene s = sphere_wall_scene(prepared);
-  const SlidingMotion motion(s, vec(scene.gravity));
+  const SlidingMotion motion(s, core_vec(scene.gravity));
   const auto [dt, steps, every, t_end] = sample_grid(prepared);
-  const double weight = s.mass * -vec(scene.gravity).dot(vec(s.normal));
+  const double weight = s.mass * -core_vec(scene.gravity).dot(core_vec(s.normal));
 
   cases::RunResult result;
   result.status = cases::RunStatus::ok;
@@ -128,11 +128,11 @@ cases::RunResult SlidingSolver::run(const PreparedScene& prepared) const {
   for (const std::uint64_t k : cases::snapshot_steps(scene.output.snapshot_times, dt, steps)) {
     const double t = static_cast<double>(k) * dt;
     motion.at(t, x, v, w, f);
-    result.snapshots.push_back({t, {arr(x)}, {arr(v)}, {arr(w)}});
+    result.snapshots.push_back({t, {case_vec(x)}, {case_vec(v)}, {case_vec(w)}});
   }
   // The metric reads |v_t|: its slope is −μ g exactly when v0 lies along the slip direction and
   // keeps its sense while sliding.
-  const Vec3 v0 = vec(s.velocity);
+  const Vec3 v0 = core_vec(s.velocity);
   const double along = v0.dot(motion.slip_direction());
   const bool collinear = (v0 - along * motion.slip_direction()).norm() <= 1e-12 * v0.norm();
   if (motion.deceleration() > 0.0 && collinear &&

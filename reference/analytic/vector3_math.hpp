@@ -3,8 +3,8 @@
 
 #include <cmath>
 
+#include "cases/core_vector.hpp"
 #include "cases/scene.hpp"
-#include "dem/core/vector.hpp"
 
 // Small vector arithmetic on the case model's plain 3-vectors, and conversions to the core's.
 namespace reference::analytic {
@@ -12,10 +12,8 @@ namespace reference::analytic {
 /// Relative tolerance of the solvers' collinearity checks (off_line against the vector's length).
 inline constexpr double kCollinearTolerance = 1e-12;
 
-/// The case model's 3-vector as the core's.
-inline dem::Vec3 vec(const cases::Vector3& a) noexcept { return {a[0], a[1], a[2]}; }
-/// The core's 3-vector as the case model's.
-inline cases::Vector3 arr(const dem::Vec3& a) noexcept { return {a.x(), a.y(), a.z()}; }
+using cases::case_vec;  // the core's 3-vector as the case model's
+using cases::core_vec;  // the case model's 3-vector as the core's
 
 /// a − b.
 inline cases::Vector3 minus(const cases::Vector3& a, const cases::Vector3& b) noexcept {

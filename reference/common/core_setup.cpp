@@ -4,14 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "dem/contact/pair_table.hpp"
 #include "cases/core_vector.hpp"
 #include "cases/core_wall.hpp"
 #include "cases/time_step.hpp"
+#include "dem/contact/pair_table.hpp"
 
 namespace reference {
 namespace {
-
 
 /// The core's fluid from the case's.
 dem::Fluid to_fluid(const cases::FluidSpec& f) {
@@ -23,7 +22,9 @@ dem::Fluid to_fluid(const cases::FluidSpec& f) {
   out.virtual_mass = f.virtual_mass;
   out.pressure_gradient = cases::core_vec(f.pressure_gradient);
   out.velocity.uniform = cases::core_vec(f.velocity);
-  for (const auto& z : f.zones) out.velocity.zones.push_back({cases::core_vec(z.min), cases::core_vec(z.max), cases::core_vec(z.direction)});
+  for (const auto& z : f.zones) {
+    out.velocity.zones.push_back({cases::core_vec(z.min), cases::core_vec(z.max), cases::core_vec(z.direction)});
+  }
   out.velocity.speed = f.plug_speed;
   out.velocity.ramp_time = f.ramp_time;
   return out;

@@ -3,6 +3,7 @@
 
 #include <iterator>
 #include <stdexcept>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -358,8 +359,10 @@ void write_recorders(std::string& s, const cases::Scene& scene, const YadeRunPla
 /// which is half the run's time. Both loops run the same engines in the same order, so the
 /// trajectory is the same bit for bit (tests/engines/yade_canonical_test.cpp).
 void write_run(std::string& s, bool python_every_iteration) {
-  const char* advance = python_every_iteration ? "steps(" : "O.run(";
-  const char* wait = python_every_iteration ? "" : ", True";
+  // The Python call that runs `count` iterations and returns when they are done.
+  const auto run = [python_every_iteration](std::string_view count) {
+    return python_every_iteration ? fmt::format("steps({})", count) : fmt::format("O.run({}, True)", count);
+  };
   if (python_every_iteration) {
     s += "def steps(count):\n"
          "    \"\"\"Runs count iterations in this thread (O.step), not O.run's worker thread.\"\"\"\n"
@@ -368,12 +371,12 @@ void write_run(std::string& s, bool python_every_iteration) {
   }
   s += "# A snapshot at iteration n is the state before iteration n runs: x(n), v(n-1/2).\n"
        "for n in SNAPSHOT_ITERATIONS:\n"
-       "    if n > O.iter:\n";
-  fmt::format_to(std::back_inserter(s), "        {}n - O.iter{}){}\n", advance, wait,
-                 python_every_iteration ? "" : "  # wait=True: without it the script ends having run nothing");
-  s += "    record_snapshot()\n"
-       "# Iteration STEPS computes F(x(STEPS)) for the last trace row, hence STEPS + 1 iterations.\n";
-  fmt::format_to(std::back_inserter(s), "{}STEPS + 1 - O.iter{})\n", advance, wait);
+       "    if n > O.iter:\n"
+       "        " + run("n - O.iter") +
+       (python_every_iteration ? "\n" : "  # wait=True: without it the script ends having run nothing\n") +
+       "    record_snapshot()\n"
+       "# Iteration STEPS computes F(x(STEPS)) for the last trace row, hence STEPS + 1 iterations.\n" +
+       run("STEPS + 1 - O.iter") + "\n";
 }
 
 /// O.engines in YADE's loop order, and the run with its snapshots.
