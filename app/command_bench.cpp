@@ -39,6 +39,7 @@ struct BenchOptions {
   std::string chute_dir;
   double timeout_s = 3600.0;
   int repeat = 1;
+  bool speedup = false;  ///< also time the core on one thread in every repetition
   std::filesystem::path out;
 
   [[nodiscard]] bool wants(std::string_view engine) const {
@@ -52,11 +53,12 @@ struct CodeJob {
   std::string not_applicable;
 };
 
-/// Runs each code that can run the scene and then the core, one after the other, `o.repeat`
-/// times; a code that fails (missing, crashed, timed out) is not run again and reports that
-/// failure, the others go on; a code that cannot express the scene is n/a with its reason.
+/// Runs each code that can run the scene and then the core (on `o.threads` threads, then, with
+/// `o.speedup`, on one), one after the other, `o.repeat` times; a code that fails (missing,
+/// crashed, timed out) is not run again and reports that failure, the others go on; a code that
+/// cannot express the scene is n/a with its reason. `run_core` takes the thread count.
 void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<CodeJob>& jobs,
-               const std::function<bench::CoreRun()>& run_core) {
+               const std::function<bench::CoreRun(int)>& run_core) {
   for (std::size_t c = 0; c < o.codes.size(); ++c) {
     r.codes.push_back({o.codes[c], {}, std::nullopt});
     if (!jobs[c].run) {
@@ -75,7 +77,8 @@ void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<C
       r.codes[c].runs.push_back(jobs[c].run());
       failed[c] = r.codes[c].runs.back().status != "ok";
     }
-    if (run_core) r.core_runs.push_back(run_core());
+    if (run_core) r.core_runs.push_back(run_core(o.threads));
+    if (run_core && o.speedup) r.one_thread_runs.push_back(run_core(1));
     if (o.repeat > 1) std::fprintf(stderr, "bench: repetition %d of %d done\n", k + 1, o.repeat);
   }
   bench::choose_medians(r);
@@ -102,7 +105,7 @@ bench::BenchResult bench_chute(const BenchOptions& o) {
   const bench::LammpsData data = bench::read_lammps_data(*dir / "data.chute");
   r.particles = data.atoms.size();
   std::vector<CodeJob> jobs;
-  std::function<bench::CoreRun()> run_core;
+  std::function<bench::CoreRun(int)> run_core;
   for (const bench::BenchCode& code : o.codes) {
     CodeJob job;
     if (code.engine == "lammps") {
@@ -120,9 +123,9 @@ bench::BenchResult bench_chute(const BenchOptions& o) {
     jobs.push_back(std::move(job));
   }
   if (o.inhouse) {
-    run_core = [&o, &data, steps] {
+    run_core = [&data, steps](int threads) {
       const std::vector<std::uint64_t> at{0, 100};
-      return bench::run_core(bench::chute_setup(data, o.threads), steps, at);
+      return bench::run_core(bench::chute_setup(data, threads), steps, at);
     };
   }
   alternate(o, r, jobs, run_core);
@@ -165,7 +168,7 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
   const reference::PreparedScene prepared(scene);
   const reference::CoreSetup setup = reference::core_setup(prepared, o.threads);
   std::vector<CodeJob> jobs;
-  std::function<bench::CoreRun()> run_core;
+  std::function<bench::CoreRun(int)> run_core;
   // Every code with the same neighbour skin (LAMMPS driver's: a fifth of the smallest radius).
   const double skin = reference::lammps::neighbour_skin(scene);
   for (const bench::BenchCode& code : o.codes) {
@@ -205,9 +208,11 @@ bench::BenchResult bench_scene(const BenchOptions& o, const cases::Scene& scene,
   core.scheme_settings.orientation = false;  // LAMMPS' atom_style sphere keeps none either
   core.track_energy = scene.output.trace_energy;
   if (o.inhouse) {
-    run_core = [core, steps] {
+    run_core = [core, steps](int threads) {
       const std::vector<std::uint64_t> at{steps};
-      return bench::run_core(core, steps, at);
+      dem::SimulationSetup on = core;
+      on.threads = threads;
+      return bench::run_core(on, steps, at);
     };
   }
   alternate(o, r, jobs, run_core);
@@ -256,11 +261,13 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
       ("lammps", po::value<std::string>(), "LAMMPS binary to time (default $DEMWB_LAMMPS, else lmp in PATH)")
       ("liggghts", po::value<std::string>(), "LIGGGHTS binary to time (default $DEMWB_LIGGGHTS, else liggghts in PATH)")
       ("repeat", po::value<int>()->default_value(1), "run every engine this many times, alternating; report medians")
+      ("speedup", "also run the core on one thread right after each run on --threads N (N >= 2): reports the "
+                  "speed-up and checks that both end in the same state to the last bit")
       ("output,o", po::value<std::string>(), "output directory (default out/bench-<scene>)");
   const auto vm = parse_command(
       args,
       "usage: demwb bench chute|box|CASE.toml [--engines inhouse,lammps,liggghts] [--threads N] [--ranks N]\n"
-      "                   [--steps S] [--particles N] [--repeat N] [-o DIR]",
+      "                   [--steps S] [--particles N] [--repeat N] [--speedup] [-o DIR]",
       opts, {"scene"});
   if (!vm) return kExitOk;
   BenchOptions o;
@@ -293,6 +300,11 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   if (vm->count("chute-dir") != 0) o.chute_dir = (*vm)["chute-dir"].as<std::string>();
   o.repeat = (*vm)["repeat"].as<int>();
   if (o.repeat < 1 || o.repeat > 100) throw std::invalid_argument("--repeat must be between 1 and 100");
+  o.speedup = vm->count("speedup") != 0;
+  if (o.speedup && (o.threads < 2 || !o.inhouse)) {
+    throw std::invalid_argument("--speedup compares the core on --threads N (N >= 2) with one thread: give --threads 2 "
+                                "or more and keep inhouse among --engines");
+  }
   o.out = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())
                                    : std::filesystem::path("out/bench-" + std::filesystem::path(o.scene).stem().string());
 

@@ -53,6 +53,35 @@ std::string ratio_list(const std::vector<double>& all) {
   return each;
 }
 
+/// One run of the core as bench.json reports it.
+nlohmann::json core_json(const CoreRun& c) {
+  const Shares s = shares(c);
+  return {{"threads", c.threads},
+          {"particle_steps_per_s", c.particle_steps_per_s},
+          {"wall_s", c.wall_s},
+          {"bytes_per_particle", static_cast<double>(c.bytes) / static_cast<double>(c.particles)},
+          {"peak_rss_bytes_per_particle", c.peak_rss_bytes / static_cast<double>(c.particles)},
+          {"time_share_percent", {{"neighbor_build", s.neighbor}, {"forces", s.forces}, {"integration", s.integration}}},
+          {"seconds", {{"neighbor_build", c.timing.neighbor_build},
+                       {"pair_loop", c.timing.pair_loop},
+                       {"sphere_loop", c.timing.sphere_loop},
+                       {"packing_and_observation", c.timing.other},
+                       {"integration_and_rest", c.wall_s - c.timing.neighbor_build - c.timing.pair_loop -
+                                                    c.timing.sphere_loop - c.timing.other}}},
+          {"neighbor_builds", c.list_builds},
+          {"reorders", c.reorders},
+          {"state_sha256", c.state_sha256}};
+}
+
+/// The speed-up: "on 2 threads / on 1 thread: 1.86 (median of ...); final states identical ...".
+std::string speedup_text(const BenchResult& r) {
+  const std::vector<double> all = r.speedups();
+  const bool same = r.identical_across_threads().value_or(false);
+  return fmt::format("on {} threads / on 1 thread: {:.2f}{}; final states {}", r.core->threads, *r.speedup(),
+                     all.size() > 1 ? fmt::format(" (median of {} alternating pairs: {})", all.size(), ratio_list(all)) : "",
+                     same ? "identical to the last bit" : "DIFFER between runs (the deterministic mode is broken)");
+}
+
 }  // namespace
 
 const CodeBench* BenchResult::code(std::string_view engine) const {
@@ -83,12 +112,41 @@ std::optional<double> BenchResult::ratio(std::string_view engine) const {
   return core->particle_steps_per_s / c->median->particle_steps_per_s;
 }
 
+std::vector<double> BenchResult::speedups() const {
+  std::vector<double> out;
+  for (std::size_t k = 0; k < core_runs.size() && k < one_thread_runs.size(); ++k) {
+    if (one_thread_runs[k].particle_steps_per_s <= 0.0) continue;
+    out.push_back(core_runs[k].particle_steps_per_s / one_thread_runs[k].particle_steps_per_s);
+  }
+  return out;
+}
+
+std::optional<double> BenchResult::speedup() const {
+  const std::vector<double> s = speedups();
+  if (s.empty()) return std::nullopt;
+  return median_of(s);
+}
+
+std::optional<bool> BenchResult::identical_across_threads() const {
+  if (one_thread_runs.empty() || core_runs.empty()) return std::nullopt;
+  const std::string& first = core_runs.front().state_sha256;
+  for (const auto* runs : {&core_runs, &one_thread_runs}) {
+    for (const CoreRun& c : *runs) {
+      if (c.state_sha256.empty() || c.state_sha256 != first) return false;
+    }
+  }
+  return true;
+}
+
 void choose_medians(BenchResult& r) {
   const auto median = [](auto runs, auto speed) {
     std::sort(runs.begin(), runs.end(), [&](const auto& a, const auto& b) { return speed(a) < speed(b); });
     return runs[runs.size() / 2];
   };
   if (!r.core_runs.empty()) r.core = median(r.core_runs, [](const CoreRun& c) { return c.particle_steps_per_s; });
+  if (!r.one_thread_runs.empty()) {
+    r.one_thread = median(r.one_thread_runs, [](const CoreRun& c) { return c.particle_steps_per_s; });
+  }
   for (CodeBench& c : r.codes) {
     if (c.runs.empty()) continue;
     std::vector<CodeRun> ok;
@@ -107,6 +165,7 @@ bool BenchResult::ok() const {
   for (const EnergyCheck& c : checks) {
     if (!c.match) return false;
   }
+  if (identical_across_threads() == false) return false;
   for (const CodeBench& c : codes) {
     if (!c.median || (c.median->status != "ok" && c.median->status != "n/a")) return false;
   }
@@ -120,25 +179,7 @@ nlohmann::json bench_json(const BenchResult& r) {
   j["n_particles"] = r.particles;
   j["steps"] = r.steps;
   j["engines"] = nlohmann::json::object();
-  if (r.core) {
-    const CoreRun& c = *r.core;
-    const Shares s = shares(c);
-    j["engines"]["inhouse"] = {
-        {"threads", c.threads},
-        {"particle_steps_per_s", c.particle_steps_per_s},
-        {"wall_s", c.wall_s},
-        {"bytes_per_particle", static_cast<double>(c.bytes) / static_cast<double>(c.particles)},
-        {"peak_rss_bytes_per_particle", c.peak_rss_bytes / static_cast<double>(c.particles)},
-        {"time_share_percent", {{"neighbor_build", s.neighbor}, {"forces", s.forces}, {"integration", s.integration}}},
-        {"seconds", {{"neighbor_build", c.timing.neighbor_build},
-                     {"pair_loop", c.timing.pair_loop},
-                     {"sphere_loop", c.timing.sphere_loop},
-                     {"packing_and_observation", c.timing.other},
-                     {"integration_and_rest", c.wall_s - c.timing.neighbor_build - c.timing.pair_loop -
-                                                  c.timing.sphere_loop - c.timing.other}}},
-        {"neighbor_builds", c.list_builds},
-        {"reorders", c.reorders}};
-  }
+  if (r.core) j["engines"]["inhouse"] = core_json(*r.core);
   for (const CodeBench& c : r.codes) {
     if (!c.median) continue;
     const CodeRun& l = *c.median;
@@ -158,12 +199,22 @@ nlohmann::json bench_json(const BenchResult& r) {
     const auto ratio = r.ratio(engine);
     j[fmt::format("ratio_inhouse_to_{}", engine)] = ratio ? nlohmann::json(*ratio) : nlohmann::json(nullptr);
   }
+  j["thread_speedup"] = nullptr;
+  if (const auto speedup = r.speedup(); speedup && r.one_thread) {
+    j["thread_speedup"] = {{"threads", r.core->threads},
+                           {"median", *speedup},
+                           {"pairs", r.speedups()},
+                           {"one_thread", core_json(*r.one_thread)},
+                           {"identical_across_threads", *r.identical_across_threads()},
+                           {"state_sha256", r.core->state_sha256}};
+  }
   std::size_t repetitions = r.core_runs.size();
   for (const CodeBench& c : r.codes) repetitions = std::max(repetitions, c.runs.size());
   nlohmann::json reps = nlohmann::json::array();
   for (std::size_t k = 0; k < repetitions; ++k) {
     nlohmann::json rep = nlohmann::json::object();
     if (k < r.core_runs.size()) rep["inhouse_particle_steps_per_s"] = r.core_runs[k].particle_steps_per_s;
+    if (k < r.one_thread_runs.size()) rep["inhouse_one_thread_particle_steps_per_s"] = r.one_thread_runs[k].particle_steps_per_s;
     for (const CodeBench& c : r.codes) {
       if (k < c.runs.size() && c.runs[k].status == "ok") {
         rep[c.code.engine + "_particle_steps_per_s"] = c.runs[k].particle_steps_per_s;
@@ -215,6 +266,11 @@ std::string bench_table(const BenchResult& r) {
                                         : "");
     }
   }
+  if (r.speedup() && r.one_thread) {
+    out += fmt::format("inhouse on 1 thread: loop {:.3f} s, {:.4g} particle-steps/s (median run)\n", r.one_thread->wall_s,
+                       r.one_thread->particle_steps_per_s);
+    out += "inhouse " + speedup_text(r) + "\n";
+  }
   for (const EnergyCheck& c : r.checks) {
     out += fmt::format("{}: inhouse {}, LAMMPS reference log {}{} — {}\n", c.quantity, c.core, c.reference,
                        c.lammps.empty() ? "" : ", LAMMPS here " + c.lammps, c.match ? "match" : "MISMATCH");
@@ -260,6 +316,11 @@ std::string bench_markdown(const BenchResult& r, const std::string& command) {
                         all.size(), ratio_list(all));
     }
     md += ".\n";
+  }
+  if (r.speedup() && r.one_thread) {
+    md += fmt::format("\nThe core on one thread, run right after each run on {} threads: loop {:.3f} s, {:.4g} "
+                      "particle-steps/s (median run). Speed-up {}.\n",
+                      r.core->threads, r.one_thread->wall_s, r.one_thread->particle_steps_per_s, speedup_text(r));
   }
   md += "\nBytes per particle: the core counts the capacity of its arrays, lists and history; LAMMPS "
         "reports its own \"Per MPI rank memory allocation\", LIGGGHTS its \"Memory usage per processor\" "

@@ -40,6 +40,10 @@ struct BenchResult {
   std::uint64_t steps = 0;
   std::optional<CoreRun> core;       ///< the core's median run (by particle-steps/s)
   std::vector<CoreRun> core_runs;    ///< every repetition, in order (core and the codes alternate)
+  /// With `--speedup`: the core on one thread, run in every repetition right after its run on
+  /// `threads` threads, and the median of those runs.
+  std::vector<CoreRun> one_thread_runs;
+  std::optional<CoreRun> one_thread;
   std::vector<CodeBench> codes;      ///< the reference codes asked for, in the order asked
   std::vector<EnergyCheck> checks;
   /// Translational kinetic energy at the last step by engine [J] (a box or case file): the
@@ -54,16 +58,24 @@ struct BenchResult {
   [[nodiscard]] std::optional<double> ratio(std::string_view engine) const;
   /// Every pairwise ratio against the code.
   [[nodiscard]] std::vector<double> ratios(std::string_view engine) const;
-  /// True when every check matched and every code asked for ran (or cannot express the scene).
+  /// The core's speed-up on its threads over one thread, one value per repetition (the two runs
+  /// made one after the other); empty without one-thread runs.
+  [[nodiscard]] std::vector<double> speedups() const;
+  /// The median of speedups(), when there are one-thread runs.
+  [[nodiscard]] std::optional<double> speedup() const;
+  /// True when every run of the core, on one thread and on several, ended in the same state to
+  /// the last bit (the deterministic mode); nullopt without one-thread runs.
+  [[nodiscard]] std::optional<bool> identical_across_threads() const;
+  /// True when every check matched (the energies, and identical states across thread counts) and every code asked for ran (or cannot express the scene).
   [[nodiscard]] bool ok() const;
 };
 
-/// Sets `core` and every code's `median` from their runs.
+/// Sets `core`, `one_thread` and every code's `median` from their runs.
 void choose_medians(BenchResult& r);
 
 /// bench.json: {"scene", "n_particles", "steps", "engines": {"inhouse": {...}, "lammps": {...},
-/// "liggghts": {...}}, "ratio_inhouse_to_lammps", "ratio_inhouse_to_liggghts", "repetitions",
-/// "checks", "notes"}.
+/// "liggghts": {...}}, "ratio_inhouse_to_lammps", "ratio_inhouse_to_liggghts", "thread_speedup"
+/// (null without `--speedup`), "repetitions", "checks", "notes"}.
 nlohmann::json bench_json(const BenchResult& r);
 /// report.md: the scene, a table per engine, the ratios, the checks and how to reproduce.
 std::string bench_markdown(const BenchResult& r, const std::string& command);

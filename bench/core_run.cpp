@@ -6,12 +6,28 @@
 #include <algorithm>
 #include <chrono>
 
+#include "support/sha256.hpp"
+
 namespace bench {
 
 double peak_rss_bytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) * 1024.0;
+}
+
+std::string state_sha256(const dem::Simulation& sim) {
+  const auto& state = sim.state();
+  const std::size_t n = sim.particles().size();
+  std::string bytes;
+  bytes.reserve(n * 9 * sizeof(double));
+  for (std::uint32_t id = 0; id < n; ++id) {
+    const auto i = static_cast<Eigen::Index>(sim.slot(id));
+    for (const auto* field : {&state.position, &state.velocity, &state.angular_velocity}) {
+      bytes.append(reinterpret_cast<const char*>(field->col(i).data()), 3 * sizeof(double));
+    }
+  }
+  return support::sha256_hex(bytes);
 }
 
 CoreRun run_core(const dem::SimulationSetup& setup, std::uint64_t steps,
@@ -52,6 +68,7 @@ CoreRun run_core(const dem::SimulationSetup& setup, std::uint64_t steps,
   run.list_entries = sim.force_field().neighbors().size();
   run.interacting_pairs = sim.force_field().interacting_pairs();
   run.reorders = sim.reorders();
+  run.state_sha256 = state_sha256(sim);
   return run;
 }
 

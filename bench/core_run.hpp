@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -27,12 +28,18 @@ struct CoreRun {
   std::size_t interacting_pairs = 0;   ///< of those, interacting at the last commit
   std::uint64_t reorders = 0;
   std::vector<std::pair<std::uint64_t, AllKinetic>> energies;  ///< kinetic energies at chosen steps
+  /// SHA-256 of every sphere's position, velocity and spin at the end, in setup order: two runs
+  /// of one scene ended in the same state, to the last bit, when these are equal.
+  std::string state_sha256;
 };
 
 /// Builds the simulation of `setup`, runs `steps` steps timing the loop, and records the kinetic
 /// energies (all spheres, LAMMPS's way) at `energy_steps`.
 CoreRun run_core(const dem::SimulationSetup& setup, std::uint64_t steps,
                  std::span<const std::uint64_t> energy_steps);
+
+/// SHA-256 of the bytes of every sphere's position, velocity and angular velocity, in setup order.
+std::string state_sha256(const dem::Simulation& sim);
 
 /// Peak resident set size of this process [bytes] (getrusage).
 double peak_rss_bytes();

@@ -36,6 +36,31 @@ TEST(DemwbBench, BoxWritesBenchJsonWithTheContractFields) {
   EXPECT_NE(r.out.find("inhouse"), std::string::npos);
 }
 
+TEST(DemwbBench, SpeedupRunsTheCoreOnOneThreadToo) {
+  const fs::path out = scratch("bench_speedup");
+  const auto r = demwb({"bench", "box", "--engines", "inhouse", "--particles", "300", "--steps", "30", "--repeat", "2",
+                        "--threads", "2", "--speedup", "-o", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(support::read_file(out / "bench.json"));
+  const auto& s = j["thread_speedup"];
+  EXPECT_EQ(s["threads"], 2);
+  EXPECT_EQ(s["pairs"].size(), 2U);
+  EXPECT_GT(s["median"].get<double>(), 0.0);
+  EXPECT_EQ(s["one_thread"]["threads"], 1);
+  EXPECT_GT(s["one_thread"]["particle_steps_per_s"].get<double>(), 0.0);
+  // The deterministic mode: the same final state on one thread and on two.
+  EXPECT_TRUE(s["identical_across_threads"].get<bool>());
+  EXPECT_EQ(s["state_sha256"].get<std::string>().size(), 64U);
+  EXPECT_EQ(s["one_thread"]["state_sha256"], s["state_sha256"]);
+  EXPECT_NE(r.out.find("inhouse on 2 threads / on 1 thread"), std::string::npos) << r.out;
+  // Without --speedup nothing of it.
+  const fs::path plain = scratch("bench_no_speedup");
+  ASSERT_EQ(demwb({"bench", "box", "--engines", "inhouse", "--particles", "300", "--steps", "30", "-o", plain.string()})
+                .exit_code,
+            0);
+  EXPECT_TRUE(nlohmann::json::parse(support::read_file(plain / "bench.json"))["thread_speedup"].is_null());
+}
+
 TEST(DemwbBench, BadUsageExitsTwoNamingTheProblem) {
   const auto scene = demwb({"bench", "pyramid"});
   EXPECT_EQ(scene.exit_code, 2);
@@ -49,6 +74,9 @@ TEST(DemwbBench, BadUsageExitsTwoNamingTheProblem) {
   const auto none = demwb({"bench", "box", "--engines", ","});
   EXPECT_EQ(none.exit_code, 2);
   EXPECT_NE(none.err.find("name at least one"), std::string::npos) << none.err;
+  const auto speedup = demwb({"bench", "box", "--speedup"});
+  EXPECT_EQ(speedup.exit_code, 2);
+  EXPECT_NE(speedup.err.find("--speedup"), std::string::npos) << speedup.err;
   const auto engines = demwb({"bench", "box", "--engines", "yade"});
   EXPECT_EQ(engines.exit_code, 2);
   EXPECT_NE(engines.err.find("cannot be benchmarked"), std::string::npos) << engines.err;

@@ -8,8 +8,10 @@
 
 namespace {
 
-bench::CoreRun core(double speed) {
+bench::CoreRun core(double speed, int threads = 1, const std::string& state = "same") {
   bench::CoreRun c;
+  c.threads = threads;
+  c.state_sha256 = state;
   c.particle_steps_per_s = speed;
   c.wall_s = 1.0;
   c.particles = 10;
@@ -76,6 +78,43 @@ TEST(BenchResult, AFailedCodeFailsTheBenchAndNotApplicableDoesNot) {
   EXPECT_TRUE(na.ok());
   EXPECT_FALSE(na.ratio("liggghts").has_value());
   EXPECT_TRUE(bench::bench_json(na)["ratio_inhouse_to_liggghts"].is_null());
+}
+
+TEST(BenchResult, TheThreadSpeedupIsTheMedianOfAlternatingPairsAndDifferentFinalStatesFailTheBench) {
+  bench::BenchResult r;
+  r.core_runs = {core(380.0, 2), core(360.0, 2), core(400.0, 2)};
+  EXPECT_FALSE(r.speedup().has_value());  // no one-thread runs: nothing to say
+  EXPECT_FALSE(r.identical_across_threads().has_value());
+  EXPECT_TRUE(r.ok());
+  r.one_thread_runs = {core(200.0), core(150.0), core(200.0)};
+  bench::choose_medians(r);
+  EXPECT_EQ(r.speedups(), (std::vector<double>{1.9, 2.4, 2.0}));
+  EXPECT_DOUBLE_EQ(*r.speedup(), 2.0);
+  EXPECT_DOUBLE_EQ(r.one_thread->particle_steps_per_s, 200.0);
+  EXPECT_EQ(r.identical_across_threads(), true);
+  EXPECT_TRUE(r.ok());
+  const nlohmann::json j = bench::bench_json(r);
+  EXPECT_EQ(j["thread_speedup"]["threads"], 2);
+  EXPECT_DOUBLE_EQ(j["thread_speedup"]["median"].get<double>(), 2.0);
+  EXPECT_EQ(j["thread_speedup"]["pairs"].size(), 3U);
+  EXPECT_EQ(j["thread_speedup"]["one_thread"]["threads"], 1);
+  EXPECT_TRUE(j["thread_speedup"]["identical_across_threads"].get<bool>());
+  EXPECT_DOUBLE_EQ(j["repetitions"][1]["inhouse_one_thread_particle_steps_per_s"].get<double>(), 150.0);
+  EXPECT_NE(bench::bench_table(r).find("inhouse on 2 threads / on 1 thread: 2.00 (median of 3 alternating pairs: "
+                                       "1.90, 2.40, 2.00); final states identical to the last bit"),
+            std::string::npos)
+      << bench::bench_table(r);
+  EXPECT_NE(bench::bench_markdown(r, "demwb bench box --threads 2 --speedup").find("Speed-up on 2 threads"),
+            std::string::npos);
+  // One run ending elsewhere — on one thread or on two — breaks the deterministic mode: the bench fails.
+  for (const bool in_one : {true, false}) {
+    bench::BenchResult broken = r;
+    (in_one ? broken.one_thread_runs[2] : broken.core_runs[1]).state_sha256 = "other";
+    EXPECT_EQ(broken.identical_across_threads(), false);
+    EXPECT_FALSE(broken.ok());
+    EXPECT_FALSE(bench::bench_json(broken)["thread_speedup"]["identical_across_threads"].get<bool>());
+    EXPECT_NE(bench::bench_table(broken).find("DIFFER"), std::string::npos);
+  }
 }
 
 }  // namespace
