@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "dem/core/balanced_for.hpp"
 #include "dem/core/model_error.hpp"
 #include "dem/core/parallel_for.hpp"
 #include "dem/neighbors/interaction_reach.hpp"
@@ -20,6 +21,10 @@ namespace {
 /// Spheres per chunk of the per-sphere loop: chunks, not threads, group the energy sums, so the
 /// sums are the same for any thread count.
 constexpr std::uint32_t kSphereChunk = 4096;
+
+/// Spheres per chunk of the opening pass (kick, drift, packing) as the threads share it out, and
+/// of the wall and field pass when it keeps no energy sums.
+constexpr std::int64_t kOpeningChunk = 512;
 
 /// True when some sub-model of the choice reads history beyond the tangential slip: rolling
 /// slip (rolling resistance), the largest overlap (hysteretic loading), the JKR neck, the last
@@ -344,7 +349,8 @@ double ContactForceField::kick_drift_pack(KinematicState& state, const Accelerat
     }
     return p;
   };
-  const double worst = parallel_max(threads, n, 0.0, [=, this](std::int64_t i) {
+  // Balanced chunks, not a static split: on two cores of unequal speed the faster takes on more.
+  const double worst = balanced_max(threads, n, kOpeningChunk, 0.0, [=, this](std::int64_t i) {
     // Component by component in scalars: with the three as small arrays, GCC kept them on the
     // stack and stored and reloaded them in mixed widths, stalling on store forwarding.
     const std::int64_t c = 3 * i;
@@ -663,13 +669,16 @@ void ContactForceField::run_pairs(const KinematicState& state, double elapsed, b
   if (count == 1) {
     run_slab(0);
   } else {
-    // Even slabs, then odd ones: two slabs of one colour never share a sphere. A static split
-    // gives each thread the same run of slabs every step, and so the spheres the per-sphere
-    // passes give it (slab-major order): a dynamic one moved slabs between threads from step
-    // to step and with them their spheres' cache lines (2 threads: loop time ×0.65–0.77).
+    // Even slabs, then odd ones: two slabs of one colour never share a sphere. Each thread starts
+    // on the run of slabs a static split gives it, the same every step, and so on the spheres the
+    // opening pass gives it (slab-major order): handing slabs out one by one moved them between
+    // threads from step to step and with them their spheres' cache lines (2 threads: loop time
+    // ×0.65–0.77). A thread done with its run takes slabs from the far end of the other's, so a
+    // core the host slows does not hold the faster one at the barrier (docs/performance.md).
     for (std::uint32_t colour = 0; colour < 2; ++colour) {
       const auto half = static_cast<std::int64_t>((count - colour + 1) / 2);
-      parallel_for(threads, half, [&](std::int64_t h) { run_slab(colour + 2 * static_cast<std::uint32_t>(h)); });
+      balanced_for(threads, half, std::int64_t{1},
+                   [&](std::int64_t h) { run_slab(colour + 2 * static_cast<std::uint32_t>(h)); });
     }
   }
   if (commit) list_.finish_commit();
@@ -685,23 +694,27 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
     out->linear.resize(3, cols);
     out->angular.resize(3, cols);
   }
-  const std::uint32_t chunks = std::max<std::uint32_t>(1, (n + kSphereChunk - 1) / kSphereChunk);
+  const bool track = setup_.track_energy;
+  // The energy sums are grouped by kSphereChunk spheres, whatever the thread count; without them
+  // (no ledger: every sum stays zero) the threads share out chunks of kOpeningChunk, which split
+  // 10,000 spheres evenly where three chunks of 4,096 could not.
+  const auto chunk_size = track ? kSphereChunk : static_cast<std::uint32_t>(kOpeningChunk);
+  const std::uint32_t chunks = std::max<std::uint32_t>(1, (n + chunk_size - 1) / chunk_size);
   chunk_totals_.assign(chunks, EnergyTotals{});
   if (!setup_.meshes.empty() && mesh_plans_.size() < chunks) mesh_plans_.resize(chunks);
   chunk_totals_[0] = totals_;  // the running sums continue from the pair loop's
   const std::span<WallEntry> wall_entries = wall_list_.entries();
   const std::span<ExtendedHistory> wall_ext = wall_list_.extended();
   const WallLeverArm lever = setup_.wall_lever_arm;
-  const bool track = setup_.track_energy;
   const double t_now = state.time;
   const int threads = std::max(setup_.threads, 1);
   const bool gravity_only = setup_.fields.gravity_only();
 
   const bool finishes = out != nullptr || kick.velocity != nullptr;
-  parallel_for(threads, chunks, [&](std::uint32_t chunk) {
+  balanced_for(threads, chunks, 1U, [&](std::uint32_t chunk) {
     EnergyTotals& sums = chunk_totals_[chunk];
-    const std::uint32_t end = std::min(n, (chunk + 1) * kSphereChunk);
-    for (std::uint32_t i = chunk * kSphereChunk; i < end; ++i) {
+    const std::uint32_t end = std::min(n, (chunk + 1) * chunk_size);
+    for (std::uint32_t i = chunk * chunk_size; i < end; ++i) {
       const auto c = static_cast<Eigen::Index>(i);
       if (props_.fixed[i] != 0) {
         if (finishes) store_and_kick(out, kick, c, Vec3::Zero(), Vec3::Zero());

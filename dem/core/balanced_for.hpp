@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstdint>
+
+#include <omp.h>
+
+#include "dem/core/parallel_for.hpp"
+
+namespace dem {
+
+/// The chunks of one thread's share of a balanced loop still to run, [front, back), in one word:
+/// the owner claims from the front and a thread that has finished its own share from the back,
+/// each with one compare-and-swap, so that no chunk runs twice and none is left.
+struct alignas(64) ShareCursor {
+  std::atomic<std::uint64_t> range{0};
+
+  /// Sets the share to the chunks [front, back).
+  void reset(std::uint32_t front, std::uint32_t back) noexcept {
+    range.store((static_cast<std::uint64_t>(back) << 32) | front, std::memory_order_relaxed);
+  }
+  /// Claims the next chunk from the front (the owner) or the back (a thief); false when none is left.
+  bool claim(bool from_back, std::uint32_t& chunk) noexcept {
+    std::uint64_t r = range.load(std::memory_order_relaxed);
+    for (;;) {
+      const auto front = static_cast<std::uint32_t>(r);
+      const auto back = static_cast<std::uint32_t>(r >> 32);
+      if (front >= back) return false;
+      const std::uint64_t next = from_back ? (static_cast<std::uint64_t>(back - 1) << 32) | front
+                                           : (static_cast<std::uint64_t>(back) << 32) | (front + 1);
+      if (range.compare_exchange_weak(r, next, std::memory_order_relaxed)) {
+        chunk = from_back ? back - 1 : front;
+        return true;
+      }
+    }
+  }
+};
+
+/// Most threads a balanced loop shares its work between; a larger team runs parallel_for's
+/// static split instead.
+inline constexpr int kMaxBalancedThreads = 64;
+
+/// Runs run(thread, c) for every chunk c in [0, chunks) on `threads` OpenMP threads (2 ≤ threads ≤
+/// kMaxBalancedThreads). Thread t starts on its own share, chunks [chunks·t/T, chunks·(t+1)/T) from
+/// the front, then takes chunks from the back of the other shares, nearest first. A share no
+/// thread owns (a team smaller than asked for) is taken by the others in the same way.
+template <typename Run>
+inline void balanced_chunks(int threads, std::uint32_t chunks, Run&& run) {
+  std::array<ShareCursor, kMaxBalancedThreads> shares;
+  const auto parts = static_cast<std::uint32_t>(threads);
+  const auto first_of = [&](std::uint32_t t) {
+    return static_cast<std::uint32_t>(static_cast<std::uint64_t>(chunks) * t / parts);
+  };
+  for (std::uint32_t t = 0; t < parts; ++t) shares[t].reset(first_of(t), first_of(t + 1));
+#pragma omp parallel num_threads(threads)
+  {
+    const auto me = static_cast<std::uint32_t>(omp_get_thread_num());
+    std::uint32_t c = 0;
+    while (shares[me].claim(false, c)) run(me, c);
+    for (std::uint32_t k = 1; k < parts; ++k) {
+      ShareCursor& other = shares[(me + k) % parts];
+      while (other.claim(true, c)) run(me, c);
+    }
+  }
+}
+
+/// balanced_for's loop on 2 ≤ threads ≤ kMaxBalancedThreads. Kept out of line: its arrays of
+/// cursors, aligned to cache lines, cost the caller's plain loop 8–20 % when inlined beside it
+/// (the chute's opening pass on one thread, docs/performance.md).
+template <typename Index, typename Body>
+[[gnu::noinline]] void balanced_for_chunks(int threads, Index n, Index chunk, Body& body) {
+  const auto chunks = static_cast<std::uint32_t>((n + chunk - 1) / chunk);
+  // Flattened: the body is inlined into the chunk's loop as a static split's loop inlines it.
+  balanced_chunks(threads, chunks, [&](std::uint32_t, std::uint32_t c) __attribute__((flatten)) {
+    const Index from = static_cast<Index>(c) * chunk;
+    const Index to = std::min<Index>(n, from + chunk);
+    for (Index i = from; i < to; ++i) body(i);
+  });
+}
+
+/// balanced_max's loop on 2 ≤ threads ≤ kMaxBalancedThreads (out of line, as balanced_for_chunks).
+template <typename Index, typename Body>
+[[gnu::noinline]] double balanced_max_chunks(int threads, Index n, Index chunk, double start, Body& body) {
+  struct alignas(64) Largest {
+    double value;
+  };
+  std::array<Largest, kMaxBalancedThreads> worst;
+  worst.fill({start});
+  const auto chunks = static_cast<std::uint32_t>((n + chunk - 1) / chunk);
+  balanced_chunks(threads, chunks, [&](std::uint32_t thread, std::uint32_t c) __attribute__((flatten)) {
+    const Index from = static_cast<Index>(c) * chunk;
+    const Index to = std::min<Index>(n, from + chunk);
+    double largest = worst[thread].value;
+    for (Index i = from; i < to; ++i) largest = std::max(largest, body(i));
+    worst[thread].value = largest;
+  });
+  double largest = start;
+  for (const Largest& w : worst) largest = std::max(largest, w.value);
+  return largest;
+}
+
+/// Runs body(i) for every i in [0, n) on `threads` OpenMP threads, in chunks of `chunk`
+/// consecutive indices. Each thread starts on its own contiguous share, the share a static split
+/// would give it (so a thread meets the same data pass after pass), and then takes chunks from
+/// the far end of the shares still unfinished. On a machine whose cores run at unequal speed (a
+/// virtual machine whose host loads one of them) the faster core does more, where a static split
+/// would leave it waiting at the barrier. Within a chunk the indices run in increasing order;
+/// which thread runs a chunk varies, so body(i) must not depend on it: the loop gives the same
+/// results as parallel_for whenever the bodies are independent of one another. One thread (or a
+/// loop of one chunk) runs the plain loop in place.
+template <typename Index, typename Body>
+inline void balanced_for(int threads, Index n, Index chunk, Body&& body) {
+  if (threads > kMaxBalancedThreads) {
+    parallel_for(threads, n, body);
+  } else if (threads <= 1 || n <= chunk) {
+    for (Index i = 0; i < n; ++i) body(i);
+  } else {
+    balanced_for_chunks(threads, n, chunk, body);
+  }
+}
+
+/// The largest of body(i) over [0, n) (and `start`), computed as balanced_for runs its loop (the
+/// largest of a set does not depend on the order it is taken in).
+template <typename Index, typename Body>
+inline double balanced_max(int threads, Index n, Index chunk, double start, Body&& body) {
+  if (threads > kMaxBalancedThreads) return parallel_max(threads, n, start, body);
+  if (threads > 1 && n > chunk) return balanced_max_chunks(threads, n, chunk, start, body);
+  double worst = start;
+  for (Index i = 0; i < n; ++i) worst = std::max(worst, body(i));
+  return worst;
+}
+
+}  // namespace dem
