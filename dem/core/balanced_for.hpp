@@ -22,13 +22,18 @@ struct alignas(64) ShareCursor {
   void reset(std::uint32_t front, std::uint32_t back) noexcept {
     range.store((static_cast<std::uint64_t>(back) << 32) | front, std::memory_order_relaxed);
   }
-  /// Claims the next chunk from the front (the owner) or the back (a thief); false when none is left.
-  bool claim(bool from_back, std::uint32_t& chunk) noexcept {
+  /// Claims the next chunk from the front (the owner); false when none is left.
+  bool claim_front(std::uint32_t& chunk) noexcept { return claim(false, 0, chunk); }
+  /// Claims the last chunk (a thief) while more than `leave` remain; false otherwise.
+  bool claim_back(std::uint32_t leave, std::uint32_t& chunk) noexcept { return claim(true, leave, chunk); }
+
+ private:
+  bool claim(bool from_back, std::uint32_t leave, std::uint32_t& chunk) noexcept {
     std::uint64_t r = range.load(std::memory_order_relaxed);
     for (;;) {
       const auto front = static_cast<std::uint32_t>(r);
       const auto back = static_cast<std::uint32_t>(r >> 32);
-      if (front >= back) return false;
+      if (front >= back || back - front <= leave) return false;
       const std::uint64_t next = from_back ? (static_cast<std::uint64_t>(back - 1) << 32) | front
                                            : (static_cast<std::uint64_t>(back) << 32) | (front + 1);
       if (range.compare_exchange_weak(r, next, std::memory_order_relaxed)) {
@@ -45,8 +50,10 @@ inline constexpr int kMaxBalancedThreads = 64;
 
 /// Runs run(thread, c) for every chunk c in [0, chunks) on `threads` OpenMP threads (2 ≤ threads ≤
 /// kMaxBalancedThreads). Thread t starts on its own share, chunks [chunks·t/T, chunks·(t+1)/T) from
-/// the front, then takes chunks from the back of the other shares, nearest first. A share no
-/// thread owns (a team smaller than asked for) is taken by the others in the same way.
+/// the front, then takes chunks from the back of the other shares, nearest first, leaving each
+/// owner the last of its own: on cores of equal speed, where the threads finish nearly together,
+/// a chunk's data then stays in the cache of the thread the next pass gives it to. A share no
+/// thread owns (a team smaller than asked for) is taken whole by the others.
 template <typename Run>
 inline void balanced_chunks(int threads, std::uint32_t chunks, Run&& run) {
   std::array<ShareCursor, kMaxBalancedThreads> shares;
@@ -58,11 +65,13 @@ inline void balanced_chunks(int threads, std::uint32_t chunks, Run&& run) {
 #pragma omp parallel num_threads(threads)
   {
     const auto me = static_cast<std::uint32_t>(omp_get_thread_num());
+    const auto team = static_cast<std::uint32_t>(omp_get_num_threads());
     std::uint32_t c = 0;
-    while (shares[me].claim(false, c)) run(me, c);
+    while (shares[me].claim_front(c)) run(me, c);
     for (std::uint32_t k = 1; k < parts; ++k) {
-      ShareCursor& other = shares[(me + k) % parts];
-      while (other.claim(true, c)) run(me, c);
+      const std::uint32_t other = (me + k) % parts;
+      const std::uint32_t leave = other < team ? 1 : 0;  // an owner that started keeps its last chunk
+      while (shares[other].claim_back(leave, c)) run(me, c);
     }
   }
 }
