@@ -200,7 +200,7 @@ nlohmann::json bench_json(const BenchResult& r) {
     j[fmt::format("ratio_inhouse_to_{}", engine)] = ratio ? nlohmann::json(*ratio) : nlohmann::json(nullptr);
   }
   j["thread_speedup"] = nullptr;
-  if (const auto speedup = r.speedup(); speedup && r.one_thread) {
+  if (const auto speedup = r.speedup(); speedup && r.one_thread && r.core) {
     j["thread_speedup"] = {{"threads", r.core->threads},
                            {"median", *speedup},
                            {"pairs", r.speedups()},
@@ -266,7 +266,7 @@ std::string bench_table(const BenchResult& r) {
                                         : "");
     }
   }
-  if (r.speedup() && r.one_thread) {
+  if (r.speedup() && r.one_thread && r.core) {
     out += fmt::format("inhouse on 1 thread: loop {:.3f} s, {:.4g} particle-steps/s (median run)\n", r.one_thread->wall_s,
                        r.one_thread->particle_steps_per_s);
     out += "inhouse " + speedup_text(r) + "\n";
@@ -317,7 +317,7 @@ std::string bench_markdown(const BenchResult& r, const std::string& command) {
     }
     md += ".\n";
   }
-  if (r.speedup() && r.one_thread) {
+  if (r.speedup() && r.one_thread && r.core) {
     md += fmt::format("\nThe core on one thread, run right after each run on {} threads: loop {:.3f} s, {:.4g} "
                       "particle-steps/s (median run). Speed-up {}.\n",
                       r.core->threads, r.one_thread->wall_s, r.one_thread->particle_steps_per_s, speedup_text(r));
