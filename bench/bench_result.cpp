@@ -73,12 +73,22 @@ nlohmann::json core_json(const CoreRun& c) {
           {"state_sha256", c.state_sha256}};
 }
 
+/// The one-thread run beside the speed-up: core_json without the peak resident set, which is the
+/// process's and so also the N-thread runs'.
+nlohmann::json one_thread_json(const CoreRun& c) {
+  nlohmann::json j = core_json(c);
+  j.erase("peak_rss_bytes_per_particle");
+  return j;
+}
+
 /// The speed-up: "on 2 threads / on 1 thread: 1.86 (median of ...); final states identical ...".
 std::string speedup_text(const BenchResult& r) {
   const std::vector<double> all = r.speedups();
   const bool same = r.identical_across_threads().value_or(false);
   return fmt::format("on {} threads / on 1 thread: {:.2f}{}; final states {}", r.core->threads, *r.speedup(),
-                     all.size() > 1 ? fmt::format(" (median of {} alternating pairs: {})", all.size(), ratio_list(all)) : "",
+                     all.size() > 1 ? fmt::format(" (median of {} pairs, {} threads then 1: {})", all.size(),
+                                                  r.core->threads, ratio_list(all))
+                                    : "",
                      same ? "identical to the last bit" : "DIFFER between runs (the deterministic mode is broken)");
 }
 
@@ -204,7 +214,7 @@ nlohmann::json bench_json(const BenchResult& r) {
     j["thread_speedup"] = {{"threads", r.core->threads},
                            {"median", *speedup},
                            {"pairs", r.speedups()},
-                           {"one_thread", core_json(*r.one_thread)},
+                           {"one_thread", one_thread_json(*r.one_thread)},
                            {"identical_across_threads", *r.identical_across_threads()},
                            {"state_sha256", r.core->state_sha256}};
   }

@@ -79,6 +79,10 @@ constexpr std::array kMetrics{
     MetricInfo{"orf_largest_drop", "-",
                "largest fall of the ORF between two consecutive snapshots: the biggest share of the reservoir cleared "
                "at once (large fragments make it large, a stream small)", false, false},
+    MetricInfo{"largest_departed_fragment", "-",
+               "largest fragment (spheres closer than 1.05 × the sum of their radii) of the mobile spheres whose centres "
+               "have left the compare.packing region, as a share of the dose's volume, over all snapshots: a plug "
+               "pushed out whole makes it large, a stream of single spheres small", false, false},
     MetricInfo{"mass_flow_rate", "kg/s",
                "steady discharge rate: least-squares slope of the mobile mass past the compare.discharge outlet "
                "against time, over the snapshots at which the share past it lies in compare.discharge.fit", false, false},

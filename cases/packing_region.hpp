@@ -11,13 +11,14 @@
 namespace cases {
 
 /// The metrics measured in compare.packing's region (docs/metrics.md, "Packing").
-inline constexpr std::array<std::string_view, 7> kPackingMetrics{
+inline constexpr std::array<std::string_view, 8> kPackingMetrics{
     "packing_fraction", "packing_fraction_interior", "orf", "dose_remaining", "coordination_number",
-    "fluidisation_time", "orf_largest_drop"};
+    "fluidisation_time", "orf_largest_drop", "largest_departed_fragment"};
 
 /// The packing metrics read from the whole ORF curve over the snapshots rather than from one
 /// snapshot (docs/metrics.md, "Fluidisation").
-inline constexpr std::array<std::string_view, 2> kFluidisationMetrics{"fluidisation_time", "orf_largest_drop"};
+inline constexpr std::array<std::string_view, 3> kFluidisationMetrics{"fluidisation_time", "orf_largest_drop",
+                                                                      "largest_departed_fragment"};
 
 /// The fewest snapshots a fluidisation metric reads (a curve needs two points).
 inline constexpr std::size_t kMinFluidisationSnapshots = 2;

@@ -16,7 +16,7 @@ namespace {
 /// decelerations, spins and works; absolute for the dimensionless restitutions and amplitude
 /// error, and for the rebound angle (degrees, whose zero is not special); both for end-state
 /// velocity components.
-constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 31> kDefaults{{
+constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 32> kDefaults{{
     {"contact_duration", {1e-3, 0.0}},
     {"restitution", {0.0, 1e-3}},
     {"max_overlap", {1e-3, 0.0}},
@@ -50,6 +50,7 @@ constexpr std::array<std::pair<std::string_view, cases::Tolerance>, 31> kDefault
     {"coordination_number", {0.0, 1e-3}},
     {"discharged_fraction", {0.0, 1e-3}},
     {"orf_largest_drop", {0.0, 1e-3}},
+    {"largest_departed_fragment", {0.0, 1e-3}},
     {"fluidisation_time", {1e-3, 0.0}},
     // A rate: relative.
     {"mass_flow_rate", {1e-3, 0.0}},

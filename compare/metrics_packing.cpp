@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "compare/metrics_packing.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -13,7 +14,8 @@
 namespace comparison {
 namespace {
 
-/// A metric read from the run's ORF curve: fluidisation_time or orf_largest_drop.
+/// A metric read from the run's snapshots of the bed: fluidisation_time or orf_largest_drop from
+/// the ORF curve, largest_departed_fragment from the departed spheres.
 CohesionMetric fluidisation_metric(const std::string& name, const cases::Scene& scene, const cases::RunResult& run) {
   auto series = packing_series(scene, run);
   if (const auto* problem = std::get_if<std::string>(&series)) return CohesionMetric{std::nullopt, *problem};
@@ -24,10 +26,13 @@ CohesionMetric fluidisation_metric(const std::string& name, const cases::Scene& 
   }
   std::vector<double> times;
   std::vector<double> orf;
+  double fragment = 0.0;
   for (const PackingSample& s : samples) {
     times.push_back(s.time);
     orf.push_back(s.orf);
+    fragment = std::max(fragment, s.largest_departed_fragment);
   }
+  if (name == "largest_departed_fragment") return CohesionMetric{fragment, ""};
   if (name == "orf_largest_drop") return CohesionMetric{largest_drop(orf), ""};
   const double level = scene.compare.packing->orf_threshold;
   if (const auto t = first_time_at_or_below(times, orf, level)) return CohesionMetric{*t, ""};

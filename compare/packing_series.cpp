@@ -3,13 +3,38 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "cases/core_vector.hpp"
+#include "compare/metrics_breakup.hpp"
 #include "compare/packing_geometry.hpp"
 
 namespace comparison {
+namespace {
+
+/// Volume of a sphere of radius r [m³].
+double ball(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
+
+/// The largest fragment of the spheres (centres, radii) outside `region` as a share of `dose`, the
+/// volume of them all: fragments are the connected components of the pairs closer than
+/// kFragmentGap times the sum of their radii.
+double largest_departed_fragment(std::span<const cases::Vector3> centres, std::span<const double> radii,
+                                 const Box& region, double dose) {
+  std::vector<breakup::SnapshotSphere> out;
+  breakup::BondRule rule;
+  for (std::size_t i = 0; i < centres.size(); ++i) {
+    if (region.contains(centres[i])) continue;
+    out.push_back({cases::core_vec(centres[i]), radii[i]});
+    rule.half_reach.push_back(kFragmentGap * radii[i]);
+  }
+  if (out.empty() || !(dose > 0.0)) return 0.0;
+  return breakup::fragments(out, rule).volume.front() / dose;
+}
+
+}  // namespace
 
 std::variant<std::vector<PackingSample>, std::string> packing_series(const cases::Scene& scene,
                                                                      const cases::RunResult& run) {
@@ -17,8 +42,11 @@ std::variant<std::vector<PackingSample>, std::string> packing_series(const cases
   const cases::PackingSpec& spec = *scene.compare.packing;
   const Box region{spec.min, spec.max};
   std::vector<double> radii;
+  double dose = 0.0;
   for (const cases::ParticleSpec& p : scene.particles) {
-    if (!p.fixed) radii.push_back(p.radius);
+    if (p.fixed) continue;
+    radii.push_back(p.radius);
+    dose += ball(p.radius);
   }
   std::vector<PackingSample> out;
   std::vector<cases::Vector3> centres;
@@ -33,7 +61,7 @@ std::variant<std::vector<PackingSample>, std::string> packing_series(const cases
     }
     try {
       out.push_back({snap.time, obscured_fraction(centres, radii, region, spec.orf_ny, spec.orf_nz),
-                     share_inside(centres, region)});
+                     share_inside(centres, region), largest_departed_fragment(centres, radii, region, dose)});
     } catch (const std::invalid_argument& e) {
       return std::string(e.what());
     }

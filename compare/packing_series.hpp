@@ -20,7 +20,16 @@ struct PackingSample {
   double time = 0.0;            ///< [s]
   double orf = 0.0;             ///< obscured reservoir fraction (thesis appendix G)
   double dose_remaining = 0.0;  ///< share of the mobile spheres whose centres lie in the region
+  /// The largest fragment of the mobile spheres whose centres lie outside the region, as a share
+  /// of the whole dose's volume: a plug pushed out whole makes it large, a stream of single
+  /// spheres small (see kFragmentGap).
+  double largest_departed_fragment = 0.0;
 };
+
+/// Two departed spheres belong to one fragment while their centres are closer than this factor
+/// times the sum of their radii: in contact, or within a twentieth of their radii of it — a plug
+/// carried by the air is not always pressed together, a stream's spheres are farther apart.
+inline constexpr double kFragmentGap = 1.05;
 
 /// The packing region's ORF and dose at every snapshot of `run`, or why there is none (no
 /// compare.packing region, a snapshot that does not hold every sphere).

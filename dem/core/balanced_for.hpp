@@ -48,11 +48,20 @@ struct alignas(64) ShareCursor {
 /// static split instead.
 inline constexpr int kMaxBalancedThreads = 64;
 
+/// The number of chunks of `chunk` (≥ 1) indices that cover [0, n), or 0 when it does not fit the
+/// cursors' 32 bits (the caller then runs a static split).
+template <typename Index>
+[[nodiscard]] inline std::uint32_t chunk_count(Index n, Index chunk) noexcept {
+  const auto count = static_cast<std::uint64_t>(n / chunk) + (n % chunk != 0 ? 1U : 0U);
+  return count > 0xFFFFFFFFULL ? 0U : static_cast<std::uint32_t>(count);
+}
+
 /// Runs run(thread, c) for every chunk c in [0, chunks) on `threads` OpenMP threads (2 ≤ threads ≤
 /// kMaxBalancedThreads). Thread t starts on its own share, chunks [chunks·t/T, chunks·(t+1)/T) from
-/// the front, then takes chunks from the back of the other shares, nearest first, leaving each
-/// owner the last of its own: on cores of equal speed, where the threads finish nearly together,
-/// a chunk's data then stays in the cache of the thread the next pass gives it to. A share no
+/// the front, then takes chunks from the back of the other shares, nearest first, leaving every
+/// owner in the team one unclaimed chunk of its own: on cores of equal speed, where the threads
+/// finish nearly together, a chunk's data then stays in the cache of the thread the next pass
+/// gives it to (the price: a slow owner runs one more chunk after the one it is on). A share no
 /// thread owns (a team smaller than asked for) is taken whole by the others.
 template <typename Run>
 inline void balanced_chunks(int threads, std::uint32_t chunks, Run&& run) {
@@ -70,18 +79,22 @@ inline void balanced_chunks(int threads, std::uint32_t chunks, Run&& run) {
     while (shares[me].claim_front(c)) run(me, c);
     for (std::uint32_t k = 1; k < parts; ++k) {
       const std::uint32_t other = (me + k) % parts;
-      const std::uint32_t leave = other < team ? 1 : 0;  // an owner that started keeps its last chunk
+      const std::uint32_t leave = other < team ? 1 : 0;  // an owner in the team keeps one chunk
       while (shares[other].claim_back(leave, c)) run(me, c);
     }
   }
 }
 
-/// balanced_for's loop on 2 ≤ threads ≤ kMaxBalancedThreads. Kept out of line: its arrays of
-/// cursors, aligned to cache lines, cost the caller's plain loop 8–20 % when inlined beside it
+/// balanced_for's loop on 2 ≤ threads ≤ kMaxBalancedThreads. Kept out of line: inlined beside the
+/// caller's one-thread loop, its arrays of cursors aligned to cache lines cost that loop 8–20 %
 /// (the chute's opening pass on one thread, docs/performance.md).
 template <typename Index, typename Body>
 [[gnu::noinline]] void balanced_for_chunks(int threads, Index n, Index chunk, Body& body) {
-  const auto chunks = static_cast<std::uint32_t>((n + chunk - 1) / chunk);
+  const std::uint32_t chunks = chunk_count(n, chunk);
+  if (chunks == 0) {
+    parallel_for(threads, n, body);
+    return;
+  }
   // Flattened: the body is inlined into the chunk's loop as a static split's loop inlines it.
   balanced_chunks(threads, chunks, [&](std::uint32_t, std::uint32_t c) __attribute__((flatten)) {
     const Index from = static_cast<Index>(c) * chunk;
@@ -96,9 +109,10 @@ template <typename Index, typename Body>
   struct alignas(64) Largest {
     double value;
   };
+  const std::uint32_t chunks = chunk_count(n, chunk);
+  if (chunks == 0) return parallel_max(threads, n, start, body);
   std::array<Largest, kMaxBalancedThreads> worst;
   worst.fill({start});
-  const auto chunks = static_cast<std::uint32_t>((n + chunk - 1) / chunk);
   balanced_chunks(threads, chunks, [&](std::uint32_t thread, std::uint32_t c) __attribute__((flatten)) {
     const Index from = static_cast<Index>(c) * chunk;
     const Index to = std::min<Index>(n, from + chunk);
@@ -119,9 +133,10 @@ template <typename Index, typename Body>
 /// would leave it waiting at the barrier. Within a chunk the indices run in increasing order;
 /// which thread runs a chunk varies, so body(i) must not depend on it: the loop gives the same
 /// results as parallel_for whenever the bodies are independent of one another. One thread (or a
-/// loop of one chunk) runs the plain loop in place.
+/// loop of one chunk) runs the plain loop in place. A chunk below 1 counts as 1.
 template <typename Index, typename Body>
 inline void balanced_for(int threads, Index n, Index chunk, Body&& body) {
+  chunk = std::max<Index>(chunk, 1);
   if (threads > kMaxBalancedThreads) {
     parallel_for(threads, n, body);
   } else if (threads <= 1 || n <= chunk) {
@@ -135,6 +150,7 @@ inline void balanced_for(int threads, Index n, Index chunk, Body&& body) {
 /// largest of a set does not depend on the order it is taken in).
 template <typename Index, typename Body>
 inline double balanced_max(int threads, Index n, Index chunk, double start, Body&& body) {
+  chunk = std::max<Index>(chunk, 1);
   if (threads > kMaxBalancedThreads) return parallel_max(threads, n, start, body);
   if (threads > 1 && n > chunk) return balanced_max_chunks(threads, n, chunk, start, body);
   double worst = start;

@@ -22,9 +22,9 @@ namespace {
 /// sums are the same for any thread count.
 constexpr std::uint32_t kSphereChunk = 4096;
 
-/// Spheres per chunk of the opening pass (kick, drift, packing) as the threads share it out, and
-/// of the wall and field pass when it keeps no energy sums.
-constexpr std::int64_t kOpeningChunk = 512;
+/// Spheres per chunk as the threads share out the opening pass (kick, drift, packing), and the
+/// wall and field pass when it keeps no energy sums.
+constexpr std::int64_t kSphereShare = 512;
 
 /// True when some sub-model of the choice reads history beyond the tangential slip: rolling
 /// slip (rolling resistance), the largest overlap (hysteretic loading), the JKR neck, the last
@@ -350,7 +350,7 @@ double ContactForceField::kick_drift_pack(KinematicState& state, const Accelerat
     return p;
   };
   // Balanced chunks, not a static split: on two cores of unequal speed the faster takes on more.
-  const double worst = balanced_max(threads, n, kOpeningChunk, 0.0, [=, this](std::int64_t i) {
+  const double worst = balanced_max(threads, n, kSphereShare, 0.0, [=, this](std::int64_t i) {
     // Component by component in scalars: with the three as small arrays, GCC kept them on the
     // stack and stored and reloaded them in mixed widths, stalling on store forwarding.
     const std::int64_t c = 3 * i;
@@ -696,9 +696,9 @@ void ContactForceField::run_walls_and_fields(const KinematicState& state, double
   }
   const bool track = setup_.track_energy;
   // The energy sums are grouped by kSphereChunk spheres, whatever the thread count; without them
-  // (no ledger: every sum stays zero) the threads share out chunks of kOpeningChunk, which split
+  // (no ledger: every sum stays zero) the threads share out chunks of kSphereShare, which split
   // 10,000 spheres evenly where three chunks of 4,096 could not.
-  const auto chunk_size = track ? kSphereChunk : static_cast<std::uint32_t>(kOpeningChunk);
+  const auto chunk_size = track ? kSphereChunk : static_cast<std::uint32_t>(kSphereShare);
   const std::uint32_t chunks = std::max<std::uint32_t>(1, (n + chunk_size - 1) / chunk_size);
   chunk_totals_.assign(chunks, EnergyTotals{});
   if (!setup_.meshes.empty() && mesh_plans_.size() < chunks) mesh_plans_.resize(chunks);

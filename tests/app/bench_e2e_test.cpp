@@ -38,7 +38,8 @@ TEST(DemwbBench, BoxWritesBenchJsonWithTheContractFields) {
 
 TEST(DemwbBench, SpeedupRunsTheCoreOnOneThreadToo) {
   const fs::path out = scratch("bench_speedup");
-  const auto r = demwb({"bench", "box", "--engines", "inhouse", "--particles", "300", "--steps", "30", "--repeat", "2",
+  // 1,100 spheres: more than one 512-sphere chunk, so the balanced per-sphere passes share out.
+  const auto r = demwb({"bench", "box", "--engines", "inhouse", "--particles", "1100", "--steps", "30", "--repeat", "2",
                         "--threads", "2", "--speedup", "-o", out.string()});
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const auto j = nlohmann::json::parse(support::read_file(out / "bench.json"));

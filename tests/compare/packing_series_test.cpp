@@ -122,4 +122,55 @@ TEST(FluidisationMetrics, AreMissingWithTheReasonWhenTheBedStays) {
   EXPECT_NE(m.at("orf_largest_drop").problem.find("needs 2"), std::string::npos) << m.at("orf_largest_drop").problem;
 }
 
+/// Six mobile spheres in a unit-cube reservoir: radii 1, 1, 1, 2, 1 and 1 (volumes 1, 1, 1, 8, 1,
+/// 1 units of 4/3 π; the dose is 13). Snapshot 0 holds them all inside. Snapshot 1: spheres 0 and 1
+/// left touching each other (one fragment of 2) and sphere 2 alone; 3, 4 and 5 stay in. Snapshot
+/// 2: sphere 3 (r 2) left with sphere 4 4 % of their radii sum apart (one fragment of 9) and
+/// sphere 5 6 % apart from sphere 4 (alone); 0, 1 and 2 went far apart.
+Bed departing() {
+  Bed b;
+  for (const double r : {1.0, 1.0, 1.0, 2.0, 1.0, 1.0}) {
+    cases::ParticleSpec p;
+    p.radius = r;
+    b.scene.particles.push_back(p);
+  }
+  b.scene.compare.packing = cases::PackingSpec{{0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, std::nullopt, 1, 1};
+  b.run.status = cases::RunStatus::ok;
+  const cases::Vector3 in{0.5, 0.5, 0.5};
+  const auto snap = [&](double t, std::vector<cases::Vector3> at) {
+    cases::Snapshot s;
+    s.time = t;
+    s.position = std::move(at);
+    b.run.snapshots.push_back(s);
+  };
+  snap(0.0, {in, in, in, in, in, in});
+  snap(1.0, {{10.0, 0.0, 0.0}, {11.99, 0.0, 0.0}, {20.0, 0.0, 0.0}, in, in, in});
+  snap(2.0, {{100.0, 0.0, 0.0}, {200.0, 0.0, 0.0}, {300.0, 0.0, 0.0},
+             {10.0, 10.0, 0.0}, {10.0, 10.0 + 3.0 * 1.04, 0.0}, {10.0, 10.0 + 3.0 * 1.04 + 2.0 * 1.06, 0.0}});
+  return b;
+}
+
+TEST(PackingSeries, TheLargestDepartedFragmentIsAShareOfTheDosesVolume) {
+  const Bed b = departing();
+  const auto series = comparison::packing_series(b.scene, b.run);
+  const auto& s = std::get<std::vector<comparison::PackingSample>>(series);
+  ASSERT_EQ(s.size(), 3U);
+  EXPECT_EQ(s[0].largest_departed_fragment, 0.0);                  // nothing has left
+  EXPECT_NEAR(s[1].largest_departed_fragment, 2.0 / 13.0, 1e-14);  // 0 and 1, touching
+  EXPECT_NEAR(s[2].largest_departed_fragment, 9.0 / 13.0, 1e-14);  // 3 and 4, 4 % apart; 5 is 6 % off
+  Bed later = b;
+  later.scene.compare.metrics = {"largest_departed_fragment"};
+  const auto m = comparison::compute_metrics(later.scene, later.run, nullptr);
+  ASSERT_TRUE(m.at("largest_departed_fragment").value) << m.at("largest_departed_fragment").problem;
+  EXPECT_NEAR(*m.at("largest_departed_fragment").value, 9.0 / 13.0, 1e-14);  // the largest over the run
+  // A stream: the same spheres leaving one by one, far apart, never make more than the largest one.
+  later.run.snapshots[2].position[4] = {50.0, 50.0, 0.0};
+  EXPECT_NEAR(*comparison::compute_metrics(later.scene, later.run, nullptr).at("largest_departed_fragment").value,
+              8.0 / 13.0, 1e-14);
+  // A fixed sphere is not the dose: fixing sphere 3 leaves 4 and 5 as lone spheres.
+  later.scene.particles[3].fixed = true;
+  EXPECT_NEAR(*comparison::compute_metrics(later.scene, later.run, nullptr).at("largest_departed_fragment").value,
+              2.0 / 5.0, 1e-14);
+}
+
 }  // namespace packing_series_test

@@ -46,8 +46,7 @@ TEST(BalancedFor, RunsEveryIndexOnceForAnyThreadsAndChunks) {
 TEST(BalancedFor, AFastThreadTakesOverTheSlowOnesShare) {
   // Thread 0 stalls in chunk 0 (the front of its share) until thread 1 has run 40 chunks: 8 more
   // than its own share of 32, which it can only have taken from the back of thread 0's. Without
-  // the taking thread 0 would wait out the 10 s limit and the counts below would fail. (A thread
-  // that starts late may find its whole share taken: chunk 0 then runs on thread 1, unstalled.)
+  // the taking thread 0 would wait out the 10 s limit and the counts below would fail.
   constexpr std::int64_t n = 64;
   std::vector<int> ran_by(n, -1);
   std::vector<std::atomic<int>> count(n);
@@ -100,6 +99,18 @@ TEST(BalancedFor, ASmallerTeamThanAskedForStillRunsEveryShare) {
   if (outer_team == 2) {
     EXPECT_EQ(inner_team, 1);  // the case this test is for
   }
+}
+
+TEST(BalancedFor, CountsChunksWithoutOverflow) {
+  EXPECT_EQ(dem::chunk_count<std::int64_t>(0, 512), 0U);
+  EXPECT_EQ(dem::chunk_count<std::int64_t>(1, 512), 1U);
+  EXPECT_EQ(dem::chunk_count<std::int64_t>(1024, 512), 2U);
+  EXPECT_EQ(dem::chunk_count<std::int64_t>(1025, 512), 3U);
+  // n + chunk − 1 would wrap here; the count is still right.
+  EXPECT_EQ(dem::chunk_count<std::uint32_t>(0xFFFFFFFFU, 512U), 0x800000U);
+  // More chunks than 32-bit cursors hold: 0, and the loop runs a static split.
+  EXPECT_EQ(dem::chunk_count<std::int64_t>(std::int64_t{1} << 33, 1), 0U);
+  for (const int r : runs_of(2, 100, 0)) EXPECT_EQ(r, 1);  // a chunk of 0 counts as 1
 }
 
 TEST(BalancedMax, IsTheSerialLargestForAnyThreadCount) {
