@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -11,12 +10,10 @@
 #include "cases/core_vector.hpp"
 #include "compare/metrics_breakup.hpp"
 #include "compare/packing_geometry.hpp"
+#include "dem/particles/particles.hpp"
 
 namespace comparison {
 namespace {
-
-/// Volume of a sphere of radius r [m³].
-double ball(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
 /// The largest fragment of the spheres (centres, radii) outside `region` as a share of `dose`, the
 /// volume of them all: fragments are the connected components of the pairs closer than
@@ -46,7 +43,7 @@ std::variant<std::vector<PackingSample>, std::string> packing_series(const cases
   for (const cases::ParticleSpec& p : scene.particles) {
     if (p.fixed) continue;
     radii.push_back(p.radius);
-    dose += ball(p.radius);
+    dose += dem::sphere_volume(p.radius);
   }
   std::vector<PackingSample> out;
   std::vector<cases::Vector3> centres;
