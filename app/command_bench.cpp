@@ -78,7 +78,10 @@ void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<C
       failed[c] = r.codes[c].runs.back().status != "ok";
     }
     if (run_core) r.core_runs.push_back(run_core(o.threads));
-    if (run_core && o.speedup) r.one_thread_runs.push_back(run_core(1));
+    if (run_core && o.speedup) {
+      r.one_thread_runs.push_back(run_core(1));
+      r.machine_probes.push_back(bench::probe_machine(o.threads));
+    }
     if (o.repeat > 1) std::fprintf(stderr, "bench: repetition %d of %d done\n", k + 1, o.repeat);
   }
   bench::choose_medians(r);

@@ -92,6 +92,14 @@ std::string speedup_text(const BenchResult& r) {
                      same ? "identical to the last bit" : "DIFFER between runs (the deterministic mode is broken)");
 }
 
+/// The machine's own ratios: "the machine on 2 threads / on 1 thread, same minutes: ...".
+std::string machine_text(const MachineProbe& m) {
+  return fmt::format("the machine itself on {} threads / on 1 thread, probed in the same minutes with kernels "
+                     "independent of the core: arithmetic {:.2f}, memory stream {:.2f} (ideal {}); its slowest "
+                     "thread took {:.2f}× its fastest's time",
+                     m.threads, m.arithmetic, m.memory, m.threads, m.unequal);
+}
+
 }  // namespace
 
 const CodeBench* BenchResult::code(std::string_view engine) const {
@@ -135,6 +143,24 @@ std::optional<double> BenchResult::speedup() const {
   const std::vector<double> s = speedups();
   if (s.empty()) return std::nullopt;
   return median_of(s);
+}
+
+std::optional<MachineProbe> BenchResult::machine() const {
+  if (machine_probes.empty()) return std::nullopt;
+  std::vector<double> arithmetic;
+  std::vector<double> memory;
+  std::vector<double> unequal;
+  for (const MachineProbe& p : machine_probes) {
+    arithmetic.push_back(p.arithmetic);
+    memory.push_back(p.memory);
+    unequal.push_back(p.unequal);
+  }
+  MachineProbe m;
+  m.threads = machine_probes.front().threads;
+  m.arithmetic = median_of(arithmetic);
+  m.memory = median_of(memory);
+  m.unequal = median_of(unequal);
+  return m;
 }
 
 std::optional<bool> BenchResult::identical_across_threads() const {
@@ -217,6 +243,16 @@ nlohmann::json bench_json(const BenchResult& r) {
                            {"one_thread", one_thread_json(*r.one_thread)},
                            {"identical_across_threads", *r.identical_across_threads()},
                            {"state_sha256", r.core->state_sha256}};
+    j["thread_speedup"]["machine"] = nullptr;
+    if (const auto m = r.machine()) {
+      nlohmann::json probes = nlohmann::json::array();
+      for (const MachineProbe& p : r.machine_probes) {
+        probes.push_back({{"arithmetic", p.arithmetic}, {"memory", p.memory}, {"unequal", p.unequal}});
+      }
+      j["thread_speedup"]["machine"] = {{"threads", m->threads},       {"arithmetic", m->arithmetic},
+                                        {"memory", m->memory},         {"unequal", m->unequal},
+                                        {"probes", probes}};
+    }
   }
   std::size_t repetitions = r.core_runs.size();
   for (const CodeBench& c : r.codes) repetitions = std::max(repetitions, c.runs.size());
@@ -280,6 +316,7 @@ std::string bench_table(const BenchResult& r) {
     out += fmt::format("inhouse on 1 thread: loop {:.3f} s, {:.4g} particle-steps/s (median run)\n", r.one_thread->wall_s,
                        r.one_thread->particle_steps_per_s);
     out += "inhouse " + speedup_text(r) + "\n";
+    if (const auto m = r.machine()) out += machine_text(*m) + "\n";
   }
   for (const EnergyCheck& c : r.checks) {
     out += fmt::format("{}: inhouse {}, LAMMPS reference log {}{} — {}\n", c.quantity, c.core, c.reference,
@@ -331,6 +368,11 @@ std::string bench_markdown(const BenchResult& r, const std::string& command) {
     md += fmt::format("\nThe core on one thread, run right after each run on {} threads: loop {:.3f} s, {:.4g} "
                       "particle-steps/s (median run). Speed-up {}.\n",
                       r.core->threads, r.one_thread->wall_s, r.one_thread->particle_steps_per_s, speedup_text(r));
+    if (const auto m = r.machine()) {
+      md += fmt::format("\nFor comparison, {} (medians of {} probes, one after each pair of core runs). A speed-up "
+                        "below the ideal there is the machine's (shared cores, other guests), not the code's.\n",
+                        machine_text(*m), r.machine_probes.size());
+    }
   }
   md += "\nBytes per particle: the core counts the capacity of its arrays, lists and history; LAMMPS "
         "reports its own \"Per MPI rank memory allocation\", LIGGGHTS its \"Memory usage per processor\" "

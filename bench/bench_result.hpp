@@ -12,6 +12,7 @@
 
 #include "bench/code_run.hpp"
 #include "bench/core_run.hpp"
+#include "bench/machine_probe.hpp"
 
 namespace bench {
 
@@ -44,6 +45,9 @@ struct BenchResult {
   /// `threads` threads, and the median of those runs.
   std::vector<CoreRun> one_thread_runs;
   std::optional<CoreRun> one_thread;
+  /// With `--speedup`: what the machine gave the same threads against one, probed right after
+  /// each pair of core runs (kernels independent of the core).
+  std::vector<MachineProbe> machine_probes;
   std::vector<CodeBench> codes;      ///< the reference codes asked for, in the order asked
   std::vector<EnergyCheck> checks;
   /// Translational kinetic energy at the last step by engine [J] (a box or case file): the
@@ -63,6 +67,8 @@ struct BenchResult {
   [[nodiscard]] std::vector<double> speedups() const;
   /// The median of speedups(), when there are one-thread runs.
   [[nodiscard]] std::optional<double> speedup() const;
+  /// The medians of the machine probes' ratios, when there are probes.
+  [[nodiscard]] std::optional<MachineProbe> machine() const;
   /// True when every run of the core, on one thread and on several, ended in the same state to
   /// the last bit (the deterministic mode); nullopt without one-thread runs.
   [[nodiscard]] std::optional<bool> identical_across_threads() const;

@@ -54,6 +54,12 @@ TEST(DemwbBench, SpeedupRunsTheCoreOnOneThreadToo) {
   EXPECT_EQ(s["state_sha256"].get<std::string>().size(), 64U);
   EXPECT_EQ(s["one_thread"]["state_sha256"], s["state_sha256"]);
   EXPECT_NE(r.out.find("inhouse on 2 threads / on 1 thread"), std::string::npos) << r.out;
+  // The machine probed after each pair: its own two-thread ratios, one probe per repetition.
+  EXPECT_EQ(s["machine"]["threads"], 2);
+  EXPECT_EQ(s["machine"]["probes"].size(), 2U);
+  EXPECT_GT(s["machine"]["arithmetic"].get<double>(), 0.0);
+  EXPECT_GT(s["machine"]["memory"].get<double>(), 0.0);
+  EXPECT_NE(r.out.find("the machine itself on 2 threads"), std::string::npos) << r.out;
   // Without --speedup nothing of it.
   const fs::path plain = scratch("bench_no_speedup");
   ASSERT_EQ(demwb({"bench", "box", "--engines", "inhouse", "--particles", "300", "--steps", "30", "-o", plain.string()})

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+#include "bench/machine_probe.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace bench {
+namespace {
+
+/// Keeps the compiler from folding or dropping a value it could otherwise compute ahead.
+inline void keep(double& v) noexcept {
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+  asm volatile("" : "+x"(v));
+#elif defined(__GNUC__)
+  asm volatile("" : "+m"(v));
+#else
+  volatile double held = v;
+  v = held;
+#endif
+}
+
+/// Eight independent multiply–add chains: arithmetic throughput, no memory traffic.
+double multiply_add_chains(std::size_t iterations) noexcept {
+  std::array<double, 8> a{};
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] = 1.0 + 1e-3 * static_cast<double>(k);
+  for (std::size_t i = 0; i < iterations; ++i) {
+    for (double& v : a) {
+      v = v * 0.999999999 + 1e-9;
+      keep(v);
+    }
+  }
+  double sum = 0.0;
+  for (const double v : a) sum += v;
+  return sum;
+}
+
+/// Passes of x ← x·m + c over a buffer: streaming reads and writes.
+double stream(std::vector<double>& x, int passes) noexcept {
+  for (int p = 0; p < passes; ++p) {
+    for (double& v : x) v = v * 0.999999999 + 1e-9;
+    keep(x[p % x.size()]);
+  }
+  return x.front() + x.back();
+}
+
+/// How long each thread took to run kernel(thread), all from a common start.
+struct Timing {
+  double throughput = 0.0;  ///< Σ 1 / (each thread's seconds): kernels per second
+  double unequal = 1.0;     ///< the slowest thread's seconds over the fastest's
+};
+
+/// Runs kernel(thread) on `threads` threads from a common start; the threads the runtime gave go
+/// to `team`.
+template <class Kernel>
+Timing timed(int threads, int& team, std::vector<double>& results, Kernel&& kernel) {
+  std::vector<double> spent(static_cast<std::size_t>(threads), 0.0);
+#pragma omp parallel num_threads(threads)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+#pragma omp single
+    team = omp_get_num_threads();
+    // The implicit barrier of `single` lines the threads up: all start together.
+    const auto start = std::chrono::steady_clock::now();
+    results[t] += kernel(t);
+    spent[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  Timing out;
+  double slowest = 0.0;
+  double fastest = 0.0;
+  for (std::size_t t = 0; t < static_cast<std::size_t>(team); ++t) {
+    const double s = std::max(spent[t], 1e-9);
+    out.throughput += 1.0 / s;
+    slowest = t == 0 ? s : std::max(slowest, s);
+    fastest = t == 0 ? s : std::min(fastest, s);
+  }
+  out.unequal = slowest / fastest;
+  return out;
+}
+
+double median_of_three(std::array<double, 3> v) {
+  std::sort(v.begin(), v.end());
+  return v[1];
+}
+
+}  // namespace
+
+MachineProbe probe_machine(int threads, const ProbeWork& work) {
+  if (threads < 1) throw std::invalid_argument("probe_machine: the thread count must be at least 1, not " + std::to_string(threads));
+  if (work.arithmetic_iterations == 0 || work.stream_bytes < sizeof(double) || work.stream_passes < 1) {
+    throw std::invalid_argument("probe_machine: every kernel needs some work");
+  }
+  const auto count = static_cast<std::size_t>(threads);
+  std::vector<double> results(count, 0.0);
+  // One buffer per thread, first written by the thread that streams it.
+  std::vector<std::vector<double>> buffers(count);
+  const std::size_t length = work.stream_bytes / sizeof(double);
+#pragma omp parallel num_threads(threads)
+  {
+    const auto t = static_cast<std::size_t>(omp_get_thread_num());
+    buffers[t].assign(length, 1.0);
+  }
+  for (auto& b : buffers) {
+    if (b.empty()) b.assign(length, 1.0);  // a thread the runtime did not give
+  }
+  const auto arithmetic = [&](std::size_t) { return multiply_add_chains(work.arithmetic_iterations); };
+  const auto streaming = [&](std::size_t t) { return stream(buffers[t], work.stream_passes); };
+  std::array<double, 3> arithmetic_ratio{};
+  std::array<double, 3> memory_ratio{};
+  std::array<double, 3> unequal{};
+  int team = 1;
+  int one = 1;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Timing a1 = timed(1, one, results, arithmetic);
+    const Timing an = timed(threads, team, results, arithmetic);
+    arithmetic_ratio[k] = an.throughput / a1.throughput;
+    unequal[k] = an.unequal;
+    const Timing s1 = timed(1, one, results, streaming);
+    const Timing sn = timed(threads, team, results, streaming);
+    memory_ratio[k] = sn.throughput / s1.throughput;
+  }
+  MachineProbe p;
+  p.threads = team;
+  p.arithmetic = median_of_three(arithmetic_ratio);
+  p.memory = median_of_three(memory_ratio);
+  p.unequal = median_of_three(unequal);
+  // The kernels' results are used, so that no compiler may drop them.
+  double sum = 0.0;
+  for (const double r : results) sum += r;
+  if (!(sum > 0.0)) throw std::logic_error("probe_machine: the kernels computed nothing");
+  return p;
+}
+
+}  // namespace bench
