@@ -8,6 +8,7 @@
 
 #include <omp.h>
 
+#include "dem/core/balanced_for.hpp"
 #include "dem/core/parallel_for.hpp"
 
 namespace dem {
@@ -197,61 +198,59 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   const std::uint32_t* const slab_of = slabs_.all().data();
   const std::uint8_t* const still = in.still.data();
   if (stencils_.size() < static_cast<std::size_t>(threads)) stencils_.resize(static_cast<std::size_t>(threads));
-#pragma omp parallel num_threads(threads) if (threads > 1)
-  {
+  for (Stencil& stencil : stencils_) stencil.near.resize(classes);
+  // Each thread searches a run of neighbouring units (its share, then units taken from the back
+  // of another's), so that its gathers and its part of the arrays stay together in its caches.
+  balanced_for(threads, unit_count, std::uint32_t{1}, [&](std::uint32_t u) {
     Stencil& stencil = stencils_[static_cast<std::size_t>(omp_get_thread_num())];
-    stencil.near.resize(classes);
-#pragma omp for schedule(dynamic, 1)
-    for (std::uint32_t u = 0; u < unit_count; ++u) {
-      const SearchUnit unit = units_[u];
-      const std::size_t c = unit.size_class;
-      const CellGrid& own = grids_[c * classes + c];
-      for (Candidates& cand : stencil.near) cand.grid = nullptr;  // gathered by an earlier build
-      // Counters and the partner list live in this thread's scratch while the unit is searched:
-      // per-unit slots side by side share cache lines, and two threads incrementing them in the
-      // inner loop made the parallel build slower than the serial one.
-      std::vector<std::uint32_t>& out = stencil.partners;
-      std::size_t used = 0;  // partners found so far in the unit (out holds scratch beyond)
-      std::uint64_t candidates = 0;
-      std::uint64_t cells = 0;
-      const std::uint32_t* const member = own.members().data();
-      for (std::uint32_t m = own.first(unit.from); m < own.first(unit.to); ++m) {
-        const std::uint32_t i = member[m];
-        const PackedSphere& si = spheres[i];
-        const std::size_t first = used;
-        const std::uint32_t slab_i = slab_of[i];
-        const std::uint8_t still_i = still[i] != 0 ? 0xFF : 0;  // a mask: still pairs are not listed
-        for (std::size_t b = 0; b < classes; ++b) {
-          if (class_members_[b].empty()) continue;
-          const CellGrid& grid = grids_[b * classes + std::max(b, c)];
-          const auto at = grid.coordinates(si.x, si.y, si.z);
-          const std::size_t cell = grid.index(at[0], at[1], at[2]);
-          Candidates& cand = stencil.near[b];
-          if (cand.grid != &grid || cand.cell != cell || cand.slab != slab_i) {
-            gather(in, cand, stencil.axes, grid, cell, slab_i);
-          }
-          candidates += cand.size();
-          cells += cand.cells;
-          if (used + cand.size() > out.size()) out.resize(2 * (used + cand.size()));
-          if (!cand.imaged) {
-            used = scan<false, false>(in, cand, si, i, still_i, skin, out.data(), used);
-          } else if (cand.shifted) {
-            used = scan<true, true>(in, cand, si, i, still_i, skin, out.data(), used);
-          } else {
-            used = scan<true, false>(in, cand, si, i, still_i, skin, out.data(), used);
-          }
+    const SearchUnit unit = units_[u];
+    const std::size_t c = unit.size_class;
+    const CellGrid& own = grids_[c * classes + c];
+    for (Candidates& cand : stencil.near) cand.grid = nullptr;  // gathered by an earlier build
+    // Counters and the partner list live in this thread's scratch while the unit is searched:
+    // per-unit slots side by side share cache lines, and two threads incrementing them in the
+    // inner loop made the parallel build slower than the serial one.
+    std::vector<std::uint32_t>& out = stencil.partners;
+    std::size_t used = 0;  // partners found so far in the unit (out holds scratch beyond)
+    std::uint64_t candidates = 0;
+    std::uint64_t cells = 0;
+    const std::uint32_t* const member = own.members().data();
+    for (std::uint32_t m = own.first(unit.from); m < own.first(unit.to); ++m) {
+      const std::uint32_t i = member[m];
+      const PackedSphere& si = spheres[i];
+      const std::size_t first = used;
+      const std::uint32_t slab_i = slab_of[i];
+      const std::uint8_t still_i = still[i] != 0 ? 0xFF : 0;  // a mask: still pairs are not listed
+      for (std::size_t b = 0; b < classes; ++b) {
+        if (class_members_[b].empty()) continue;
+        const CellGrid& grid = grids_[b * classes + std::max(b, c)];
+        const auto at = grid.coordinates(si.x, si.y, si.z);
+        const std::size_t cell = grid.index(at[0], at[1], at[2]);
+        Candidates& cand = stencil.near[b];
+        if (cand.grid != &grid || cand.cell != cell || cand.slab != slab_i) {
+          gather(in, cand, stencil.axes, grid, cell, slab_i);
         }
-        std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(used),
-                  by_partner);
-        offsets_[i + 1] = static_cast<std::uint32_t>(used - first);
+        candidates += cand.size();
+        cells += cand.cells;
+        if (used + cand.size() > out.size()) out.resize(2 * (used + cand.size()));
+        if (!cand.imaged) {
+          used = scan<false, false>(in, cand, si, i, still_i, skin, out.data(), used);
+        } else if (cand.shifted) {
+          used = scan<true, true>(in, cand, si, i, still_i, skin, out.data(), used);
+        } else {
+          used = scan<true, false>(in, cand, si, i, still_i, skin, out.data(), used);
+        }
       }
-      std::vector<std::uint32_t>& kept = chunk_partners_[u];
-      if (kept.capacity() < used) kept.reserve(used + used / 8);
-      kept.assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(used));
-      chunk_candidates_[u] = candidates;
-      chunk_cells_[u] = cells;
+      std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.begin() + static_cast<std::ptrdiff_t>(used),
+                by_partner);
+      offsets_[i + 1] = static_cast<std::uint32_t>(used - first);
     }
-  }
+    std::vector<std::uint32_t>& kept = chunk_partners_[u];
+    if (kept.capacity() < used) kept.reserve(used + used / 8);
+    kept.assign(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(used));
+    chunk_candidates_[u] = candidates;
+    chunk_cells_[u] = cells;
+  });
 
   candidates_ = 0;
   for (const std::uint64_t c : chunk_candidates_) candidates_ += c;
