@@ -8,6 +8,8 @@
 # 0.018 mm inside the round barrel). Run from this folder: python3 make_hopper_meshes.py
 import math
 
+from stl_ascii import write
+
 SIDES = 64
 
 
@@ -24,17 +26,6 @@ def band(lower, upper):
         c, d = upper[k], upper[(k + 1) % SIDES]
         out += [(a, b, d), (a, d, c)]
     return out
-
-
-def write(name, solid, triangles):
-    with open(name, "w") as f:
-        f.write(f"solid {solid}\n")
-        for t in triangles:
-            f.write("  facet normal 0 0 0\n    outer loop\n")
-            for v in t:
-                f.write("      vertex {:.17g} {:.17g} {:.17g}\n".format(*v))
-            f.write("    endloop\n  endfacet\n")
-        f.write(f"endsolid {solid}\n")
 
 
 orifice, rim, top = ring(6.0, 0.0), ring(15.0, 3.0), ring(15.0, 63.0)
