@@ -107,7 +107,7 @@ constexpr std::uint64_t kRandomTriesPerSphere = 100;
 /// z for a box, along the axis for a cylinder), then by row and column; at most `wanted` of them
 /// (the first ones in that order). A row of a cylinder is walked only along its chord (from two
 /// pitches before to two after; inside() still decides each site). Throws PopulationError after
-/// `max_visits` candidate positions: a pitch too fine for the region.
+/// `max_visits` candidate positions, rows and layers: a pitch too fine for the region.
 std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double a, double r, std::size_t wanted,
                                    std::uint64_t max_visits) {
   Vector3 lo;
@@ -122,11 +122,23 @@ std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double
   const double layer = hcp ? a * std::sqrt(2.0 / 3.0) : a;
   std::vector<Vector3> sites;
   std::uint64_t visits = 0;
+  // Every layer, row and position examined counts: in a region so large that adding a pitch no
+  // longer moves a coordinate, rows beside a cylinder or layers without a row would otherwise
+  // loop for ever without examining a position.
+  const auto visit = [&] {
+    if (++visits > max_visits) {
+      throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m examined {} positions in the "
+                                                   "region and found {} sites: the pitch is too fine for the region",
+                                                   a, max_visits, sites.size()));
+    }
+  };
   for (std::int64_t k = 0; sites.size() < wanted; ++k) {
+    visit();
     const double h = lo[up] + r + static_cast<double>(k) * layer;
     if (h + r > hi[up] + eps) break;
     const bool b_layer = hcp && k % 2 == 1;
     for (std::int64_t j = 0; sites.size() < wanted; ++j) {
+      visit();
       const double y = lo[along] + r + static_cast<double>(j) * row + (b_layer ? a * std::sqrt(3.0) / 6.0 : 0.0);
       if (y + r > hi[along] + eps) break;
       const double offset = (hcp && j % 2 == 1 ? 0.5 * a : 0.0) + (b_layer ? 0.5 * a : 0.0);
@@ -146,11 +158,7 @@ std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double
       for (std::int64_t i = first; sites.size() < wanted; ++i) {
         const double x = x0 + static_cast<double>(i) * a;
         if (x + r > hi[across] + eps || x > last) break;
-        if (++visits > max_visits) {
-          throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m examined {} positions in the "
-                                                       "region and found {} sites: the pitch is too fine for the region",
-                                                       a, max_visits, sites.size()));
-        }
+        visit();
         Vector3 p{};
         p[up] = h;
         p[along] = y;

@@ -274,6 +274,30 @@ TEST(Population, ImpossibleRequestsNameTheirKey) {
   EXPECT_EQ(key_of(negative), "size.std_dev");
 }
 
+TEST(Population, ARegionTooLargeForItsCoordinatesIsAnErrorNotAHang) {
+  // A cylinder of radius 1e300 (a fuzzed hopper case): the first row sits at -1e300, where adding
+  // a pitch does not move it, and every row passes beside the cylinder (its chord is NaN). Rows and
+  // layers count towards the lattice's budget, so the fill stops with an error naming `spacing`.
+  for (const Arrangement a : {Arrangement::simple_cubic, Arrangement::hcp}) {
+    PopulationSpec cylinder;
+    cylinder.arrangement = a;
+    cylinder.size = mono(1e-3);
+    cylinder.spacing = 2.2e-3;
+    cylinder.count = 4000;
+    cylinder.region.shape = RegionSpec::Shape::cylinder;
+    cylinder.region.base = {0.0, 0.0, 4e-3};
+    cylinder.region.axis = 2;
+    cylinder.region.radius = 1e300;
+    cylinder.region.height = 8e-2;
+    try {
+      static_cast<void>(cases::generate_population(cylinder, {}, 1.0));
+      ADD_FAILURE() << "no error";
+    } catch (const cases::PopulationError& e) {
+      EXPECT_EQ(e.key(), "spacing") << e.what();
+    }
+  }
+}
+
 TEST(Population, ASolidVolumeDrawsSpheresUntilTheirVolumeReachesIt) {
   // Thesis §6.3: radii are drawn until the spheres' volume exceeds 150 % of the reservoir's.
   const double target = 1.5 * 2e-3 * 6e-3 * 2e-3;  // 36 mm³
