@@ -15,10 +15,12 @@ namespace {
 
 /// Keeps the compiler from folding or dropping a value it could otherwise compute ahead.
 inline void keep(double& v) noexcept {
-#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-  asm volatile("" : "+x"(v));
+#if defined(__GNUC__) && defined(__SSE2__)
+  asm volatile("" : "+x"(v));  // the value stays in its vector register
+#elif defined(__GNUC__) && defined(__aarch64__)
+  asm volatile("" : "+w"(v));
 #elif defined(__GNUC__)
-  asm volatile("" : "+m"(v));
+  asm volatile("" : "+m"(v));  // elsewhere through memory: the kernel then also times a store and load
 #else
   volatile double held = v;
   v = held;
@@ -49,16 +51,10 @@ double stream(std::vector<double>& x, int passes) noexcept {
   return x.front() + x.back();
 }
 
-/// How long each thread took to run kernel(thread), all from a common start.
-struct Timing {
-  double throughput = 0.0;  ///< Σ 1 / (each thread's seconds): kernels per second
-  double unequal = 1.0;     ///< the slowest thread's seconds over the fastest's
-};
-
 /// Runs kernel(thread) on `threads` threads from a common start; the threads the runtime gave go
 /// to `team`.
 template <class Kernel>
-Timing timed(int threads, int& team, std::vector<double>& results, Kernel&& kernel) {
+ProbeTiming timed(int threads, int& team, std::vector<double>& results, Kernel&& kernel) {
   std::vector<double> spent(static_cast<std::size_t>(threads), 0.0);
 #pragma omp parallel num_threads(threads)
   {
@@ -70,17 +66,8 @@ Timing timed(int threads, int& team, std::vector<double>& results, Kernel&& kern
     results[t] += kernel(t);
     spent[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
-  Timing out;
-  double slowest = 0.0;
-  double fastest = 0.0;
-  for (std::size_t t = 0; t < static_cast<std::size_t>(team); ++t) {
-    const double s = std::max(spent[t], 1e-9);
-    out.throughput += 1.0 / s;
-    slowest = t == 0 ? s : std::max(slowest, s);
-    fastest = t == 0 ? s : std::min(fastest, s);
-  }
-  out.unequal = slowest / fastest;
-  return out;
+  for (double& s : spent) s = std::max(s, 1e-9);  // a clock that did not tick
+  return probe_timing(spent.data(), static_cast<std::size_t>(team));
 }
 
 double median_of_three(std::array<double, 3> v) {
@@ -89,6 +76,21 @@ double median_of_three(std::array<double, 3> v) {
 }
 
 }  // namespace
+
+ProbeTiming probe_timing(const double* seconds, std::size_t threads) {
+  if (threads == 0) throw std::invalid_argument("probe_timing: no threads");
+  ProbeTiming out;
+  double slowest = seconds[0];
+  double fastest = seconds[0];
+  for (std::size_t t = 0; t < threads; ++t) {
+    if (!(seconds[t] > 0.0)) throw std::invalid_argument("probe_timing: a thread's time is not positive");
+    out.throughput += 1.0 / seconds[t];
+    slowest = std::max(slowest, seconds[t]);
+    fastest = std::min(fastest, seconds[t]);
+  }
+  out.unequal = slowest / fastest;
+  return out;
+}
 
 MachineProbe probe_machine(int threads, const ProbeWork& work) {
   if (threads < 1) throw std::invalid_argument("probe_machine: the thread count must be at least 1, not " + std::to_string(threads));
@@ -116,12 +118,12 @@ MachineProbe probe_machine(int threads, const ProbeWork& work) {
   int team = 1;
   int one = 1;
   for (std::size_t k = 0; k < 3; ++k) {
-    const Timing a1 = timed(1, one, results, arithmetic);
-    const Timing an = timed(threads, team, results, arithmetic);
+    const ProbeTiming a1 = timed(1, one, results, arithmetic);
+    const ProbeTiming an = timed(threads, team, results, arithmetic);
     arithmetic_ratio[k] = an.throughput / a1.throughput;
     unequal[k] = an.unequal;
-    const Timing s1 = timed(1, one, results, streaming);
-    const Timing sn = timed(threads, team, results, streaming);
+    const ProbeTiming s1 = timed(1, one, results, streaming);
+    const ProbeTiming sn = timed(threads, team, results, streaming);
     memory_ratio[k] = sn.throughput / s1.throughput;
   }
   MachineProbe p;
@@ -129,10 +131,11 @@ MachineProbe probe_machine(int threads, const ProbeWork& work) {
   p.arithmetic = median_of_three(arithmetic_ratio);
   p.memory = median_of_three(memory_ratio);
   p.unequal = median_of_three(unequal);
-  // The kernels' results are used, so that no compiler may drop them.
+  // The kernels' results go to a volatile, so that no compiler may drop the kernels.
   double sum = 0.0;
   for (const double r : results) sum += r;
-  if (!(sum > 0.0)) throw std::logic_error("probe_machine: the kernels computed nothing");
+  volatile double used = sum;
+  static_cast<void>(used);
   return p;
 }
 

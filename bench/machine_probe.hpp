@@ -19,10 +19,19 @@ struct MachineProbe {
   double unequal = 1.0;
 };
 
+/// Throughput and spread of one kernel run on several threads at once, from each thread's own time.
+struct ProbeTiming {
+  double throughput = 0.0;  ///< Σ 1 / (each thread's seconds): kernels per second
+  double unequal = 1.0;     ///< the slowest thread's seconds over the fastest's
+};
+
+/// ProbeTiming of threads that took `seconds` each (every value > 0; at least one).
+[[nodiscard]] ProbeTiming probe_timing(const double* seconds, std::size_t threads);
+
 /// The sizes of the probe's kernels: the arithmetic kernel's iterations per thread, and the
 /// stream's buffer per thread (bytes, larger than a core's private caches) and passes over it.
 struct ProbeWork {
-  std::size_t arithmetic_iterations = 6'000'000;  ///< of eight independent multiply–add chains (~40 ms)
+  std::size_t arithmetic_iterations = 6'000'000;  ///< of eight independent multiply–add chains (tens of ms)
   std::size_t stream_bytes = 16U << 20U;          ///< per thread
   int stream_passes = 6;
 };

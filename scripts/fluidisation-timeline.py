@@ -45,7 +45,7 @@ def shown_value(text):
     """An axis value as the sweep wrote it, shortened to the digits that matter."""
     try:
         return f"{float(text):.6g}"
-    except ValueError:
+    except (ValueError, TypeError):
         return text
 
 
@@ -67,9 +67,13 @@ def main():
     for line, r in enumerate(rows, start=2):
         try:
             sample = (float(r["time"]), float(r["orf"]), float(r["dose_remaining"]))
-        except ValueError:
-            sys.exit(f"{args.bed_csv}: line {line}: time, orf or dose_remaining is not a number")
-        runs[(int(r["point"]), tuple(shown_value(r[a]) for a in axes), r["engine"], int(r["seed"]))].append(sample)
+            key = (int(r["point"]), tuple(shown_value(r[a]) for a in axes), r["engine"], int(r["seed"]))
+        except (ValueError, TypeError):
+            sys.exit(f"{args.bed_csv}: line {line}: a short row, or point, seed, time, orf or dose_remaining "
+                     "is not a number")
+        if None in (key[2], *key[1]):
+            sys.exit(f"{args.bed_csv}: line {line}: a short row")
+        runs[key].append(sample)
 
     columns = ("first departure (ms)", "ORF -10 % (ms)", "ORF <= 0.1 (ms)", f"ORF at {args.at:g} ms")
     points = defaultdict(lambda: [[] for _ in columns])

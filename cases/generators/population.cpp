@@ -91,10 +91,11 @@ void bounds(const RegionSpec& g, Vector3& lo, Vector3& hi) {
   }
 }
 
-/// Candidate positions a lattice fill may examine per sphere it may make, and in all besides: a
-/// cylinder holds π/4 of the sites of its bounding box, and only the first and last rows of a
-/// chord are examined outside it.
-constexpr std::uint64_t kLatticeVisitsPerSphere = 3;
+/// Steps a lattice fill may take per sphere it may make, and in all besides; a step is a position,
+/// a row or a layer examined. A cylinder holds π/4 of the sites of its bounding box, only the
+/// first and last rows of a chord are examined outside it, and a column one site wide takes four
+/// steps a site (its layer, its row, the site, the row after).
+constexpr std::uint64_t kLatticeVisitsPerSphere = 5;
 /// See kLatticeVisitsPerSphere.
 constexpr std::uint64_t kLatticeVisitsSlack = 1'000'000;
 
@@ -107,7 +108,7 @@ constexpr std::uint64_t kRandomTriesPerSphere = 100;
 /// z for a box, along the axis for a cylinder), then by row and column; at most `wanted` of them
 /// (the first ones in that order). A row of a cylinder is walked only along its chord (from two
 /// pitches before to two after; inside() still decides each site). Throws PopulationError after
-/// `max_visits` candidate positions, rows and layers: a pitch too fine for the region.
+/// `max_visits` steps (positions, rows and layers examined): a pitch too fine for the region.
 std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double a, double r, std::size_t wanted,
                                    std::uint64_t max_visits) {
   Vector3 lo;
@@ -127,8 +128,9 @@ std::vector<Vector3> lattice_sites(const RegionSpec& g, Arrangement kind, double
   // loop for ever without examining a position.
   const auto visit = [&] {
     if (++visits > max_visits) {
-      throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m examined {} positions in the "
-                                                   "region and found {} sites: the pitch is too fine for the region",
+      throw PopulationError("spacing", fmt::format("a lattice of pitch {:.6g} m took {} steps through the region "
+                                                   "(positions, rows and layers) and found {} sites: the pitch is "
+                                                   "too fine for the region",
                                                    a, max_visits, sites.size()));
     }
   };

@@ -33,6 +33,24 @@ TEST(MachineProbe, GivesPositiveFiniteRatiosForTheThreadsItGot) {
   }
 }
 
+TEST(MachineProbe, ThroughputCountsEachThreadAtItsOwnSpeed) {
+  // Two threads each doing one kernel, in 1 s and 2 s: 1.5 kernels a second, the slower taking 2×.
+  const double two[] = {1.0, 2.0};
+  const bench::ProbeTiming t = bench::probe_timing(two, 2);
+  EXPECT_DOUBLE_EQ(t.throughput, 1.5);
+  EXPECT_DOUBLE_EQ(t.unequal, 2.0);
+  // Against one thread that took 1 s, the ratio the probe reports is 1.5 (not 1, the wall time's).
+  const double one[] = {1.0};
+  EXPECT_DOUBLE_EQ(t.throughput / bench::probe_timing(one, 1).throughput, 1.5);
+  EXPECT_DOUBLE_EQ(bench::probe_timing(one, 1).unequal, 1.0);
+  const double three[] = {0.5, 0.5, 0.25};
+  EXPECT_DOUBLE_EQ(bench::probe_timing(three, 3).throughput, 8.0);
+  EXPECT_DOUBLE_EQ(bench::probe_timing(three, 3).unequal, 2.0);
+  const double bad[] = {1.0, 0.0};
+  EXPECT_THROW((void)bench::probe_timing(bad, 2), std::invalid_argument);
+  EXPECT_THROW((void)bench::probe_timing(one, 0), std::invalid_argument);
+}
+
 TEST(MachineProbe, RefusesNoThreadsAndNoWork) {
   EXPECT_THROW((void)bench::probe_machine(0, small()), std::invalid_argument);
   EXPECT_THROW((void)bench::probe_machine(-2, small()), std::invalid_argument);
