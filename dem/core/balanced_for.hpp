@@ -85,49 +85,69 @@ inline void balanced_chunks(int threads, std::uint32_t chunks, Run&& run) {
   }
 }
 
-/// balanced_for's loop on 2 ≤ threads ≤ kMaxBalancedThreads. Kept out of line: inlined beside the
-/// caller's one-thread loop, its arrays of cursors aligned to cache lines cost that loop 8–20 %
-/// (the chute's opening pass on one thread, docs/performance.md).
-template <typename Index, typename Body>
-[[gnu::noinline]] void balanced_for_chunks(int threads, Index n, Index chunk, Body& body) {
+/// Runs each(thread, local, from, to) for every chunk [from, to) of `chunk` indices of [0, n), as
+/// balanced_chunks shares them out; `local` is a copy of `body` in the chunk's frame, so that the
+/// body's stores through its captured pointers cannot alias it and its captures stay in registers
+/// (through a reference to the caller's closure every such store made them be loaded again).
+/// Flattened: `each` and the body are inlined into the chunk's loop as a static split's loop
+/// inlines them. False, running nothing, when the chunks do not fit the cursors' 32 bits.
+template <typename Index, typename Body, typename Each>
+inline bool for_each_chunk(int threads, Index n, Index chunk, const Body& body, Each&& each) {
   const std::uint32_t chunks = chunk_count(n, chunk);
-  if (chunks == 0) {
-    parallel_for(threads, n, body);
-    return;
-  }
-  // Flattened: the body is inlined into the chunk's loop as a static split's loop inlines it.
-  balanced_chunks(threads, chunks, [&](std::uint32_t, std::uint32_t c) __attribute__((flatten)) {
-    // A copy in this frame: the body's stores through its captured pointers cannot alias it, so
-    // its captures stay in registers (through `body`, a reference to the caller's closure, every
-    // store forced them to be loaded again).
+  if (chunks == 0) return false;
+  balanced_chunks(threads, chunks, [&](std::uint32_t thread, std::uint32_t c) __attribute__((flatten)) {
     const Body local = body;
     const Index from = static_cast<Index>(c) * chunk;
-    const Index to = std::min<Index>(n, from + chunk);
-    for (Index i = from; i < to; ++i) local(i);
+    each(thread, local, from, std::min<Index>(n, from + chunk));
   });
+  return true;
+}
+
+/// balanced_for_threads' loop on 2 ≤ threads ≤ kMaxBalancedThreads. Kept out of line: inlined
+/// beside the caller's one-thread loop, its arrays of cursors aligned to cache lines cost that
+/// loop 8–20 % (the chute's opening pass on one thread, docs/performance.md).
+template <typename Index, typename Body>
+[[gnu::noinline]] void balanced_for_chunks(int threads, Index n, Index chunk, const Body& body) {
+  const auto each = [](std::uint32_t thread, const Body& b, Index from, Index to) {
+    for (Index i = from; i < to; ++i) b(thread, i);
+  };
+  if (!for_each_chunk(threads, n, chunk, body, each)) {
+    parallel_for(threads, n, [&body](Index i) { body(static_cast<std::uint32_t>(omp_get_thread_num()), i); });
+  }
 }
 
 /// balanced_max's loop on 2 ≤ threads ≤ kMaxBalancedThreads (out of line, as balanced_for_chunks).
 template <typename Index, typename Body>
-[[gnu::noinline]] double balanced_max_chunks(int threads, Index n, Index chunk, double start, Body& body) {
+[[gnu::noinline]] double balanced_max_chunks(int threads, Index n, Index chunk, double start, const Body& body) {
   struct alignas(64) Largest {
     double value;
   };
-  const std::uint32_t chunks = chunk_count(n, chunk);
-  if (chunks == 0) return parallel_max(threads, n, start, body);
   std::array<Largest, kMaxBalancedThreads> worst;
   worst.fill({start});
-  balanced_chunks(threads, chunks, [&](std::uint32_t thread, std::uint32_t c) __attribute__((flatten)) {
-    const Body local = body;  // as in balanced_for_chunks: captures in registers
-    const Index from = static_cast<Index>(c) * chunk;
-    const Index to = std::min<Index>(n, from + chunk);
+  const auto each = [&worst](std::uint32_t thread, const Body& b, Index from, Index to) {
     double largest = worst[thread].value;
-    for (Index i = from; i < to; ++i) largest = std::max(largest, local(i));
+    for (Index i = from; i < to; ++i) largest = std::max(largest, b(i));
     worst[thread].value = largest;
-  });
+  };
+  if (!for_each_chunk(threads, n, chunk, body, each)) return parallel_max(threads, n, start, body);
   double largest = start;
   for (const Largest& w : worst) largest = std::max(largest, w.value);
   return largest;
+}
+
+/// As balanced_for, with the body told which thread runs it: body(thread, i), thread in
+/// [0, threads) — 0 when the loop runs in place, whatever OpenMP region the caller is in — for a
+/// body that uses scratch of its own per thread.
+template <typename Index, typename Body>
+inline void balanced_for_threads(int threads, Index n, Index chunk, const Body& body) {
+  chunk = std::max<Index>(chunk, 1);
+  if (threads <= 1 || n <= chunk) {
+    for (Index i = 0; i < n; ++i) body(std::uint32_t{0}, i);
+  } else if (threads > kMaxBalancedThreads) {
+    parallel_for(threads, n, [&body](Index i) { body(static_cast<std::uint32_t>(omp_get_thread_num()), i); });
+  } else {
+    balanced_for_chunks(threads, n, chunk, body);
+  }
 }
 
 /// Runs body(i) for every i in [0, n) on `threads` OpenMP threads, in chunks of `chunk`
@@ -147,7 +167,8 @@ inline void balanced_for(int threads, Index n, Index chunk, Body&& body) {
   } else if (threads <= 1 || n <= chunk) {
     for (Index i = 0; i < n; ++i) body(i);
   } else {
-    balanced_for_chunks(threads, n, chunk, body);
+    // By value, so that the chunks' copies hold the captures themselves.
+    balanced_for_chunks(threads, n, chunk, [body](std::uint32_t, Index i) { body(i); });
   }
 }
 

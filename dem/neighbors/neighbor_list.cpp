@@ -6,7 +6,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include <omp.h>
 
 #include "dem/core/balanced_for.hpp"
 #include "dem/core/parallel_for.hpp"
@@ -201,11 +200,8 @@ void NeighborList::build(const NeighborBuildInput& in, std::span<const std::uint
   for (Stencil& stencil : stencils_) stencil.near.resize(classes);
   // Each thread searches a run of neighbouring units (its share, then units taken from the back
   // of another's), so that its gathers and its part of the arrays stay together in its caches.
-  balanced_for(threads, unit_count, std::uint32_t{1}, [&](std::uint32_t u) {
-    // A thread of balanced_for's team; on its serial path (one thread, or one unit) the caller's
-    // own thread, whose number in a region of the caller's may exceed the stencils: it is alone.
-    const auto slot = static_cast<std::size_t>(omp_get_thread_num());
-    Stencil& stencil = stencils_[slot < stencils_.size() ? slot : 0];
+  balanced_for_threads(threads, unit_count, std::uint32_t{1}, [&](std::uint32_t thread, std::uint32_t u) {
+    Stencil& stencil = stencils_[thread];
     const SearchUnit unit = units_[u];
     const std::size_t c = unit.size_class;
     const CellGrid& own = grids_[c * classes + c];

@@ -113,6 +113,33 @@ TEST(BalancedFor, CountsChunksWithoutOverflow) {
   for (const int r : runs_of(2, 100, 0)) EXPECT_EQ(r, 1);  // a chunk of 0 counts as 1
 }
 
+TEST(BalancedForThreads, TellsEachBodyAThreadWithinTheTeamEvenInsideTheCallersRegion) {
+  // Per-thread scratch indexed by the thread the loop names: every index once, each thread number
+  // below the thread count asked for — also when the loop runs in place (one thread, or one chunk)
+  // on a thread of the caller's own OpenMP region, whose number there may be larger.
+  const auto check = [](int threads, std::int64_t n, std::int64_t chunk) {
+    std::vector<std::atomic<int>> count(static_cast<std::size_t>(n));
+    std::atomic<std::uint32_t> highest{0};
+    dem::balanced_for_threads(threads, n, chunk, [&](std::uint32_t thread, std::int64_t i) {
+      count[static_cast<std::size_t>(i)].fetch_add(1);
+      std::uint32_t seen = highest.load();
+      while (thread > seen && !highest.compare_exchange_weak(seen, thread)) {
+      }
+    });
+    for (const auto& c : count) EXPECT_EQ(c.load(), 1) << threads << " threads, " << n << " indices";
+    EXPECT_LT(highest.load(), static_cast<std::uint32_t>(std::max(threads, 1)));
+  };
+  for (const int threads : {1, 2, 3, dem::kMaxBalancedThreads + 1}) check(threads, 1000, 7);
+  check(2, 5, 10);  // one chunk: in place
+#pragma omp parallel num_threads(3)
+  {
+    if (omp_get_thread_num() == 2) {
+      check(1, 100, 7);  // in place, on thread 2 of this region: the body is told 0
+      check(2, 5, 10);
+    }
+  }
+}
+
 TEST(BalancedMax, IsTheSerialLargestForAnyThreadCount) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
