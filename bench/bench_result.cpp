@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "bench/median.hpp"
+
 namespace bench {
 namespace {
 
@@ -35,13 +37,6 @@ Shares shares(const CodeRun& l) {
           percent(l.log.loop_s - get("Neigh") - get("Pair"), l.log.loop_s)};
 }
 
-
-/// Median of a non-empty list.
-double median_of(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 /// "1 rank" / "2 ranks".
 std::string ranks_text(int ranks) { return fmt::format("{} rank{}", ranks, ranks > 1 ? "s" : ""); }

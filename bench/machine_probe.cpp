@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/median.hpp"
+
 namespace bench {
 namespace {
 
@@ -27,8 +29,9 @@ inline void keep(double& v) noexcept {
 #endif
 }
 
-/// Eight independent multiply–add chains: arithmetic throughput, no memory traffic.
-double multiply_add_chains(std::size_t iterations) noexcept {
+/// Eight independent multiply–add chains: arithmetic throughput, no memory traffic. keep() makes
+/// every step happen, so nothing needs to read the result.
+void multiply_add_chains(std::size_t iterations) noexcept {
   std::array<double, 8> a{};
   for (std::size_t k = 0; k < a.size(); ++k) a[k] = 1.0 + 1e-3 * static_cast<double>(k);
   for (std::size_t i = 0; i < iterations; ++i) {
@@ -37,24 +40,20 @@ double multiply_add_chains(std::size_t iterations) noexcept {
       keep(v);
     }
   }
-  double sum = 0.0;
-  for (const double v : a) sum += v;
-  return sum;
 }
 
-/// Passes of x ← x·m + c over a buffer: streaming reads and writes.
-double stream(std::vector<double>& x, int passes) noexcept {
+/// Passes of x ← x·m + c over a buffer (which outlives the call): streaming reads and writes.
+void stream(std::vector<double>& x, int passes) noexcept {
   for (int p = 0; p < passes; ++p) {
     for (double& v : x) v = v * 0.999999999 + 1e-9;
-    keep(x[p % x.size()]);
+    keep(x[static_cast<std::size_t>(p) % x.size()]);
   }
-  return x.front() + x.back();
 }
 
 /// Runs kernel(thread) on `threads` threads from a common start; the threads the runtime gave go
 /// to `team`.
 template <class Kernel>
-ProbeTiming timed(int threads, int& team, std::vector<double>& results, Kernel&& kernel) {
+ProbeTiming timed(int threads, int& team, Kernel&& kernel) {
   std::vector<double> spent(static_cast<std::size_t>(threads), 0.0);
 #pragma omp parallel num_threads(threads)
   {
@@ -63,16 +62,11 @@ ProbeTiming timed(int threads, int& team, std::vector<double>& results, Kernel&&
     team = omp_get_num_threads();
     // The implicit barrier of `single` lines the threads up: all start together.
     const auto start = std::chrono::steady_clock::now();
-    results[t] += kernel(t);
+    kernel(t);
     spent[t] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   for (double& s : spent) s = std::max(s, 1e-9);  // a clock that did not tick
   return probe_timing(spent.data(), static_cast<std::size_t>(team));
-}
-
-double median_of_three(std::array<double, 3> v) {
-  std::sort(v.begin(), v.end());
-  return v[1];
 }
 
 }  // namespace
@@ -98,7 +92,6 @@ MachineProbe probe_machine(int threads, const ProbeWork& work) {
     throw std::invalid_argument("probe_machine: every kernel needs some work");
   }
   const auto count = static_cast<std::size_t>(threads);
-  std::vector<double> results(count, 0.0);
   // One buffer per thread, first written by the thread that streams it.
   std::vector<std::vector<double>> buffers(count);
   const std::size_t length = work.stream_bytes / sizeof(double);
@@ -110,32 +103,27 @@ MachineProbe probe_machine(int threads, const ProbeWork& work) {
   for (auto& b : buffers) {
     if (b.empty()) b.assign(length, 1.0);  // a thread the runtime did not give
   }
-  const auto arithmetic = [&](std::size_t) { return multiply_add_chains(work.arithmetic_iterations); };
-  const auto streaming = [&](std::size_t t) { return stream(buffers[t], work.stream_passes); };
-  std::array<double, 3> arithmetic_ratio{};
-  std::array<double, 3> memory_ratio{};
-  std::array<double, 3> unequal{};
+  const auto arithmetic = [&](std::size_t) { multiply_add_chains(work.arithmetic_iterations); };
+  const auto streaming = [&](std::size_t t) { stream(buffers[t], work.stream_passes); };
+  std::vector<double> arithmetic_ratio;
+  std::vector<double> memory_ratio;
+  std::vector<double> unequal;
   int team = 1;
   int one = 1;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const ProbeTiming a1 = timed(1, one, results, arithmetic);
-    const ProbeTiming an = timed(threads, team, results, arithmetic);
-    arithmetic_ratio[k] = an.throughput / a1.throughput;
-    unequal[k] = an.unequal;
-    const ProbeTiming s1 = timed(1, one, results, streaming);
-    const ProbeTiming sn = timed(threads, team, results, streaming);
-    memory_ratio[k] = sn.throughput / s1.throughput;
+  for (int k = 0; k < 3; ++k) {
+    const ProbeTiming a1 = timed(1, one, arithmetic);
+    const ProbeTiming an = timed(threads, team, arithmetic);
+    arithmetic_ratio.push_back(an.throughput / a1.throughput);
+    unequal.push_back(an.unequal);
+    const ProbeTiming s1 = timed(1, one, streaming);
+    const ProbeTiming sn = timed(threads, team, streaming);
+    memory_ratio.push_back(sn.throughput / s1.throughput);
   }
   MachineProbe p;
   p.threads = team;
-  p.arithmetic = median_of_three(arithmetic_ratio);
-  p.memory = median_of_three(memory_ratio);
-  p.unequal = median_of_three(unequal);
-  // The kernels' results go to a volatile, so that no compiler may drop the kernels.
-  double sum = 0.0;
-  for (const double r : results) sum += r;
-  volatile double used = sum;
-  static_cast<void>(used);
+  p.arithmetic = median_of(arithmetic_ratio);
+  p.memory = median_of(memory_ratio);
+  p.unequal = median_of(unequal);
   return p;
 }
 
