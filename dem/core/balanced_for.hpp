@@ -103,6 +103,13 @@ inline bool for_each_chunk(int threads, Index n, Index chunk, const Body& body, 
   return true;
 }
 
+/// parallel_for's static split with the body told its OpenMP thread: body(thread, i), for loops
+/// beyond the balanced loops' cursors.
+template <typename Index, typename Body>
+inline void parallel_for_threads(int threads, Index n, const Body& body) {
+  parallel_for(threads, n, [&body](Index i) { body(static_cast<std::uint32_t>(omp_get_thread_num()), i); });
+}
+
 /// balanced_for_threads' loop on 2 ≤ threads ≤ kMaxBalancedThreads. Kept out of line: inlined
 /// beside the caller's one-thread loop, its arrays of cursors aligned to cache lines cost that
 /// loop 8–20 % (the chute's opening pass on one thread, docs/performance.md).
@@ -111,9 +118,7 @@ template <typename Index, typename Body>
   const auto each = [](std::uint32_t thread, const Body& b, Index from, Index to) {
     for (Index i = from; i < to; ++i) b(thread, i);
   };
-  if (!for_each_chunk(threads, n, chunk, body, each)) {
-    parallel_for(threads, n, [&body](Index i) { body(static_cast<std::uint32_t>(omp_get_thread_num()), i); });
-  }
+  if (!for_each_chunk(threads, n, chunk, body, each)) parallel_for_threads(threads, n, body);
 }
 
 /// balanced_max's loop on 2 ≤ threads ≤ kMaxBalancedThreads (out of line, as balanced_for_chunks).
@@ -144,7 +149,7 @@ inline void balanced_for_threads(int threads, Index n, Index chunk, const Body& 
   if (threads <= 1 || n <= chunk) {
     for (Index i = 0; i < n; ++i) body(std::uint32_t{0}, i);
   } else if (threads > kMaxBalancedThreads) {
-    parallel_for(threads, n, [&body](Index i) { body(static_cast<std::uint32_t>(omp_get_thread_num()), i); });
+    parallel_for_threads(threads, n, body);
   } else {
     balanced_for_chunks(threads, n, chunk, body);
   }
