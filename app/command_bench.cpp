@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `demwb bench`: the core, LAMMPS and LIGGGHTS timed on the same physics, side by side in one run.
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "bench/chute_scene.hpp"
 #include "bench/core_run.hpp"
 #include "bench/code_run.hpp"
+#include "bench/cpu_pinning.hpp"
 #include "cases/case_loader.hpp"
 #include "reference/common/core_setup.hpp"
 #include "reference/lammps/deck_writer.hpp"
@@ -40,6 +42,7 @@ struct BenchOptions {
   double timeout_s = 3600.0;
   int repeat = 1;
   bool speedup = false;  ///< also time the core on one thread in every repetition
+  std::vector<int> pinned_cpus;  ///< `--per-cpu`: also time one thread pinned to each of these
   std::filesystem::path out;
 
   [[nodiscard]] bool wants(std::string_view engine) const {
@@ -54,7 +57,8 @@ struct CodeJob {
 };
 
 /// Runs each code that can run the scene and then the core (on `o.threads` threads, then, with
-/// `o.speedup`, on one), one after the other, `o.repeat` times; a code that fails (missing,
+/// `o.speedup`, on one, then, with `--per-cpu`, on one thread pinned to each CPU — in turn, the
+/// order reversed every other repetition), one after the other, `o.repeat` times; a code that fails (missing,
 /// crashed, timed out) is not run again and reports that failure, the others go on; a code that
 /// cannot express the scene is n/a with its reason. `run_core` takes the thread count.
 void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<CodeJob>& jobs,
@@ -81,6 +85,18 @@ void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<C
     if (run_core && o.speedup) {
       r.one_thread_runs.push_back(run_core(1));
       r.machine_probes.push_back(bench::probe_machine(o.threads));
+    }
+    if (run_core && !o.pinned_cpus.empty()) {
+      // The team's worker threads exist by now (the run on o.threads came first), so none of them
+      // inherits a pin; the pin ends before anything else runs.
+      std::vector<bench::PinnedRun> each;
+      for (std::size_t i = 0; i < o.pinned_cpus.size(); ++i) {
+        const int cpu = o.pinned_cpus[k % 2 == 0 ? i : o.pinned_cpus.size() - 1 - i];
+        const bench::PinnedToCpu pin(cpu);
+        each.push_back({cpu, run_core(1)});
+      }
+      std::sort(each.begin(), each.end(), [](const auto& a, const auto& b) { return a.cpu < b.cpu; });
+      r.pinned_runs.push_back(std::move(each));
     }
     if (o.repeat > 1) std::fprintf(stderr, "bench: repetition %d of %d done\n", k + 1, o.repeat);
   }
@@ -266,11 +282,14 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
       ("repeat", po::value<int>()->default_value(1), "run every engine this many times, alternating; report medians")
       ("speedup", "also run the core on one thread right after each run on --threads N (N >= 2): reports the "
                   "speed-up and checks that both end in the same state to the last bit")
+      ("per-cpu", "also run the core on one thread pinned to each CPU in turn (at most 16) after each run on --threads "
+                  "N (N >= 2): reports how far the CPUs' unequal speeds cap the speed-up and what share of their "
+                  "summed speed the threads reached")
       ("output,o", po::value<std::string>(), "output directory (default out/bench-<scene>)");
   const auto vm = parse_command(
       args,
       "usage: demwb bench chute|box|CASE.toml [--engines inhouse,lammps,liggghts] [--threads N] [--ranks N]\n"
-      "                   [--steps S] [--particles N] [--repeat N] [--speedup] [-o DIR]",
+      "                   [--steps S] [--particles N] [--repeat N] [--speedup] [--per-cpu] [-o DIR]",
       opts, {"scene"});
   if (!vm) return kExitOk;
   BenchOptions o;
@@ -307,6 +326,14 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   if (o.speedup && (o.threads < 2 || !o.inhouse)) {
     throw std::invalid_argument("--speedup compares the core on --threads N (N >= 2) with one thread: give --threads 2 "
                                 "or more and keep inhouse among --engines");
+  }
+  if (vm->count("per-cpu") != 0) {
+    if (o.threads < 2 || !o.inhouse) {
+      throw std::invalid_argument("--per-cpu compares the core on --threads N (N >= 2) with one thread on each CPU: give "
+                                  "--threads 2 or more and keep inhouse among --engines");
+    }
+    o.pinned_cpus = bench::allowed_cpus();
+    if (o.pinned_cpus.size() > 16) o.pinned_cpus.resize(16);
   }
   o.out = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())
                                    : std::filesystem::path("out/bench-" + std::filesystem::path(o.scene).stem().string());

@@ -2,6 +2,7 @@
 #include "bench/bench_result.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -95,6 +96,20 @@ std::string machine_text(const MachineProbe& m) {
                      m.threads, m.arithmetic, m.memory, m.threads, m.unequal);
 }
 
+/// The pinned runs: "on 1 thread pinned to each CPU (medians of 5): CPU 0 loop 1.52 s, ...".
+std::string per_cpu_text(const BenchResult& r, const PerCpuSummary& p) {
+  std::string each;
+  for (const auto& [cpu, loop] : p.loop_s) each += fmt::format("{}CPU {} loop {:.3f} s", each.empty() ? "" : ", ", cpu, loop);
+  std::string reps;
+  for (const CpuCeiling& c : r.ceilings()) reps += fmt::format("{}{:.0f} %", reps.empty() ? "" : ", ", 100.0 * c.efficiency);
+  const bool same = r.identical_across_threads().value_or(false);
+  return fmt::format("on 1 thread pinned to each CPU in turn (medians of {}): {}; on {} threads over one thread on "
+                     "the fastest CPU {:.2f}, where these CPUs' summed one-thread speeds allow {:.2f}: {:.0f} % of "
+                     "them (per repetition: {}); final states {}",
+                     r.pinned_runs.size(), each, r.core->threads, p.speedup, p.ceiling, 100.0 * p.efficiency, reps,
+                     same ? "identical to the last bit" : "DIFFER between runs (the deterministic mode is broken)");
+}
+
 }  // namespace
 
 const CodeBench* BenchResult::code(std::string_view engine) const {
@@ -158,12 +173,50 @@ std::optional<MachineProbe> BenchResult::machine() const {
   return m;
 }
 
+std::vector<CpuCeiling> BenchResult::ceilings() const {
+  std::vector<CpuCeiling> out;
+  for (std::size_t k = 0; k < core_runs.size() && k < pinned_runs.size(); ++k) {
+    std::vector<CpuSpeed> speeds;
+    for (const PinnedRun& p : pinned_runs[k]) speeds.push_back({p.cpu, p.run.particle_steps_per_s});
+    if (speeds.empty()) continue;
+    out.push_back(cpu_ceiling(speeds, core_runs[k].threads, core_runs[k].particle_steps_per_s));
+  }
+  return out;
+}
+
+std::optional<PerCpuSummary> BenchResult::per_cpu() const {
+  const std::vector<CpuCeiling> each = ceilings();
+  if (each.empty()) return std::nullopt;
+  PerCpuSummary s;
+  std::map<int, std::vector<double>> loops;
+  for (const auto& rep : pinned_runs) {
+    for (const PinnedRun& p : rep) loops[p.cpu].push_back(p.run.wall_s);
+  }
+  for (const auto& [cpu, l] : loops) s.loop_s.emplace_back(cpu, median_of(l));
+  std::vector<double> ceiling;
+  std::vector<double> speedup;
+  std::vector<double> efficiency;
+  for (const CpuCeiling& c : each) {
+    ceiling.push_back(c.ceiling);
+    speedup.push_back(c.speedup);
+    efficiency.push_back(c.efficiency);
+  }
+  s.ceiling = median_of(ceiling);
+  s.speedup = median_of(speedup);
+  s.efficiency = median_of(efficiency);
+  return s;
+}
+
 std::optional<bool> BenchResult::identical_across_threads() const {
-  if (one_thread_runs.empty() || core_runs.empty()) return std::nullopt;
+  if ((one_thread_runs.empty() && pinned_runs.empty()) || core_runs.empty()) return std::nullopt;
   const std::string& first = core_runs.front().state_sha256;
+  const auto same = [&first](const CoreRun& c) { return !c.state_sha256.empty() && c.state_sha256 == first; };
   for (const auto* runs : {&core_runs, &one_thread_runs}) {
-    for (const CoreRun& c : *runs) {
-      if (c.state_sha256.empty() || c.state_sha256 != first) return false;
+    if (!std::all_of(runs->begin(), runs->end(), same)) return false;
+  }
+  for (const auto& rep : pinned_runs) {
+    for (const PinnedRun& p : rep) {
+      if (!same(p.run)) return false;
     }
   }
   return true;
@@ -249,6 +302,31 @@ nlohmann::json bench_json(const BenchResult& r) {
                                         {"probes", probes}};
     }
   }
+  j["per_cpu"] = nullptr;
+  if (const auto p = r.per_cpu(); p && r.core) {
+    nlohmann::json cpus = nlohmann::json::array();
+    for (const auto& [cpu, loop] : p->loop_s) cpus.push_back({{"cpu", cpu}, {"median_wall_s", loop}});
+    nlohmann::json reps = nlohmann::json::array();
+    const std::vector<CpuCeiling> each = r.ceilings();
+    for (std::size_t k = 0; k < each.size(); ++k) {
+      nlohmann::json runs = nlohmann::json::array();
+      for (const PinnedRun& pr : r.pinned_runs[k]) {
+        runs.push_back({{"cpu", pr.cpu}, {"wall_s", pr.run.wall_s}, {"particle_steps_per_s", pr.run.particle_steps_per_s}});
+      }
+      reps.push_back({{"runs", runs},
+                      {"fastest_cpu", each[k].fastest_cpu},
+                      {"ceiling", each[k].ceiling},
+                      {"speedup_over_fastest_cpu", each[k].speedup},
+                      {"efficiency", each[k].efficiency}});
+    }
+    j["per_cpu"] = {{"threads", r.core->threads},
+                    {"cpus", cpus},
+                    {"ceiling", p->ceiling},
+                    {"speedup_over_fastest_cpu", p->speedup},
+                    {"efficiency", p->efficiency},
+                    {"identical_across_threads", *r.identical_across_threads()},
+                    {"repetitions", reps}};
+  }
   std::size_t repetitions = r.core_runs.size();
   for (const CodeBench& c : r.codes) repetitions = std::max(repetitions, c.runs.size());
   nlohmann::json reps = nlohmann::json::array();
@@ -313,6 +391,7 @@ std::string bench_table(const BenchResult& r) {
     out += "inhouse " + speedup_text(r) + "\n";
     if (const auto m = r.machine()) out += machine_text(*m) + "\n";
   }
+  if (const auto p = r.per_cpu(); p && r.core) out += "inhouse " + per_cpu_text(r, *p) + "\n";
   for (const EnergyCheck& c : r.checks) {
     out += fmt::format("{}: inhouse {}, LAMMPS reference log {}{} — {}\n", c.quantity, c.core, c.reference,
                        c.lammps.empty() ? "" : ", LAMMPS here " + c.lammps, c.match ? "match" : "MISMATCH");
@@ -368,6 +447,12 @@ std::string bench_markdown(const BenchResult& r, const std::string& command) {
                         "below the ideal there is the machine's (shared cores, other guests), not the code's.\n",
                         machine_text(*m), r.machine_probes.size());
     }
+  }
+  if (const auto p = r.per_cpu(); p && r.core) {
+    md += fmt::format("\nThe core {}. On a virtual machine the CPUs need not run at one speed; a team can at best "
+                      "add up its CPUs' one-thread speeds, so that percentage is the code's share of a speed-up "
+                      "below {}, the rest the machine's.\n",
+                      per_cpu_text(r, *p), r.core->threads);
   }
   md += "\nBytes per particle: the core counts the capacity of its arrays, lists and history; LAMMPS "
         "reports its own \"Per MPI rank memory allocation\", LIGGGHTS its \"Memory usage per processor\" "

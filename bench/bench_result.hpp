@@ -12,6 +12,7 @@
 
 #include "bench/code_run.hpp"
 #include "bench/core_run.hpp"
+#include "bench/cpu_ceiling.hpp"
 #include "bench/machine_probe.hpp"
 
 namespace bench {
@@ -33,6 +34,20 @@ struct CodeBench {
   std::optional<CodeRun> median; ///< the median run by particle-steps/s, or the first failed one
 };
 
+/// The core on one thread pinned to one CPU (`--per-cpu`).
+struct PinnedRun {
+  int cpu = 0;
+  CoreRun run;
+};
+
+/// The medians over the repetitions of what the pinned one-thread runs say (`--per-cpu`).
+struct PerCpuSummary {
+  std::vector<std::pair<int, double>> loop_s;  ///< each CPU with its median loop time [s]
+  double ceiling = 0.0;     ///< median CpuCeiling::ceiling
+  double speedup = 0.0;     ///< median CpuCeiling::speedup (over the fastest CPU's one thread)
+  double efficiency = 0.0;  ///< median CpuCeiling::efficiency
+};
+
 /// Everything `demwb bench` measured on one scene.
 struct BenchResult {
   std::string scene;
@@ -48,6 +63,9 @@ struct BenchResult {
   /// With `--speedup`: what the machine gave the same threads against one, probed right after
   /// each pair of core runs (kernels independent of the core).
   std::vector<MachineProbe> machine_probes;
+  /// With `--per-cpu`: in every repetition, right after the run on `threads` threads, the core
+  /// on one thread pinned to each CPU in turn.
+  std::vector<std::vector<PinnedRun>> pinned_runs;
   std::vector<CodeBench> codes;      ///< the reference codes asked for, in the order asked
   std::vector<EnergyCheck> checks;
   /// Translational kinetic energy at the last step by engine [J] (a box or case file): the
@@ -69,8 +87,12 @@ struct BenchResult {
   [[nodiscard]] std::optional<double> speedup() const;
   /// The medians of the machine probes' ratios, when there are probes.
   [[nodiscard]] std::optional<MachineProbe> machine() const;
-  /// True when every run of the core, on one thread and on several, ended in the same state to
-  /// the last bit (the deterministic mode); nullopt without one-thread runs.
+  /// Per repetition with pinned runs, CpuCeiling of that repetition's run on `threads` threads.
+  [[nodiscard]] std::vector<CpuCeiling> ceilings() const;
+  /// The medians of the pinned runs and of ceilings(), when there are pinned runs.
+  [[nodiscard]] std::optional<PerCpuSummary> per_cpu() const;
+  /// True when every run of the core, on one thread (pinned or not) and on several, ended in the
+  /// same state to the last bit (the deterministic mode); nullopt without one-thread runs.
   [[nodiscard]] std::optional<bool> identical_across_threads() const;
   /// True when every check matched (the energies, and identical states across thread counts) and every code asked for ran (or cannot express the scene).
   [[nodiscard]] bool ok() const;
@@ -81,7 +103,7 @@ void choose_medians(BenchResult& r);
 
 /// bench.json: {"scene", "n_particles", "steps", "engines": {"inhouse": {...}, "lammps": {...},
 /// "liggghts": {...}}, "ratio_inhouse_to_lammps", "ratio_inhouse_to_liggghts", "thread_speedup"
-/// (null without `--speedup`), "repetitions", "checks", "notes"}.
+/// (null without `--speedup`), "per_cpu" (null without `--per-cpu`), "repetitions", "checks", "notes"}.
 nlohmann::json bench_json(const BenchResult& r);
 /// report.md: the scene, a table per engine, the ratios, the checks and how to reproduce.
 std::string bench_markdown(const BenchResult& r, const std::string& command);

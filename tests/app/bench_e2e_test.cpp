@@ -68,6 +68,36 @@ TEST(DemwbBench, SpeedupRunsTheCoreOnOneThreadToo) {
   EXPECT_TRUE(nlohmann::json::parse(support::read_file(plain / "bench.json"))["thread_speedup"].is_null());
 }
 
+TEST(DemwbBench, PerCpuPinsOneThreadToEachCpuInTurn) {
+  const fs::path out = scratch("bench_per_cpu");
+  const auto r = demwb({"bench", "box", "--engines", "inhouse", "--particles", "1100", "--steps", "30", "--repeat", "2",
+                        "--threads", "2", "--per-cpu", "-o", out.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(support::read_file(out / "bench.json"));
+  const auto& p = j["per_cpu"];
+  EXPECT_EQ(p["threads"], 2);
+  ASSERT_EQ(p["repetitions"].size(), 2U);
+  // One pinned run per CPU this process may use, the same CPUs in each repetition, in order.
+  const std::size_t cpus = p["cpus"].size();
+  EXPECT_GE(cpus, 1U);
+  for (const auto& rep : p["repetitions"]) {
+    ASSERT_EQ(rep["runs"].size(), cpus);
+    for (std::size_t k = 0; k < cpus; ++k) {
+      EXPECT_EQ(rep["runs"][k]["cpu"], p["cpus"][k]["cpu"]);
+      EXPECT_GT(rep["runs"][k]["wall_s"].get<double>(), 0.0);
+    }
+    EXPECT_GT(rep["efficiency"].get<double>(), 0.0);
+    EXPECT_GT(rep["ceiling"].get<double>(), 0.0);
+    EXPECT_LE(rep["ceiling"].get<double>(), 2.0 + 1e-12);  // never more than the threads
+  }
+  EXPECT_TRUE(p["identical_across_threads"].get<bool>());
+  EXPECT_TRUE(j["thread_speedup"].is_null());  // --per-cpu alone
+  EXPECT_NE(r.out.find("inhouse on 1 thread pinned to each CPU in turn"), std::string::npos) << r.out;
+  const auto one = demwb({"bench", "box", "--per-cpu"});
+  EXPECT_EQ(one.exit_code, 2);
+  EXPECT_NE(one.err.find("--per-cpu"), std::string::npos) << one.err;
+}
+
 TEST(DemwbBench, BadUsageExitsTwoNamingTheProblem) {
   const auto scene = demwb({"bench", "pyramid"});
   EXPECT_EQ(scene.exit_code, 2);

@@ -118,4 +118,62 @@ TEST(BenchResult, TheThreadSpeedupIsTheMedianOfAlternatingPairsAndDifferentFinal
   }
 }
 
+TEST(BenchResult, PinnedRunsGiveEachRepetitionsCeilingAndTheirMediansAndMustEndInTheSameState) {
+  bench::BenchResult r;
+  r.core_runs = {core(180.0, 2), core(162.0, 2), core(190.0, 2)};
+  EXPECT_FALSE(r.per_cpu().has_value());  // no pinned runs: nothing to say
+  const auto pinned = [](double cpu0, double cpu1) {
+    bench::CoreRun a = core(cpu0);
+    a.wall_s = 10.0 / cpu0;
+    bench::CoreRun b = core(cpu1);
+    b.wall_s = 10.0 / cpu1;
+    return std::vector<bench::PinnedRun>{{0, a}, {1, b}};
+  };
+  // CPU 0 slower in the first two repetitions (ceiling 1.8), equal in the third (ceiling 2).
+  r.pinned_runs = {pinned(80.0, 100.0), pinned(80.0, 100.0), pinned(100.0, 100.0)};
+  bench::choose_medians(r);
+  const std::vector<bench::CpuCeiling> each = r.ceilings();
+  ASSERT_EQ(each.size(), 3U);
+  EXPECT_DOUBLE_EQ(each[0].efficiency, 1.0);
+  EXPECT_DOUBLE_EQ(each[1].efficiency, 0.9);
+  EXPECT_DOUBLE_EQ(each[2].efficiency, 0.95);
+  EXPECT_EQ(each[0].fastest_cpu, 1);
+  const auto p = r.per_cpu();
+  ASSERT_TRUE(p.has_value());
+  EXPECT_DOUBLE_EQ(p->ceiling, 1.8);
+  EXPECT_DOUBLE_EQ(p->speedup, 1.8);
+  EXPECT_DOUBLE_EQ(p->efficiency, 0.95);
+  ASSERT_EQ(p->loop_s.size(), 2U);
+  EXPECT_EQ(p->loop_s[0].first, 0);
+  EXPECT_DOUBLE_EQ(p->loop_s[0].second, 0.125);  // median of 0.125, 0.125, 0.1
+  EXPECT_DOUBLE_EQ(p->loop_s[1].second, 0.1);
+  EXPECT_EQ(r.identical_across_threads(), true);  // pinned runs alone are enough to compare
+  EXPECT_TRUE(r.ok());
+  const nlohmann::json j = bench::bench_json(r);
+  EXPECT_TRUE(j["thread_speedup"].is_null());  // no --speedup
+  EXPECT_EQ(j["per_cpu"]["threads"], 2);
+  EXPECT_DOUBLE_EQ(j["per_cpu"]["efficiency"].get<double>(), 0.95);
+  EXPECT_DOUBLE_EQ(j["per_cpu"]["ceiling"].get<double>(), 1.8);
+  EXPECT_EQ(j["per_cpu"]["cpus"].size(), 2U);
+  EXPECT_EQ(j["per_cpu"]["repetitions"].size(), 3U);
+  EXPECT_EQ(j["per_cpu"]["repetitions"][1]["runs"][0]["cpu"], 0);
+  EXPECT_DOUBLE_EQ(j["per_cpu"]["repetitions"][1]["efficiency"].get<double>(), 0.9);
+  EXPECT_TRUE(j["per_cpu"]["identical_across_threads"].get<bool>());
+  const std::string table = bench::bench_table(r);
+  EXPECT_NE(table.find("inhouse on 1 thread pinned to each CPU in turn (medians of 3): CPU 0 loop 0.125 s, CPU 1 loop "
+                       "0.100 s; on 2 threads over one thread on the fastest CPU 1.80, where these CPUs' summed "
+                       "one-thread speeds allow 1.80: 95 % of them (per repetition: 100 %, 90 %, 95 %); final states "
+                       "identical to the last bit"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(bench::bench_markdown(r, "demwb bench box --threads 2 --per-cpu").find("the code's share"), std::string::npos);
+  EXPECT_TRUE(bench::bench_json(bench::BenchResult{})["per_cpu"].is_null());
+  // A pinned run ending elsewhere breaks the deterministic mode: the bench fails.
+  bench::BenchResult broken = r;
+  broken.pinned_runs[1][1].run.state_sha256 = "other";
+  EXPECT_EQ(broken.identical_across_threads(), false);
+  EXPECT_FALSE(broken.ok());
+  EXPECT_NE(bench::bench_table(broken).find("DIFFER"), std::string::npos);
+}
+
 }  // namespace
