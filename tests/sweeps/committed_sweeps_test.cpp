@@ -64,4 +64,14 @@ TEST(CommittedSweeps, EverySweepHasResultsFingerprintedByItsCurrentFiles) {
   }
 }
 
+TEST(CommittedSweeps, EverySweepIsListedInTheSweepsGuide) {
+  // docs/sweeps.md's table of committed sweeps is where a user finds what each one is for.
+  const std::string guide = support::read_file(kSource / "docs" / "sweeps.md");
+  for (const auto& e : fs::directory_iterator(kSource / "cases" / "sweeps")) {
+    if (e.path().extension() != ".toml") continue;
+    const std::string row = "| `cases/sweeps/" + e.path().filename().string() + "` |";
+    EXPECT_NE(guide.find(row), std::string::npos) << "docs/sweeps.md has no row " << row;
+  }
+}
+
 }  // namespace

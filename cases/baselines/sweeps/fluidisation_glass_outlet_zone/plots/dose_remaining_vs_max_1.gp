@@ -1,0 +1,8 @@
+set terminal png size 900,600 enhanced font 'DejaVu Sans,11'
+set output "dose_remaining_vs_max_1.png"
+set title "dose_remaining against outlet corner from y (m)" noenhanced
+set xlabel "outlet corner from y (m)" noenhanced
+set ylabel "dose_remaining" noenhanced
+set grid
+set key outside right top noenhanced
+plot "dose_remaining_vs_max_1.dat" index 0 using 1:2:3 with yerrorlines lw 2 title "inhouse"
