@@ -2,6 +2,7 @@
 #include "bench/bench_result.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <fmt/format.h>
@@ -157,29 +158,31 @@ std::optional<double> BenchResult::speedup() const {
 
 std::optional<MachineProbe> BenchResult::machine() const {
   if (machine_probes.empty()) return std::nullopt;
-  std::vector<double> arithmetic;
-  std::vector<double> memory;
-  std::vector<double> unequal;
-  for (const MachineProbe& p : machine_probes) {
-    arithmetic.push_back(p.arithmetic);
-    memory.push_back(p.memory);
-    unequal.push_back(p.unequal);
-  }
   MachineProbe m;
   m.threads = machine_probes.front().threads;
-  m.arithmetic = median_of(arithmetic);
-  m.memory = median_of(memory);
-  m.unequal = median_of(unequal);
+  m.arithmetic = median_by(machine_probes, [](const MachineProbe& p) { return p.arithmetic; });
+  m.memory = median_by(machine_probes, [](const MachineProbe& p) { return p.memory; });
+  m.unequal = median_by(machine_probes, [](const MachineProbe& p) { return p.unequal; });
   return m;
+}
+
+std::optional<CpuCeiling> BenchResult::ceiling_at(std::size_t k) const {
+  if (k >= core_runs.size() || k >= pinned_runs.size() || pinned_runs[k].empty()) return std::nullopt;
+  const auto timed = [](double v) { return std::isfinite(v) && v > 0.0; };
+  std::vector<CpuSpeed> speeds;
+  for (const PinnedRun& p : pinned_runs[k]) {
+    // A run too short for the clock to time says nothing about the CPUs.
+    if (!timed(p.run.particle_steps_per_s)) return std::nullopt;
+    speeds.push_back({p.cpu, p.run.particle_steps_per_s});
+  }
+  if (!timed(core_runs[k].particle_steps_per_s)) return std::nullopt;
+  return cpu_ceiling(speeds, core_runs[k].threads, core_runs[k].particle_steps_per_s);
 }
 
 std::vector<CpuCeiling> BenchResult::ceilings() const {
   std::vector<CpuCeiling> out;
-  for (std::size_t k = 0; k < core_runs.size() && k < pinned_runs.size(); ++k) {
-    std::vector<CpuSpeed> speeds;
-    for (const PinnedRun& p : pinned_runs[k]) speeds.push_back({p.cpu, p.run.particle_steps_per_s});
-    if (speeds.empty()) continue;
-    out.push_back(cpu_ceiling(speeds, core_runs[k].threads, core_runs[k].particle_steps_per_s));
+  for (std::size_t k = 0; k < pinned_runs.size(); ++k) {
+    if (const auto c = ceiling_at(k)) out.push_back(*c);
   }
   return out;
 }
@@ -193,17 +196,9 @@ std::optional<PerCpuSummary> BenchResult::per_cpu() const {
     for (const PinnedRun& p : rep) loops[p.cpu].push_back(p.run.wall_s);
   }
   for (const auto& [cpu, l] : loops) s.loop_s.emplace_back(cpu, median_of(l));
-  std::vector<double> ceiling;
-  std::vector<double> speedup;
-  std::vector<double> efficiency;
-  for (const CpuCeiling& c : each) {
-    ceiling.push_back(c.ceiling);
-    speedup.push_back(c.speedup);
-    efficiency.push_back(c.efficiency);
-  }
-  s.ceiling = median_of(ceiling);
-  s.speedup = median_of(speedup);
-  s.efficiency = median_of(efficiency);
+  s.ceiling = median_by(each, [](const CpuCeiling& c) { return c.ceiling; });
+  s.speedup = median_by(each, [](const CpuCeiling& c) { return c.speedup; });
+  s.efficiency = median_by(each, [](const CpuCeiling& c) { return c.efficiency; });
   return s;
 }
 
@@ -307,17 +302,20 @@ nlohmann::json bench_json(const BenchResult& r) {
     nlohmann::json cpus = nlohmann::json::array();
     for (const auto& [cpu, loop] : p->loop_s) cpus.push_back({{"cpu", cpu}, {"median_wall_s", loop}});
     nlohmann::json reps = nlohmann::json::array();
-    const std::vector<CpuCeiling> each = r.ceilings();
-    for (std::size_t k = 0; k < each.size(); ++k) {
+    for (std::size_t k = 0; k < r.pinned_runs.size(); ++k) {
       nlohmann::json runs = nlohmann::json::array();
       for (const PinnedRun& pr : r.pinned_runs[k]) {
         runs.push_back({{"cpu", pr.cpu}, {"wall_s", pr.run.wall_s}, {"particle_steps_per_s", pr.run.particle_steps_per_s}});
       }
-      reps.push_back({{"runs", runs},
-                      {"fastest_cpu", each[k].fastest_cpu},
-                      {"ceiling", each[k].ceiling},
-                      {"speedup_over_fastest_cpu", each[k].speedup},
-                      {"efficiency", each[k].efficiency}});
+      nlohmann::json rep{{"runs", runs}, {"fastest_cpu", nullptr}, {"ceiling", nullptr},
+                         {"speedup_over_fastest_cpu", nullptr}, {"efficiency", nullptr}};
+      if (const auto c = r.ceiling_at(k)) {
+        rep["fastest_cpu"] = c->fastest_cpu;
+        rep["ceiling"] = c->ceiling;
+        rep["speedup_over_fastest_cpu"] = c->speedup;
+        rep["efficiency"] = c->efficiency;
+      }
+      reps.push_back(rep);
     }
     j["per_cpu"] = {{"threads", r.core->threads},
                     {"cpus", cpus},

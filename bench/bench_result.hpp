@@ -87,7 +87,10 @@ struct BenchResult {
   [[nodiscard]] std::optional<double> speedup() const;
   /// The medians of the machine probes' ratios, when there are probes.
   [[nodiscard]] std::optional<MachineProbe> machine() const;
-  /// Per repetition with pinned runs, CpuCeiling of that repetition's run on `threads` threads.
+  /// CpuCeiling of repetition k's run on `threads` threads from its pinned runs; none without
+  /// them, or when a run there was too short to time (a speed that is not positive and finite).
+  [[nodiscard]] std::optional<CpuCeiling> ceiling_at(std::size_t k) const;
+  /// ceiling_at() of every repetition that has one, in order.
   [[nodiscard]] std::vector<CpuCeiling> ceilings() const;
   /// The medians of the pinned runs and of ceilings(), when there are pinned runs.
   [[nodiscard]] std::optional<PerCpuSummary> per_cpu() const;

@@ -2,6 +2,8 @@
 // What a bench with several reference codes reports: pairwise ratios, medians, and which
 // outcomes fail it (a code missing, crashed or timed out fails; one that cannot express the
 // scene is n/a and does not).
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "bench/bench_result.hpp"
@@ -168,6 +170,15 @@ TEST(BenchResult, PinnedRunsGiveEachRepetitionsCeilingAndTheirMediansAndMustEndI
       << table;
   EXPECT_NE(bench::bench_markdown(r, "demwb bench box --threads 2 --per-cpu").find("the code's share"), std::string::npos);
   EXPECT_TRUE(bench::bench_json(bench::BenchResult{})["per_cpu"].is_null());
+  // A repetition whose runs were too short to time is left out of the medians, never a crash or a NaN.
+  bench::BenchResult untimed = r;
+  untimed.pinned_runs[0][1].run.particle_steps_per_s = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(untimed.ceiling_at(0).has_value());
+  EXPECT_EQ(untimed.ceilings().size(), 2U);
+  EXPECT_DOUBLE_EQ(untimed.per_cpu()->efficiency, 0.925);  // median of 0.9 and 0.95
+  const nlohmann::json u = bench::bench_json(untimed);
+  EXPECT_TRUE(u["per_cpu"]["repetitions"][0]["efficiency"].is_null());
+  EXPECT_DOUBLE_EQ(u["per_cpu"]["repetitions"][1]["efficiency"].get<double>(), 0.9);
   // A pinned run ending elsewhere breaks the deterministic mode: the bench fails.
   bench::BenchResult broken = r;
   broken.pinned_runs[1][1].run.state_sha256 = "other";
