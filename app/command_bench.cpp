@@ -5,6 +5,8 @@
 #include <functional>
 #include <iostream>
 
+#include <sched.h>
+
 #include <fmt/format.h>
 
 #include "app/cli.hpp"
@@ -93,7 +95,8 @@ void alternate(const BenchOptions& o, bench::BenchResult& r, const std::vector<C
       for (std::size_t i = 0; i < o.pinned_cpus.size(); ++i) {
         const int cpu = o.pinned_cpus[k % 2 == 0 ? i : o.pinned_cpus.size() - 1 - i];
         const bench::PinnedToCpu pin(cpu);
-        each.push_back({cpu, run_core(1)});
+        bench::CoreRun run = run_core(1);
+        each.push_back({cpu, sched_getcpu(), static_cast<int>(i), std::move(run)});
       }
       std::sort(each.begin(), each.end(), [](const auto& a, const auto& b) { return a.cpu < b.cpu; });
       r.pinned_runs.push_back(std::move(each));
@@ -282,7 +285,7 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
       ("repeat", po::value<int>()->default_value(1), "run every engine this many times, alternating; report medians")
       ("speedup", "also run the core on one thread right after each run on --threads N (N >= 2): reports the "
                   "speed-up and checks that both end in the same state to the last bit")
-      ("per-cpu", "also run the core on one thread pinned to each CPU in turn (at most 16) after each run on --threads "
+      ("per-cpu", "also run the core on one thread pinned to each CPU in turn (at most 16, or N) after each run on --threads "
                   "N (N >= 2): reports how far the CPUs' unequal speeds cap the speed-up and what share of their "
                   "summed speed the threads reached")
       ("output,o", po::value<std::string>(), "output directory (default out/bench-<scene>)");
@@ -332,8 +335,11 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
       throw std::invalid_argument("--per-cpu compares the core on --threads N (N >= 2) with one thread on each CPU: give "
                                   "--threads 2 or more and keep inhouse among --engines");
     }
+    // At most 16 CPUs are timed, but never fewer than the team's threads: the ceiling adds up
+    // the N fastest of the timed CPUs, which must be as many as the team can use.
     o.pinned_cpus = bench::allowed_cpus();
-    if (o.pinned_cpus.size() > 16) o.pinned_cpus.resize(16);
+    const std::size_t timed = std::max<std::size_t>(16, static_cast<std::size_t>(o.threads));
+    if (o.pinned_cpus.size() > timed) o.pinned_cpus.resize(timed);
   }
   o.out = vm->count("output") != 0 ? std::filesystem::path((*vm)["output"].as<std::string>())
                                    : std::filesystem::path("out/bench-" + std::filesystem::path(o.scene).stem().string());

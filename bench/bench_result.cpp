@@ -102,12 +102,15 @@ std::string per_cpu_text(const BenchResult& r, const PerCpuSummary& p) {
   std::string each;
   for (const auto& [cpu, loop] : p.loop_s) each += fmt::format("{}CPU {} loop {:.3f} s", each.empty() ? "" : ", ", cpu, loop);
   std::string reps;
-  for (const CpuCeiling& c : r.ceilings()) reps += fmt::format("{}{:.0f} %", reps.empty() ? "" : ", ", 100.0 * c.efficiency);
+  for (std::size_t k = 0; k < r.pinned_runs.size(); ++k) {
+    const auto c = r.ceiling_at(k);
+    reps += (reps.empty() ? "" : ", ") + (c ? fmt::format("{:.0f} %", 100.0 * c->efficiency) : std::string("untimed"));
+  }
   const bool same = r.identical_across_threads().value_or(false);
-  return fmt::format("on 1 thread pinned to each CPU in turn (medians of {}): {}; on {} threads over one thread on "
-                     "the fastest CPU {:.2f}, where these CPUs' summed one-thread speeds allow {:.2f}: {:.0f} % of "
-                     "them (per repetition: {}); final states {}",
-                     r.pinned_runs.size(), each, r.core->threads, p.speedup, p.ceiling, 100.0 * p.efficiency, reps,
+  return fmt::format("on 1 thread pinned to each CPU in turn (medians of {} repetitions, each taken on its own): {}; "
+                     "on {} threads over one thread on the fastest CPU {:.2f}, these CPUs' summed one-thread speeds "
+                     "allowing {:.2f}; the threads reached {:.0f} % of that sum (per repetition: {}); final states {}",
+                     p.repetitions, each, r.core->threads, p.speedup, p.ceiling, 100.0 * p.efficiency, reps,
                      same ? "identical to the last bit" : "DIFFER between runs (the deterministic mode is broken)");
 }
 
@@ -191,9 +194,11 @@ std::optional<PerCpuSummary> BenchResult::per_cpu() const {
   const std::vector<CpuCeiling> each = ceilings();
   if (each.empty()) return std::nullopt;
   PerCpuSummary s;
+  s.repetitions = each.size();
   std::map<int, std::vector<double>> loops;
-  for (const auto& rep : pinned_runs) {
-    for (const PinnedRun& p : rep) loops[p.cpu].push_back(p.run.wall_s);
+  for (std::size_t k = 0; k < pinned_runs.size(); ++k) {
+    if (!ceiling_at(k)) continue;  // untimed: left out of every median
+    for (const PinnedRun& p : pinned_runs[k]) loops[p.cpu].push_back(p.run.wall_s);
   }
   for (const auto& [cpu, l] : loops) s.loop_s.emplace_back(cpu, median_of(l));
   s.ceiling = median_by(each, [](const CpuCeiling& c) { return c.ceiling; });
@@ -305,7 +310,8 @@ nlohmann::json bench_json(const BenchResult& r) {
     for (std::size_t k = 0; k < r.pinned_runs.size(); ++k) {
       nlohmann::json runs = nlohmann::json::array();
       for (const PinnedRun& pr : r.pinned_runs[k]) {
-        runs.push_back({{"cpu", pr.cpu}, {"wall_s", pr.run.wall_s}, {"particle_steps_per_s", pr.run.particle_steps_per_s}});
+        runs.push_back({{"cpu", pr.cpu}, {"ran_on", pr.ran_on}, {"order", pr.order}, {"wall_s", pr.run.wall_s},
+                        {"particle_steps_per_s", pr.run.particle_steps_per_s}});
       }
       nlohmann::json rep{{"runs", runs}, {"fastest_cpu", nullptr}, {"ceiling", nullptr},
                          {"speedup_over_fastest_cpu", nullptr}, {"efficiency", nullptr}};
@@ -318,6 +324,7 @@ nlohmann::json bench_json(const BenchResult& r) {
       reps.push_back(rep);
     }
     j["per_cpu"] = {{"threads", r.core->threads},
+                    {"timed_repetitions", p->repetitions},
                     {"cpus", cpus},
                     {"ceiling", p->ceiling},
                     {"speedup_over_fastest_cpu", p->speedup},

@@ -37,12 +37,16 @@ struct CodeBench {
 /// The core on one thread pinned to one CPU (`--per-cpu`).
 struct PinnedRun {
   int cpu = 0;
+  int ran_on = -1;   ///< the CPU the thread was on when the run ended (sched_getcpu): `cpu` when the pin held
+  int order = 0;     ///< its place among the repetition's pinned runs (0 first)
   CoreRun run;
 };
 
 /// The medians over the repetitions of what the pinned one-thread runs say (`--per-cpu`).
 struct PerCpuSummary {
-  std::vector<std::pair<int, double>> loop_s;  ///< each CPU with its median loop time [s]
+  std::size_t repetitions = 0;                 ///< the repetitions timed well enough to count
+  std::vector<std::pair<int, double>> loop_s;  ///< each CPU with its median loop time [s] over those
+  // Each a median taken on its own, so efficiency need not equal speedup / ceiling.
   double ceiling = 0.0;     ///< median CpuCeiling::ceiling
   double speedup = 0.0;     ///< median CpuCeiling::speedup (over the fastest CPU's one thread)
   double efficiency = 0.0;  ///< median CpuCeiling::efficiency

@@ -80,10 +80,15 @@ TEST(DemwbBench, PerCpuPinsOneThreadToEachCpuInTurn) {
   // One pinned run per CPU this process may use, the same CPUs in each repetition, in order.
   const std::size_t cpus = p["cpus"].size();
   EXPECT_GE(cpus, 1U);
-  for (const auto& rep : p["repetitions"]) {
+  for (std::size_t r_index = 0; r_index < p["repetitions"].size(); ++r_index) {
+    const auto& rep = p["repetitions"][r_index];
     ASSERT_EQ(rep["runs"].size(), cpus);
     for (std::size_t k = 0; k < cpus; ++k) {
       EXPECT_EQ(rep["runs"][k]["cpu"], p["cpus"][k]["cpu"]);
+      // The pin held: the run ended on the CPU it was pinned to.
+      EXPECT_EQ(rep["runs"][k]["ran_on"], rep["runs"][k]["cpu"]);
+      // In increasing order in the first repetition, reversed in the second.
+      EXPECT_EQ(rep["runs"][k]["order"].get<std::size_t>(), r_index == 0 ? k : cpus - 1 - k);
       EXPECT_GT(rep["runs"][k]["wall_s"].get<double>(), 0.0);
     }
     EXPECT_GT(rep["efficiency"].get<double>(), 0.0);

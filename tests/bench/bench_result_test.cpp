@@ -129,7 +129,7 @@ TEST(BenchResult, PinnedRunsGiveEachRepetitionsCeilingAndTheirMediansAndMustEndI
     a.wall_s = 10.0 / cpu0;
     bench::CoreRun b = core(cpu1);
     b.wall_s = 10.0 / cpu1;
-    return std::vector<bench::PinnedRun>{{0, a}, {1, b}};
+    return std::vector<bench::PinnedRun>{{0, 0, 0, a}, {1, 1, 1, b}};
   };
   // CPU 0 slower in the first two repetitions (ceiling 1.8), equal in the third (ceiling 2).
   r.pinned_runs = {pinned(80.0, 100.0), pinned(80.0, 100.0), pinned(100.0, 100.0)};
@@ -162,12 +162,13 @@ TEST(BenchResult, PinnedRunsGiveEachRepetitionsCeilingAndTheirMediansAndMustEndI
   EXPECT_DOUBLE_EQ(j["per_cpu"]["repetitions"][1]["efficiency"].get<double>(), 0.9);
   EXPECT_TRUE(j["per_cpu"]["identical_across_threads"].get<bool>());
   const std::string table = bench::bench_table(r);
-  EXPECT_NE(table.find("inhouse on 1 thread pinned to each CPU in turn (medians of 3): CPU 0 loop 0.125 s, CPU 1 loop "
-                       "0.100 s; on 2 threads over one thread on the fastest CPU 1.80, where these CPUs' summed "
-                       "one-thread speeds allow 1.80: 95 % of them (per repetition: 100 %, 90 %, 95 %); final states "
-                       "identical to the last bit"),
+  EXPECT_NE(table.find("inhouse on 1 thread pinned to each CPU in turn (medians of 3 repetitions, each taken on its "
+                       "own): CPU 0 loop 0.125 s, CPU 1 loop 0.100 s; on 2 threads over one thread on the fastest CPU "
+                       "1.80, these CPUs' summed one-thread speeds allowing 1.80; the threads reached 95 % of that sum "
+                       "(per repetition: 100 %, 90 %, 95 %); final states identical to the last bit"),
             std::string::npos)
       << table;
+  EXPECT_EQ(j["per_cpu"]["timed_repetitions"], 3);
   EXPECT_NE(bench::bench_markdown(r, "demwb bench box --threads 2 --per-cpu").find("the code's share"), std::string::npos);
   EXPECT_TRUE(bench::bench_json(bench::BenchResult{})["per_cpu"].is_null());
   // A repetition whose runs were too short to time is left out of the medians, never a crash or a NaN.
@@ -175,7 +176,11 @@ TEST(BenchResult, PinnedRunsGiveEachRepetitionsCeilingAndTheirMediansAndMustEndI
   untimed.pinned_runs[0][1].run.particle_steps_per_s = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(untimed.ceiling_at(0).has_value());
   EXPECT_EQ(untimed.ceilings().size(), 2U);
+  EXPECT_EQ(untimed.per_cpu()->repetitions, 2U);
   EXPECT_DOUBLE_EQ(untimed.per_cpu()->efficiency, 0.925);  // median of 0.9 and 0.95
+  EXPECT_DOUBLE_EQ(untimed.per_cpu()->loop_s[0].second, 0.1125);  // CPU 0: 0.125 and 0.1, the untimed repetition out
+  EXPECT_NE(bench::bench_table(untimed).find("(per repetition: untimed, 90 %, 95 %)"), std::string::npos)
+      << bench::bench_table(untimed);
   const nlohmann::json u = bench::bench_json(untimed);
   EXPECT_TRUE(u["per_cpu"]["repetitions"][0]["efficiency"].is_null());
   EXPECT_DOUBLE_EQ(u["per_cpu"]["repetitions"][1]["efficiency"].get<double>(), 0.9);
