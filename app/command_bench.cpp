@@ -325,16 +325,18 @@ int command_bench(const std::vector<std::string>& args, const Invocation& inv) {
   if (vm->count("chute-dir") != 0) o.chute_dir = (*vm)["chute-dir"].as<std::string>();
   o.repeat = (*vm)["repeat"].as<int>();
   if (o.repeat < 1 || o.repeat > 100) throw std::invalid_argument("--repeat must be between 1 and 100");
-  o.speedup = vm->count("speedup") != 0;
-  if (o.speedup && (o.threads < 2 || !o.inhouse)) {
-    throw std::invalid_argument("--speedup compares the core on --threads N (N >= 2) with one thread: give --threads 2 "
-                                "or more and keep inhouse among --engines");
-  }
-  if (vm->count("per-cpu") != 0) {
+  // --speedup and --per-cpu both set the core on N threads beside one thread.
+  const auto needs_team = [&o](const char* flag, const char* one_thread) {
     if (o.threads < 2 || !o.inhouse) {
-      throw std::invalid_argument("--per-cpu compares the core on --threads N (N >= 2) with one thread on each CPU: give "
-                                  "--threads 2 or more and keep inhouse among --engines");
+      throw std::invalid_argument(fmt::format("{} compares the core on --threads N (N >= 2) with {}: give --threads 2 "
+                                              "or more and keep inhouse among --engines",
+                                              flag, one_thread));
     }
+  };
+  o.speedup = vm->count("speedup") != 0;
+  if (o.speedup) needs_team("--speedup", "one thread");
+  if (vm->count("per-cpu") != 0) {
+    needs_team("--per-cpu", "one thread on each CPU");
     // At most 16 CPUs are timed, but never fewer than the team's threads: the ceiling adds up
     // the N fastest of the timed CPUs, which must be as many as the team can use.
     o.pinned_cpus = bench::allowed_cpus();

@@ -2,7 +2,6 @@
 #include "bench/bench_result.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 
 #include <fmt/format.h>
@@ -171,14 +170,13 @@ std::optional<MachineProbe> BenchResult::machine() const {
 
 std::optional<CpuCeiling> BenchResult::ceiling_at(std::size_t k) const {
   if (k >= core_runs.size() || k >= pinned_runs.size() || pinned_runs[k].empty()) return std::nullopt;
-  const auto timed = [](double v) { return std::isfinite(v) && v > 0.0; };
   std::vector<CpuSpeed> speeds;
   for (const PinnedRun& p : pinned_runs[k]) {
     // A run too short for the clock to time says nothing about the CPUs.
-    if (!timed(p.run.particle_steps_per_s)) return std::nullopt;
+    if (!is_speed(p.run.particle_steps_per_s)) return std::nullopt;
     speeds.push_back({p.cpu, p.run.particle_steps_per_s});
   }
-  if (!timed(core_runs[k].particle_steps_per_s)) return std::nullopt;
+  if (!is_speed(core_runs[k].particle_steps_per_s)) return std::nullopt;
   return cpu_ceiling(speeds, core_runs[k].threads, core_runs[k].particle_steps_per_s);
 }
 
@@ -191,15 +189,17 @@ std::vector<CpuCeiling> BenchResult::ceilings() const {
 }
 
 std::optional<PerCpuSummary> BenchResult::per_cpu() const {
-  const std::vector<CpuCeiling> each = ceilings();
+  std::vector<CpuCeiling> each;
+  std::map<int, std::vector<double>> loops;
+  for (std::size_t k = 0; k < pinned_runs.size(); ++k) {
+    const auto c = ceiling_at(k);
+    if (!c) continue;  // untimed: left out of every median
+    each.push_back(*c);
+    for (const PinnedRun& p : pinned_runs[k]) loops[p.cpu].push_back(p.run.wall_s);
+  }
   if (each.empty()) return std::nullopt;
   PerCpuSummary s;
   s.repetitions = each.size();
-  std::map<int, std::vector<double>> loops;
-  for (std::size_t k = 0; k < pinned_runs.size(); ++k) {
-    if (!ceiling_at(k)) continue;  // untimed: left out of every median
-    for (const PinnedRun& p : pinned_runs[k]) loops[p.cpu].push_back(p.run.wall_s);
-  }
   for (const auto& [cpu, l] : loops) s.loop_s.emplace_back(cpu, median_of(l));
   s.ceiling = median_by(each, [](const CpuCeiling& c) { return c.ceiling; });
   s.speedup = median_by(each, [](const CpuCeiling& c) { return c.speedup; });

@@ -8,14 +8,17 @@
 
 namespace bench {
 
+bool is_speed(double particle_steps_per_s) noexcept {
+  return std::isfinite(particle_steps_per_s) && particle_steps_per_s > 0.0;
+}
+
 CpuCeiling cpu_ceiling(std::span<const CpuSpeed> cpus, int threads, double team) {
   if (cpus.empty()) throw std::invalid_argument("cpu_ceiling: no CPU was timed");
   if (threads < 1) throw std::invalid_argument("cpu_ceiling: fewer than one thread");
-  const auto usable = [](double v) { return std::isfinite(v) && v > 0.0; };
-  if (!usable(team)) throw std::invalid_argument("cpu_ceiling: the team's speed is not positive and finite");
+  if (!is_speed(team)) throw std::invalid_argument("cpu_ceiling: the team's speed is not positive and finite");
   std::vector<CpuSpeed> by_speed(cpus.begin(), cpus.end());
   for (const CpuSpeed& c : by_speed) {
-    if (!usable(c.particle_steps_per_s)) {
+    if (!is_speed(c.particle_steps_per_s)) {
       throw std::invalid_argument("cpu_ceiling: a CPU's speed is not positive and finite");
     }
   }

@@ -24,6 +24,10 @@ struct CpuCeiling {
   double efficiency = 0.0;  ///< speedup / ceiling: the team over the N fastest CPUs' summed speed
 };
 
+/// True for a speed a timing can give: positive and finite (a run too short for the clock gives
+/// infinity, a failed one zero).
+[[nodiscard]] bool is_speed(double particle_steps_per_s) noexcept;
+
 /// CpuCeiling of a team of `threads` threads that ran at `team` particle-steps/s, from one run
 /// on each CPU; with fewer CPUs than threads, the team shares all of them. Throws
 /// std::invalid_argument for no CPUs, fewer than one thread, or a speed that is not positive

@@ -36,13 +36,25 @@ TEST(DemwbBench, BoxWritesBenchJsonWithTheContractFields) {
   EXPECT_NE(r.out.find("inhouse"), std::string::npos);
 }
 
+/// The core alone on a 1,100-sphere box (more than one 512-sphere chunk, so the balanced
+/// per-sphere passes share out), 30 steps, twice, on two threads, with `option` (--speedup or
+/// --per-cpu), written to scratch `name`: the run, and its bench.json when it succeeded.
+struct TwoThreadBox {
+  demwb_e2e::Outcome run;
+  nlohmann::json json;
+};
+TwoThreadBox two_thread_box(const std::string& name, const std::string& option) {
+  const fs::path out = scratch(name);
+  TwoThreadBox b{demwb({"bench", "box", "--engines", "inhouse", "--particles", "1100", "--steps", "30", "--repeat", "2",
+                        "--threads", "2", option, "-o", out.string()}),
+                 nullptr};
+  if (b.run.exit_code == 0) b.json = nlohmann::json::parse(support::read_file(out / "bench.json"));
+  return b;
+}
+
 TEST(DemwbBench, SpeedupRunsTheCoreOnOneThreadToo) {
-  const fs::path out = scratch("bench_speedup");
-  // 1,100 spheres: more than one 512-sphere chunk, so the balanced per-sphere passes share out.
-  const auto r = demwb({"bench", "box", "--engines", "inhouse", "--particles", "1100", "--steps", "30", "--repeat", "2",
-                        "--threads", "2", "--speedup", "-o", out.string()});
+  const auto [r, j] = two_thread_box("bench_speedup", "--speedup");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
-  const auto j = nlohmann::json::parse(support::read_file(out / "bench.json"));
   const auto& s = j["thread_speedup"];
   EXPECT_EQ(s["threads"], 2);
   EXPECT_EQ(s["pairs"].size(), 2U);
@@ -69,11 +81,8 @@ TEST(DemwbBench, SpeedupRunsTheCoreOnOneThreadToo) {
 }
 
 TEST(DemwbBench, PerCpuPinsOneThreadToEachCpuInTurn) {
-  const fs::path out = scratch("bench_per_cpu");
-  const auto r = demwb({"bench", "box", "--engines", "inhouse", "--particles", "1100", "--steps", "30", "--repeat", "2",
-                        "--threads", "2", "--per-cpu", "-o", out.string()});
+  const auto [r, j] = two_thread_box("bench_per_cpu", "--per-cpu");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
-  const auto j = nlohmann::json::parse(support::read_file(out / "bench.json"));
   const auto& p = j["per_cpu"];
   EXPECT_EQ(p["threads"], 2);
   ASSERT_EQ(p["repetitions"].size(), 2U);
